@@ -1,0 +1,48 @@
+#pragma once
+
+#include <irid/color/numeric_table.h>
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace irid::cli {
+
+/// Exit statuses of every irid command (DESIGN.md): success, bad data or failed I/O, usage.
+inline constexpr int exit_success = 0;
+inline constexpr int exit_bad_data = 1;
+inline constexpr int exit_usage = 2;
+
+/// A usage error found after parsing (an unknown name in an option's value): exit status 2.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// What a subcommand does once its options are parsed; returns the exit status.
+using Runner = std::function<int()>;
+
+/// Each subcommand registers itself on the app and, when chosen, stores its runner.
+void add_convert_command(CLI::App& app, Runner& runner);
+void add_xyz_command(CLI::App& app, Runner& runner);
+void add_delta_e_command(CLI::App& app, Runner& runner);
+
+/// Reads all of standard input as a numeric CSV table (source name "<stdin>").
+[[nodiscard]] NumericTable read_stdin_table(int columns, int min_columns = 1);
+
+/// Writes one CSV line of numbers in shortest round-trip form.
+void append_csv_line(std::string& out, std::span<const double> values);
+
+/// Writes the whole output at once; throws irid::Error when standard output fails.
+void write_stdout(const std::string& text);
+
+/// "a, b, c" for messages.
+[[nodiscard]] std::string join(const std::vector<std::string>& names);
+
+}  // namespace irid::cli

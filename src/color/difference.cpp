@@ -1,0 +1,101 @@
+#include <irid/color/difference.h>
+#include <irid/color/spaces.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace irid {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+constexpr double radians(double degrees) noexcept { return degrees * pi / 180.0; }
+
+}  // namespace
+
+double delta_e_76(const Lab& a, const Lab& b) noexcept {
+    return std::sqrt((a.L - b.L) * (a.L - b.L) + (a.a - b.a) * (a.a - b.a) +
+                     (a.b - b.b) * (a.b - b.b));
+}
+
+double delta_e_2000(const Lab& c1, const Lab& c2, double k_l, double k_c, double k_h) noexcept {
+    // Sharma, Wu & Dalal 2005, eq. 2-21.
+    const double c_ab1 = std::hypot(c1.a, c1.b);
+    const double c_ab2 = std::hypot(c2.a, c2.b);
+    const double c_mean = 0.5 * (c_ab1 + c_ab2);
+    const double c_mean7 = std::pow(c_mean, 7.0);
+    constexpr double twenty_five_7 = 6103515625.0;  // 25^7
+    const double g = 0.5 * (1.0 - std::sqrt(c_mean7 / (c_mean7 + twenty_five_7)));
+    const double a1p = (1.0 + g) * c1.a;
+    const double a2p = (1.0 + g) * c2.a;
+    const double c1p = std::hypot(a1p, c1.b);
+    const double c2p = std::hypot(a2p, c2.b);
+    const double h1p = hue_degrees(a1p, c1.b);
+    const double h2p = hue_degrees(a2p, c2.b);
+
+    const double dl = c2.L - c1.L;
+    const double dc = c2p - c1p;
+    double dh_angle = 0.0;
+    if (c1p * c2p != 0.0) {
+        dh_angle = h2p - h1p;
+        if (dh_angle > 180.0) dh_angle -= 360.0;
+        else if (dh_angle < -180.0) dh_angle += 360.0;
+    }
+    const double dh = 2.0 * std::sqrt(c1p * c2p) * std::sin(radians(dh_angle) / 2.0);
+
+    const double l_mean = 0.5 * (c1.L + c2.L);
+    const double cp_mean = 0.5 * (c1p + c2p);
+    double hp_mean = h1p + h2p;
+    if (c1p * c2p != 0.0) {
+        if (std::abs(h1p - h2p) <= 180.0) hp_mean = 0.5 * (h1p + h2p);
+        else if (h1p + h2p < 360.0) hp_mean = 0.5 * (h1p + h2p + 360.0);
+        else hp_mean = 0.5 * (h1p + h2p - 360.0);
+    }
+    const double t = 1.0 - 0.17 * std::cos(radians(hp_mean - 30.0)) +
+                     0.24 * std::cos(radians(2.0 * hp_mean)) +
+                     0.32 * std::cos(radians(3.0 * hp_mean + 6.0)) -
+                     0.20 * std::cos(radians(4.0 * hp_mean - 63.0));
+    const double d_theta = 30.0 * std::exp(-((hp_mean - 275.0) / 25.0) * ((hp_mean - 275.0) / 25.0));
+    const double cp_mean7 = std::pow(cp_mean, 7.0);
+    const double r_c = 2.0 * std::sqrt(cp_mean7 / (cp_mean7 + twenty_five_7));
+    const double l50 = (l_mean - 50.0) * (l_mean - 50.0);
+    const double s_l = 1.0 + 0.015 * l50 / std::sqrt(20.0 + l50);
+    const double s_c = 1.0 + 0.045 * cp_mean;
+    const double s_h = 1.0 + 0.015 * cp_mean * t;
+    const double r_t = -std::sin(radians(2.0 * d_theta)) * r_c;
+
+    const double tl = dl / (k_l * s_l);
+    const double tc = dc / (k_c * s_c);
+    const double th = dh / (k_h * s_h);
+    return std::sqrt(tl * tl + tc * tc + th * th + r_t * tc * th);
+}
+
+double delta_e_uv(const Luv& a, const Luv& b) noexcept {
+    return std::sqrt((a.L - b.L) * (a.L - b.L) + (a.u - b.u) * (a.u - b.u) +
+                     (a.v - b.v) * (a.v - b.v));
+}
+
+double delta_c_uv(const Luv& a, const Luv& b) noexcept {
+    return std::hypot(b.u, b.v) - std::hypot(a.u, a.v);
+}
+
+double delta_h_uv(const Luv& a, const Luv& b) noexcept {
+    const double de = delta_e_uv(a, b);
+    const double dl = b.L - a.L;
+    const double dc = delta_c_uv(a, b);
+    const double h2 = de * de - dl * dl - dc * dc;
+    return h2 > 0.0 ? std::sqrt(h2) : 0.0;
+}
+
+double delta_s_uv(const Luv& a, const Luv& b) noexcept {
+    const auto saturation = [](const Luv& c) {
+        return c.L > 0.0 ? std::hypot(c.u, c.v) / c.L : 0.0;
+    };
+    return saturation(b) - saturation(a);
+}
+
+double delta_e_ok(const Oklab& a, const Oklab& b) noexcept {
+    return std::sqrt((a.L - b.L) * (a.L - b.L) + (a.a - b.a) * (a.a - b.a) +
+                     (a.b - b.b) * (a.b - b.b));
+}
+
+}  // namespace irid

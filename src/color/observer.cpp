@@ -1,0 +1,95 @@
+#include <irid/color/observer.h>
+#include <irid/color/spaces.h>
+#include <irid/error.h>
+
+#include "cie_tables.h"
+
+#include <string>
+
+namespace irid {
+namespace {
+
+namespace data = detail::cie_data;
+static_assert(data::cmf_first_nm == lambda_min_nm && data::cmf_count == dense_sample_count,
+              "the CIE colour-matching functions must cover the dense grid exactly");
+
+ColorMatchingFunctions make_cmfs(const std::array<double, dense_sample_count>& x,
+                                 const std::array<double, dense_sample_count>& y,
+                                 const std::array<double, dense_sample_count>& z) {
+    return {DenseSpectrum(x), DenseSpectrum(y), DenseSpectrum(z)};
+}
+
+}  // namespace
+
+const ColorMatchingFunctions& color_matching_functions(Observer observer) noexcept {
+    static const ColorMatchingFunctions cie1931 =
+        make_cmfs(data::cie1931_x, data::cie1931_y, data::cie1931_z);
+    static const ColorMatchingFunctions cie1964 =
+        make_cmfs(data::cie1964_x, data::cie1964_y, data::cie1964_z);
+    return observer == Observer::cie1964_10deg ? cie1964 : cie1931;
+}
+
+Observer parse_observer(std::string_view name) {
+    if (name == "cie1931" || name == "2") return Observer::cie1931_2deg;
+    if (name == "cie1964" || name == "10") return Observer::cie1964_10deg;
+    throw Error("unknown observer '" + std::string(name) + "'; valid names: cie1931, cie1964");
+}
+
+std::string_view observer_name(Observer observer) noexcept {
+    return observer == Observer::cie1964_10deg ? "cie1964" : "cie1931";
+}
+
+Xyz monochromatic_xyz(double lambda_nm, Observer observer) noexcept {
+    const ColorMatchingFunctions& cmf = color_matching_functions(observer);
+    return {cmf.x(lambda_nm), cmf.y(lambda_nm), cmf.z(lambda_nm)};
+}
+
+Xy spectral_locus_xy(double lambda_nm, Observer observer) {
+    if (!(lambda_nm >= lambda_min_nm && lambda_nm <= lambda_max_nm)) {
+        throw Error("spectral locus: wavelength " + std::to_string(lambda_nm) +
+                    " nm is outside 360-830 nm");
+    }
+    return xyz_to_xy(monochromatic_xyz(lambda_nm, observer));
+}
+
+Xyz reflectance_to_xyz(const DenseSpectrum& reflectance, const DenseSpectrum& illuminant,
+                       Observer observer) noexcept {
+    const ColorMatchingFunctions& cmf = color_matching_functions(observer);
+    double x = 0.0, y = 0.0, z = 0.0, white_y = 0.0;
+    for (int i = 0; i < dense_sample_count; ++i) {
+        const double s = illuminant[i];
+        const double sr = s * reflectance[i];
+        x += sr * cmf.x[i];
+        y += sr * cmf.y[i];
+        z += sr * cmf.z[i];
+        white_y += s * cmf.y[i];
+    }
+    const double k = white_y != 0.0 ? 1.0 / white_y : 0.0;
+    return {x * k, y * k, z * k};
+}
+
+Xyz illuminant_white(const DenseSpectrum& illuminant, Observer observer) {
+    const ColorMatchingFunctions& cmf = color_matching_functions(observer);
+    if (!(illuminant.dot(cmf.y) > 0.0)) {
+        throw Error("illuminant: its luminance (Σ S ȳ) must be positive");
+    }
+    return reflectance_to_xyz(DenseSpectrum(1.0), illuminant, observer);
+}
+
+Xyz emission_to_xyz_absolute(const DenseSpectrum& spectral_power, Observer observer) noexcept {
+    const ColorMatchingFunctions& cmf = color_matching_functions(observer);
+    constexpr double delta_lambda_nm = 1.0;
+    const double k = max_luminous_efficacy_lm_per_w * delta_lambda_nm;
+    return {k * spectral_power.dot(cmf.x), k * spectral_power.dot(cmf.y),
+            k * spectral_power.dot(cmf.z)};
+}
+
+Xyz emission_to_xyz_relative(const DenseSpectrum& spectral_power, Observer observer) {
+    const Xyz a = emission_to_xyz_absolute(spectral_power, observer);
+    if (!(a.Y > 0.0) || !std::isfinite(a.Y)) {
+        throw Error("emission spectrum: its luminance Y must be positive and finite to normalise");
+    }
+    return {a.X / a.Y, 1.0, a.Z / a.Y};
+}
+
+}  // namespace irid

@@ -1,0 +1,187 @@
+#include <irid/color/numeric_table.h>
+#include <irid/color/rgb.h>
+#include <irid/color/spaces.h>
+#include <irid/error.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+
+namespace irid {
+namespace {
+
+// IEC 61966-2-1:1999 §4.2 (sRGB).
+constexpr double srgb_linear_limit = 0.0031308;
+constexpr double srgb_encoded_limit = 0.04045;
+// ITU-R BT.709-6 Item 1.2 (also BT.601, SMPTE 170M).
+constexpr double rec709_alpha = 1.099;
+constexpr double rec709_beta = 0.018;
+// ITU-R BT.2020-2 Table 4, the exact constants for 12-bit systems.
+constexpr double rec2020_alpha = 1.09929682680944;
+constexpr double rec2020_beta = 0.018053968510807;
+
+/// The BT.709-style curve: slope 4.5 below beta, alpha v^0.45 - (alpha - 1) above.
+double camera_encode(double v, double alpha, double beta) noexcept {
+    return v < beta ? 4.5 * v : alpha * std::pow(v, 0.45) - (alpha - 1.0);
+}
+double camera_decode(double e, double alpha, double beta) noexcept {
+    return e < 4.5 * beta ? e / 4.5 : std::pow((e + (alpha - 1.0)) / alpha, 1.0 / 0.45);
+}
+
+void check_chromaticity(const Xy& c, const char* what) {
+    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !(c.y > 0.0)) {
+        throw Error(std::string(what) + " chromaticity (" + format_shortest(c.x) + ", " +
+                    format_shortest(c.y) + ") must be finite with y > 0");
+    }
+}
+
+}  // namespace
+
+TransferFunction::TransferFunction(Kind kind, double gamma) : m_kind(kind), m_gamma(gamma) {
+    if (kind == Kind::gamma && !(gamma > 0.0 && gamma <= 10.0)) {
+        throw Error("transfer function: gamma " + format_shortest(gamma) + " must be in (0, 10]");
+    }
+}
+
+double TransferFunction::encode(double linear) const noexcept {
+    const double v = std::abs(linear);
+    double e = v;
+    switch (m_kind) {
+        case Kind::linear: return linear;
+        case Kind::srgb:
+            e = v <= srgb_linear_limit ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+            break;
+        case Kind::rec709: e = camera_encode(v, rec709_alpha, rec709_beta); break;
+        case Kind::rec2020: e = camera_encode(v, rec2020_alpha, rec2020_beta); break;
+        case Kind::gamma: e = std::pow(v, 1.0 / m_gamma); break;
+    }
+    return std::copysign(e, linear);
+}
+
+double TransferFunction::decode(double encoded) const noexcept {
+    const double e = std::abs(encoded);
+    double v = e;
+    switch (m_kind) {
+        case Kind::linear: return encoded;
+        case Kind::srgb:
+            v = e <= srgb_encoded_limit ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+            break;
+        case Kind::rec709: v = camera_decode(e, rec709_alpha, rec709_beta); break;
+        case Kind::rec2020: v = camera_decode(e, rec2020_alpha, rec2020_beta); break;
+        case Kind::gamma: v = std::pow(e, m_gamma); break;
+    }
+    return std::copysign(v, encoded);
+}
+
+Mat3 rgb_to_xyz_matrix(const RgbPrimaries& p, const Xy& white) {
+    check_chromaticity(p.red, "red primary");
+    check_chromaticity(p.green, "green primary");
+    check_chromaticity(p.blue, "blue primary");
+    check_chromaticity(white, "white point");
+    const Xyz r = xy_to_xyz(p.red);
+    const Xyz g = xy_to_xyz(p.green);
+    const Xyz b = xy_to_xyz(p.blue);
+    const Mat3 primaries =
+        Mat3::from_columns({r.X, r.Y, r.Z}, {g.X, g.Y, g.Z}, {b.X, b.Y, b.Z});
+    if (std::abs(primaries.determinant()) < 1e-9) {
+        throw Error("RGB primaries are collinear in chromaticity; they span no gamut");
+    }
+    const Xyz w = xy_to_xyz(white);
+    const Vec3 scale = inverse(primaries, "primary matrix") * Vec3{w.X, w.Y, w.Z};
+    return primaries * Mat3::diagonal(scale);
+}
+
+RgbSpace::RgbSpace(std::string name, const RgbPrimaries& primaries, const Xy& white,
+                   TransferFunction transfer)
+    : m_name(std::move(name)),
+      m_primaries(primaries),
+      m_white(white),
+      m_white_xyz(xy_to_xyz(white)),
+      m_transfer(transfer),
+      m_to_xyz(rgb_to_xyz_matrix(primaries, white)),
+      m_from_xyz(inverse(m_to_xyz, "RGB to XYZ matrix")) {}
+
+Xyz RgbSpace::to_xyz(const Rgb& c) const noexcept {
+    const Vec3 v = m_to_xyz * Vec3{c.r, c.g, c.b};
+    return {v[0], v[1], v[2]};
+}
+
+Rgb RgbSpace::from_xyz(const Xyz& c) const noexcept {
+    const Vec3 v = m_from_xyz * Vec3{c.X, c.Y, c.Z};
+    return {v[0], v[1], v[2]};
+}
+
+Rgb RgbSpace::encode(const Rgb& c) const noexcept {
+    return {m_transfer.encode(c.r), m_transfer.encode(c.g), m_transfer.encode(c.b)};
+}
+
+Rgb RgbSpace::decode(const Rgb& c) const noexcept {
+    return {m_transfer.decode(c.r), m_transfer.decode(c.g), m_transfer.decode(c.b)};
+}
+
+namespace {
+
+using Kind = TransferFunction::Kind;
+/// D65 as ITU-R BT.709-6 and IEC 61966-2-1 give it.
+constexpr Xy d65_xy{0.3127, 0.3290};
+/// Illuminant C as the FCC 1953 NTSC standard gives it.
+constexpr Xy c_xy{0.310, 0.316};
+
+}  // namespace
+
+const RgbSpace& srgb() {
+    // ITU-R BT.709-6 Item 1.3 primaries; IEC 61966-2-1:1999.
+    static const RgbSpace space("srgb", {{0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}}, d65_xy,
+                                TransferFunction(Kind::srgb));
+    return space;
+}
+
+const RgbSpace& display_p3() {
+    // SMPTE EG 432-1:2010 (P3 primaries) with a D65 white and the sRGB curve.
+    static const RgbSpace space("display-p3", {{0.680, 0.320}, {0.265, 0.690}, {0.150, 0.060}},
+                                d65_xy, TransferFunction(Kind::srgb));
+    return space;
+}
+
+const RgbSpace& rec2020() {
+    // ITU-R BT.2020-2 Table 3.
+    static const RgbSpace space("rec2020", {{0.708, 0.292}, {0.170, 0.797}, {0.131, 0.046}},
+                                d65_xy, TransferFunction(Kind::rec2020));
+    return space;
+}
+
+const RgbSpace& adobe_rgb() {
+    // Adobe RGB (1998) Color Image Encoding, version 2005-05, §4.2-4.3: γ = 563/256.
+    static const RgbSpace space("adobe-rgb", {{0.64, 0.33}, {0.21, 0.71}, {0.15, 0.06}}, d65_xy,
+                                TransferFunction(Kind::gamma, 563.0 / 256.0));
+    return space;
+}
+
+const RgbSpace& smpte_c() {
+    // SMPTE RP 145-2004 primaries, SMPTE 170M-2004 transfer.
+    static const RgbSpace space("smpte-c", {{0.630, 0.340}, {0.310, 0.595}, {0.155, 0.070}},
+                                d65_xy, TransferFunction(Kind::rec709));
+    return space;
+}
+
+const RgbSpace& ntsc1953() {
+    // FCC 1953 (47 CFR §73.682) primaries and illuminant C; display gamma 2.2.
+    static const RgbSpace space("ntsc1953", {{0.67, 0.33}, {0.21, 0.71}, {0.14, 0.08}}, c_xy,
+                                TransferFunction(Kind::gamma, 2.2));
+    return space;
+}
+
+std::span<const RgbSpace* const> builtin_rgb_spaces() {
+    static const std::array<const RgbSpace*, 6> spaces{&srgb(),     &display_p3(), &rec2020(),
+                                                       &adobe_rgb(), &smpte_c(),    &ntsc1953()};
+    return spaces;
+}
+
+const RgbSpace* find_rgb_space(std::string_view name) noexcept {
+    for (const RgbSpace* space : builtin_rgb_spaces()) {
+        if (space->name() == name) return space;
+    }
+    return nullptr;
+}
+
+}  // namespace irid
