@@ -79,11 +79,12 @@ double delta_c_uv(const Luv& a, const Luv& b) noexcept {
 }
 
 double delta_h_uv(const Luv& a, const Luv& b) noexcept {
-    const double de = delta_e_uv(a, b);
-    const double dl = b.L - a.L;
-    const double dc = delta_c_uv(a, b);
-    const double h2 = de * de - dl * dl - dc * dc;
-    return h2 > 0.0 ? std::sqrt(h2) : 0.0;
+    // Eq. 13's [(ΔE)² − (ΔL)² − (ΔC)²]^½ loses every digit to cancellation for small hue
+    // differences; the identical quantity 2 (C1 C2)^½ |sin(Δh/2)| does not.
+    const double c1 = std::hypot(a.u, a.v);
+    const double c2 = std::hypot(b.u, b.v);
+    const double dh = std::atan2(a.u * b.v - a.v * b.u, a.u * b.u + a.v * b.v);
+    return 2.0 * std::sqrt(c1 * c2) * std::abs(std::sin(0.5 * dh));
 }
 
 double delta_s_uv(const Luv& a, const Luv& b) noexcept {

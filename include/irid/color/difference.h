@@ -15,7 +15,8 @@ namespace irid {
 /// ΔE*uv: Euclidean distance in CIELUV (Smits 1990, eq. 12).
 [[nodiscard]] double delta_e_uv(const Luv& a, const Luv& b) noexcept;
 /// ΔH*uv = [(ΔE*uv)² − (ΔL*)² − (ΔC*uv)²]^½ (Smits 1990, eq. 13; CIE 015:2018 §8.3), the
-/// hue difference; rounding below zero is clamped to 0.
+/// hue difference, computed as the equal 2 (C1 C2)^½ |sin(Δh/2)|, which is free of
+/// cancellation.
 [[nodiscard]] double delta_h_uv(const Luv& a, const Luv& b) noexcept;
 /// ΔS: difference of CIELUV saturation s_uv = C*uv / L* (Smits 1990, eq. 14; CIE 015:2018
 /// §8.2.2), b minus a. Colours with L* = 0 have saturation 0.
