@@ -17,13 +17,24 @@ std::string_view trim(std::string_view s) noexcept {
     return s.substr(first, last - first + 1);
 }
 
-/// Parses a whole field as a double; false when it is not a number (or has trailing text).
-bool parse_number(std::string_view field, double& value) noexcept {
+enum class Parse { ok, not_a_number, out_of_range };
+
+/// Parses a whole field as a double (no trailing text allowed).
+Parse parse_number(std::string_view field, double& value) noexcept {
     field = trim(field);
     if (!field.empty() && field.front() == '+') field.remove_prefix(1);
-    if (field.empty()) return false;
+    if (field.empty()) return Parse::not_a_number;
     const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
-    return ec == std::errc() && end == field.data() + field.size();
+    if (end != field.data() + field.size()) return Parse::not_a_number;
+    if (ec == std::errc::result_out_of_range) return Parse::out_of_range;
+    return ec == std::errc() ? Parse::ok : Parse::not_a_number;
+}
+
+/// A field that begins like a number (sign, point or digit): a typo in data, never a column
+/// name, so a first line made only of such fields is data even when one fails to parse.
+bool looks_numeric(std::string_view field) noexcept {
+    field = trim(field);
+    return !field.empty() && std::string_view("+-.0123456789").find(field.front()) != std::string_view::npos;
 }
 
 std::vector<std::string_view> split_fields(std::string_view line) {
@@ -64,22 +75,29 @@ NumericTable read_numeric_table(std::istream& in, std::string_view source, int c
         if (content.empty()) continue;
         const std::vector<std::string_view> fields = split_fields(content);
         std::vector<double> row(fields.size());
-        bool numeric = true;
+        Parse status = Parse::ok;
         std::size_t bad_field = 0;
-        for (std::size_t i = 0; i < fields.size() && numeric; ++i) {
-            if (!parse_number(fields[i], row[i])) {
-                numeric = false;
+        bool all_look_numeric = true;
+        for (std::size_t i = 0; i < fields.size(); ++i) {
+            all_look_numeric = all_look_numeric && looks_numeric(fields[i]);
+            const Parse p = parse_number(fields[i], row[i]);
+            if (p != Parse::ok && status == Parse::ok) {
+                status = p;
                 bad_field = i;
             }
         }
         if (first_content_line) {
             first_content_line = false;
-            if (!numeric) {
+            if (status != Parse::ok && !all_look_numeric) {
                 table.header = std::string(content);
                 continue;
             }
         }
-        if (!numeric) {
+        if (status == Parse::out_of_range) {
+            fail("field " + std::to_string(bad_field + 1) + " " + quoted(trim(fields[bad_field])) +
+                 " is out of the range of a double");
+        }
+        if (status != Parse::ok) {
             fail("field " + std::to_string(bad_field + 1) + " " + quoted(trim(fields[bad_field])) +
                  " is not a number");
         }

@@ -7,6 +7,7 @@
 # Prints one line per failed check (what was run, what was expected, what came out) and ends
 # with "N passed, M failed"; exits 0 only when every check passed. Every expected value comes
 # from a published table or a closed form, never from the program's own output.
+# shellcheck disable=SC2016  # awk conditions on $1, $2, $3 are passed in single quotes
 set -u
 
 if [[ $# -ne 2 ]]; then
@@ -175,6 +176,7 @@ expect_chromaticity() {
 
 # expect_first_row_where CONDITION WHAT: status 0 and the awk CONDITION (on $1, $2, $3, with
 # abs()) holds for the first line after stdout's header; WHAT describes it for the message.
+# CONDITION is pasted into the awk program, so its $1, $2, $3 are awk's fields.
 expect_first_row_where() {
     if [[ $STATUS -eq 0 ]] && awk -F, "function abs(x) { return x < 0 ? -x : x }
             NR == 2 { found = 1; ok = ($1) } END { exit !(found && ok) }" "$TMP/out"; then
@@ -211,12 +213,12 @@ D50_XYZ=$(awk 'BEGIN { x = 0.3457; y = 0.3585; printf "%.17g,1,%.17g", x / y, (1
 SHARMA=$DATA/sharma2005_ciede2000_pairs.csv
 cut -d, -f1-6 "$SHARMA" >"$TMP/sharma_pairs"                # header line kept
 tail -n +2 "$SHARMA" | cut -d, -f7 >"$TMP/sharma_delta_e"   # the published ΔE00
-RAN="wc -l < $SHARMA"
-if [[ $(wc -l <"$TMP/sharma_delta_e") -eq 34 ]]; then pass; else fail "34 pairs" "$(wc -l <"$TMP/sharma_delta_e")"; fi
+RAN="reading $SHARMA"
+if [[ $(wc -l <"$TMP/sharma_delta_e") -eq 34 ]]; then pass; else fail "34 published pairs" "$(wc -l <"$TMP/sharma_delta_e") rows"; fi
 
 run_file "$TMP/sharma_pairs" delta-e --metric ciede2000
 expect_header "delta_e"
-expect_close "$(cat "$TMP/sharma_delta_e")" 1e-4   # also: exactly 34 value lines
+expect_close "$(cat "$TMP/sharma_delta_e")" 1e-4   # one value line per pair: 34
 
 # === 2. delta-e: the Euclidean metrics (3-4-5 triangles) ==================================
 
@@ -372,6 +374,7 @@ run $'50,0,0,53,4,0\n' delta-e --metric no-such-metric
 expect_usage_error "ciede2000"
 run $'50,0,0,53,4,0\n' delta-e
 expect_usage_error "--metric"
+expect_stderr_has "cieuv"   # a missing option's message lists its valid values too
 run $'1,1,1\n' convert --from xyz --to xyz --no-such-option
 expect_usage_error "--no-such-option"
 run $'380,1\n780,1\n' xyz --illuminant no-such-illuminant
@@ -379,7 +382,7 @@ expect_usage_error "D65"
 run $'380,1\n780,1\n' xyz --observer no-such-observer
 expect_usage_error "cie1964"
 run '' no-such-command
-expect_status 2
+expect_usage_error "delta-e"
 
 # Bad data: status 1, the line number on stderr, nothing on stdout (even when earlier lines
 # were fine).
@@ -402,6 +405,11 @@ expect_bad_data 3
 run $'nm,r\n380,1\n500,1\n500,1\n780,1\n' xyz
 expect_bad_data 4
 run $'380,1,1\n500,1\n780,1,1\n' xyz
+expect_bad_data 2
+# A first line of number-like fields is data with a typo, not a header to skip silently.
+run $'1e400,0,0\n' convert --from xyz --to xyz
+expect_bad_data 1
+run $'0.1,0.2,0.3\n1e400,0,0\n' convert --from xyz --to xyz
 expect_bad_data 2
 
 # Help and no command.

@@ -48,8 +48,12 @@ TEST(NumericTable, NamesTheLineAndFieldOfBadData) {
     EXPECT_EQ(error_of("X,Y,Z\n1,2,3\n1,two,3\n"), "input.csv:3: field 2 'two' is not a number");
     EXPECT_EQ(error_of("1,2,3\n1,2\n", 3), "input.csv:2: expected 3 comma-separated numbers, found 2");
     EXPECT_NE(error_of("1,2,3\n1,2\n").find("input.csv:2:"), std::string::npos);
-    // A bad first line is a header, not an error; the same line later is.
-    EXPECT_EQ(error_of("1,,3\n"), "no error");
+    // A first line with a name in it is a header, not an error; the same line later is.
+    EXPECT_EQ(error_of("1,x,3\n"), "no error");
+    EXPECT_NE(error_of("1,2,3\n1,x,3\n").find("input.csv:2: field 2 'x'"), std::string::npos);
+    // A first line of number-like fields is data, so a typo there is reported, not skipped.
+    EXPECT_EQ(error_of("1e400,0,0\n"), "input.csv:1: field 1 '1e400' is out of the range of a double");
+    EXPECT_EQ(error_of("0x10,0,0\n"), "input.csv:1: field 1 '0x10' is not a number");
     EXPECT_NE(error_of("1,nan,3\n").find("not a finite number"), std::string::npos);
     EXPECT_NE(error_of("1,inf,3\n").find("input.csv:1:"), std::string::npos);
     EXPECT_NE(error_of("1,2,3\nX,Y,Z\n").find("input.csv:2:"), std::string::npos);

@@ -17,8 +17,9 @@ struct NumericTable {
     std::vector<int> line_numbers;
 };
 
-/// Reads comma-separated numbers. A first line that is not numeric is a header; blank lines are
-/// skipped; every other line must hold `columns` finite numbers (any count ≥ min_columns, the
+/// Reads comma-separated numbers. A first line that is not numeric is a header, unless every
+/// field of it begins like a number (a sign, point or digit: "1e400,0,0", "0x1,2,3"), which is
+/// mistyped data and an error rather than silently skipped; blank lines are skipped; every other line must hold `columns` finite numbers (any count ≥ min_columns, the
 /// same on every line, when columns is 0). Spaces around fields and a final CR are ignored.
 /// Throws irid::Error "<source>:<line>: <what was wrong>" on the first bad line.
 [[nodiscard]] NumericTable read_numeric_table(std::istream& in, std::string_view source,
