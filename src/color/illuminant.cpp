@@ -45,6 +45,8 @@ std::string lower(std::string_view s) {
 }
 
 bool parse_double(std::string_view s, double& v) {
+    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+    while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     return ec == std::errc() && end == s.data() + s.size() && std::isfinite(v);
 }

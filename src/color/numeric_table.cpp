@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <system_error>
 
@@ -19,22 +20,32 @@ std::string_view trim(std::string_view s) noexcept {
 
 enum class Parse { ok, not_a_number, out_of_range };
 
-/// Parses a whole field as a double (no trailing text allowed).
-Parse parse_number(std::string_view field, double& value) noexcept {
+/// Parses a whole field as a double (no trailing text allowed). Values too small for a double
+/// underflow to zero or a subnormal, as strtod does; values too large are out of range.
+Parse parse_number(std::string_view field, double& value) {
     field = trim(field);
-    if (!field.empty() && field.front() == '+') field.remove_prefix(1);
+    if (!field.empty() && field.front() == '+') {
+        field.remove_prefix(1);
+        if (!field.empty() && (field.front() == '-' || field.front() == '+')) return Parse::not_a_number;
+    }
     if (field.empty()) return Parse::not_a_number;
     const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
     if (end != field.data() + field.size()) return Parse::not_a_number;
-    if (ec == std::errc::result_out_of_range) return Parse::out_of_range;
+    if (ec == std::errc::result_out_of_range) {
+        const std::string text(field);
+        value = std::strtod(text.c_str(), nullptr);
+        return std::isinf(value) ? Parse::out_of_range : Parse::ok;
+    }
     return ec == std::errc() ? Parse::ok : Parse::not_a_number;
 }
 
-/// A field that begins like a number (sign, point or digit): a typo in data, never a column
-/// name, so a first line made only of such fields is data even when one fails to parse.
+/// A field that is empty or begins like a number (sign, point or digit) is mistyped or missing
+/// data, never a column name: a first line made only of such fields is data even when one fails
+/// to parse.
 bool looks_numeric(std::string_view field) noexcept {
     field = trim(field);
-    return !field.empty() && std::string_view("+-.0123456789").find(field.front()) != std::string_view::npos;
+    return field.empty() ||
+           std::string_view("+-.0123456789").find(field.front()) != std::string_view::npos;
 }
 
 std::vector<std::string_view> split_fields(std::string_view line) {
@@ -71,7 +82,11 @@ NumericTable read_numeric_table(std::istream& in, std::string_view source, int c
     };
     while (std::getline(in, line)) {
         ++line_number;
-        const std::string_view content = trim(line);
+        std::string_view content = trim(line);
+        constexpr std::string_view utf8_bom = "\xEF\xBB\xBF";
+        if (line_number == 1 && content.substr(0, utf8_bom.size()) == utf8_bom) {
+            content = trim(content.substr(utf8_bom.size()));
+        }
         if (content.empty()) continue;
         const std::vector<std::string_view> fields = split_fields(content);
         std::vector<double> row(fields.size());

@@ -1,3 +1,4 @@
+#include <irid/color/numeric_table.h>
 #include <irid/color/observer.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
@@ -46,7 +47,7 @@ Xyz monochromatic_xyz(double lambda_nm, Observer observer) noexcept {
 
 Xy spectral_locus_xy(double lambda_nm, Observer observer) {
     if (!(lambda_nm >= lambda_min_nm && lambda_nm <= lambda_max_nm)) {
-        throw Error("spectral locus: wavelength " + std::to_string(lambda_nm) +
+        throw Error("spectral locus: wavelength " + format_shortest(lambda_nm) +
                     " nm is outside 360-830 nm");
     }
     return xyz_to_xy(monochromatic_xyz(lambda_nm, observer));

@@ -10,13 +10,17 @@
 namespace irid {
 namespace {
 
-// IEC 61966-2-1:1999 §4.2 (sRGB).
+// IEC 61966-2-1:1999 §4.2 (sRGB). The standard switches the decoding at 0.04045; irid switches
+// at the encoding's own switch point 12.92 × 0.0031308 = 0.040449936, so decoding is the exact
+// inverse of encoding (the two differ by < 3e-9 in the sliver between).
 constexpr double srgb_linear_limit = 0.0031308;
-constexpr double srgb_encoded_limit = 0.04045;
-// ITU-R BT.709-6 Item 1.2 (also BT.601, SMPTE 170M).
+constexpr double srgb_encoded_limit = 12.92 * srgb_linear_limit;
+// ITU-R BT.709-6 Item 1.2 (also BT.601, SMPTE 170M). With these rounded constants the two
+// pieces miss each other by 2e-7 at β, so values within 4e-5 of β round-trip to ~1e-7 only.
 constexpr double rec709_alpha = 1.099;
 constexpr double rec709_beta = 0.018;
-// ITU-R BT.2020-2 Table 4, the exact constants for 12-bit systems.
+// ITU-R BT.2020-2 Table 4: α and β to the precision that makes the two pieces meet (the
+// standard rounds them to 1.099/0.018 for 10-bit and 1.0993/0.0181 for 12-bit systems).
 constexpr double rec2020_alpha = 1.09929682680944;
 constexpr double rec2020_beta = 0.018053968510807;
 
@@ -28,10 +32,14 @@ double camera_decode(double e, double alpha, double beta) noexcept {
     return e < 4.5 * beta ? e / 4.5 : std::pow((e + (alpha - 1.0)) / alpha, 1.0 / 0.45);
 }
 
-void check_chromaticity(const Xy& c, const char* what) {
-    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !(c.y > 0.0)) {
+/// Primaries may be imaginary (ACES AP0's blue has y < 0) but need y ≠ 0 to have an XYZ; the
+/// white must be a real colour, y > 0.
+void check_chromaticity(const Xy& c, const char* what, bool must_be_real) {
+    const bool ok = std::isfinite(c.x) && std::isfinite(c.y) && (must_be_real ? c.y > 0.0 : c.y != 0.0);
+    if (!ok) {
         throw Error(std::string(what) + " chromaticity (" + format_shortest(c.x) + ", " +
-                    format_shortest(c.y) + ") must be finite with y > 0");
+                    format_shortest(c.y) + ") must be finite with " +
+                    (must_be_real ? "y > 0" : "y != 0"));
     }
 }
 
@@ -74,18 +82,31 @@ double TransferFunction::decode(double encoded) const noexcept {
 }
 
 Mat3 rgb_to_xyz_matrix(const RgbPrimaries& p, const Xy& white) {
-    check_chromaticity(p.red, "red primary");
-    check_chromaticity(p.green, "green primary");
-    check_chromaticity(p.blue, "blue primary");
-    check_chromaticity(white, "white point");
+    check_chromaticity(p.red, "red primary", false);
+    check_chromaticity(p.green, "green primary", false);
+    check_chromaticity(p.blue, "blue primary", false);
+    check_chromaticity(white, "white point", true);
+    // Twice the signed areas of the primaries' triangle and of the three triangles the white
+    // makes with two of them: the white is inside when all have the same sign.
+    const auto area2 = [](const Xy& a, const Xy& b, const Xy& c) {
+        return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    };
+    const double whole = area2(p.red, p.green, p.blue);
+    if (!(std::abs(whole) > 1e-6)) {
+        throw Error("RGB primaries are (nearly) collinear in chromaticity; they span no gamut");
+    }
+    for (const double part : {area2(white, p.green, p.blue), area2(p.red, white, p.blue),
+                              area2(p.red, p.green, white)}) {
+        if (!(part / whole > 0.0)) {
+            throw Error("white point (" + format_shortest(white.x) + ", " +
+                        format_shortest(white.y) + ") must lie inside the triangle of the primaries");
+        }
+    }
     const Xyz r = xy_to_xyz(p.red);
     const Xyz g = xy_to_xyz(p.green);
     const Xyz b = xy_to_xyz(p.blue);
     const Mat3 primaries =
         Mat3::from_columns({r.X, r.Y, r.Z}, {g.X, g.Y, g.Z}, {b.X, b.Y, b.Z});
-    if (std::abs(primaries.determinant()) < 1e-9) {
-        throw Error("RGB primaries are collinear in chromaticity; they span no gamut");
-    }
     const Xyz w = xy_to_xyz(white);
     const Vec3 scale = inverse(primaries, "primary matrix") * Vec3{w.X, w.Y, w.Z};
     return primaries * Mat3::diagonal(scale);

@@ -133,12 +133,10 @@ Oklab xyz_to_oklab(const Xyz& c) noexcept {
 }
 
 Xyz oklab_to_xyz(const Oklab& c) noexcept {
-    static const Mat3 m1_inverse = inverse(oklab_m1, "Oklab M1");
-    static const Mat3 m2_inverse = inverse(oklab_m2, "Oklab M2");
-    const Vec3 lms_root = m2_inverse * Vec3{c.L, c.a, c.b};
+    const Vec3 lms_root = oklab_m2_inverse * Vec3{c.L, c.a, c.b};
     const Vec3 lms{lms_root[0] * lms_root[0] * lms_root[0], lms_root[1] * lms_root[1] * lms_root[1],
                    lms_root[2] * lms_root[2] * lms_root[2]};
-    const Vec3 xyz = m1_inverse * lms;
+    const Vec3 xyz = oklab_m1_inverse * lms;
     return {xyz[0], xyz[1], xyz[2]};
 }
 

@@ -88,6 +88,10 @@ PiecewiseLinearSpectrum PiecewiseLinearSpectrum::from_dense(const DenseSpectrum&
 }
 
 PiecewiseLinearSpectrum PiecewiseLinearSpectrum::read_csv(const std::string& path, int column) {
+    if (column < 1) {
+        throw Error(path + ": spectrum column " + std::to_string(column) +
+                    " must be >= 1 (column 0 holds the wavelengths)");
+    }
     std::ifstream in(path);
     if (!in) throw Error(path + ": cannot open the file for reading");
     const NumericTable table = read_numeric_table(in, path, 0, column + 1);

@@ -406,11 +406,30 @@ run $'nm,r\n380,1\n500,1\n500,1\n780,1\n' xyz
 expect_bad_data 4
 run $'380,1,1\n500,1\n780,1,1\n' xyz
 expect_bad_data 2
+# xyY with y = 0 has no XYZ unless it is black; a spectrum too large for XYZ is bad data.
+run $'0.3,0.3,0.5\n0.3,0,0.5\n' convert --from xyy --to xyz
+expect_bad_data 2
+run $'400,1e308\n700,1e308\n' xyz
+expect_status 1
+expect_empty_stdout
+# A first line with an empty field, or starting with a byte-order mark, is still data.
+run $'1,,0\n' convert --from xyz --to xyz
+expect_bad_data 1
+run $'\xEF\xBB\xBF0.1,0.2,0.3\n' convert --from xyz --to xyz
+expect_output $'X,Y,Z\n0.1,0.2,0.3\n'
 # A first line of number-like fields is data with a typo, not a header to skip silently.
 run $'1e400,0,0\n' convert --from xyz --to xyz
 expect_bad_data 1
 run $'0.1,0.2,0.3\n1e400,0,0\n' convert --from xyz --to xyz
 expect_bad_data 2
+
+# NTSC 1953 has illuminant C for white: XYZ relative to the default D65 is adapted to it, so
+# its white comes out as D65; relative to its own white (FCC's C, 0.310, 0.316) the primaries
+# keep their FCC chromaticities.
+run $'1,1,1\n' convert --from ntsc1953-linear --to xyz
+expect_close "$D65_XYZ" 1e-12
+run $'1,0,0\n0,1,0\n' convert --from ntsc1953-linear --to xyy --white 0.310,0.316
+expect_close $'0.67,0.33,0.298911\n0.21,0.71,0.586611' "1e-12,1e-12,1e-3"
 
 # Help and no command.
 run '' --help

@@ -54,11 +54,23 @@ TEST(NumericTable, NamesTheLineAndFieldOfBadData) {
     // A first line of number-like fields is data, so a typo there is reported, not skipped.
     EXPECT_EQ(error_of("1e400,0,0\n"), "input.csv:1: field 1 '1e400' is out of the range of a double");
     EXPECT_EQ(error_of("0x10,0,0\n"), "input.csv:1: field 1 '0x10' is not a number");
+    EXPECT_EQ(error_of("1,,0\n"), "input.csv:1: field 2 '' is not a number");
+    EXPECT_EQ(error_of("1,0,0,\n"), "input.csv:1: field 4 '' is not a number");
+    EXPECT_EQ(error_of("+-1,0,0\n"), "input.csv:1: field 1 '+-1' is not a number");
     EXPECT_NE(error_of("1,nan,3\n").find("not a finite number"), std::string::npos);
     EXPECT_NE(error_of("1,inf,3\n").find("input.csv:1:"), std::string::npos);
     EXPECT_NE(error_of("1,2,3\nX,Y,Z\n").find("input.csv:2:"), std::string::npos);
     EXPECT_NE(error_of("1,2,3\n1,,3\n").find("field 2"), std::string::npos);
     EXPECT_NE(error_of("1,2,3\n1,2 3,3\n").find("field 2"), std::string::npos);
+}
+
+TEST(NumericTable, IgnoresAByteOrderMarkAndUnderflowsTinyNumbersToZero) {
+    const NumericTable t = parse("\xEF\xBB\xBFX,Y\n1e-400,2\n");
+    ASSERT_TRUE(t.header.has_value());
+    EXPECT_EQ(*t.header, "X,Y");
+    ASSERT_EQ(t.rows.size(), 1u);
+    EXPECT_EQ(t.rows[0][0], 0.0);
+    EXPECT_EQ(parse("\xEF\xBB\xBF" "1,2\n").rows.size(), 1u);
 }
 
 TEST(NumericTable, EmptyInputHasNoRows) {

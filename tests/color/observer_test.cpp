@@ -130,6 +130,10 @@ TEST(Emission, AbsoluteLuminanceUsesTheMaximumLuminousEfficacy) {
 TEST(Observer, ParsesNamesAndListsThemOnError) {
     EXPECT_EQ(parse_observer("cie1931"), Observer::cie1931_2deg);
     EXPECT_EQ(parse_observer("cie1964"), Observer::cie1964_10deg);
+    EXPECT_EQ(parse_observer("2"), Observer::cie1931_2deg);
+    EXPECT_EQ(parse_observer("10"), Observer::cie1964_10deg);
+    EXPECT_EQ(observer_name(Observer::cie1964_10deg), "cie1964");
+    EXPECT_EQ(parse_observer(observer_name(Observer::cie1931_2deg)), Observer::cie1931_2deg);
     try {
         (void)parse_observer("cie2006");
         FAIL();

@@ -83,7 +83,63 @@ TEST(TransferFunction, SrgbPiecesMeetAndMatchIec61966) {
     EXPECT_NEAR(f.encode(0.0031308), 12.92 * 0.0031308, 1e-15);
     EXPECT_NEAR(1.055 * std::pow(0.0031308, 1 / 2.4) - 0.055, 12.92 * 0.0031308, 1e-7);
     EXPECT_NEAR(f.decode(0.5), std::pow(0.555 / 1.055, 2.4), 1e-15);
-    EXPECT_NEAR(f.decode(0.04045), 0.04045 / 12.92, 1e-15);
+    EXPECT_NEAR(f.decode(0.04), 0.04 / 12.92, 1e-17);
+    // IEC's decoding switches at 0.04045; irid's exact inverse differs from it there by < 3e-9.
+    EXPECT_NEAR(f.decode(0.04045), 0.04045 / 12.92, 3e-9);
+}
+
+TEST(TransferFunction, DecodingIsTheExactInverseAcrossEverySwitchPoint) {
+    // Dense sweeps around each curve's break: sRGB 0.0031308, BT.2020 β; (BT.709's rounded
+    // constants leave a 4e-5-wide band near 0.018 where the pieces overlap, see rgb.cpp.)
+    for (const auto& [kind, knee] : {std::pair{TransferFunction::Kind::srgb, 0.0031308},
+                                     std::pair{TransferFunction::Kind::rec2020, 0.018053968510807}}) {
+        const TransferFunction f(kind);
+        for (int i = -2000; i <= 2000; ++i) {
+            const double v = knee * (1.0 + i * 1e-6);
+            EXPECT_NEAR(f.decode(f.encode(v)), v, 1e-15) << v;
+        }
+    }
+    const TransferFunction bt709(TransferFunction::Kind::rec709);
+    for (const double v : {0.0, 0.001, 0.0179, 0.0182, 0.1, 0.9}) {
+        EXPECT_NEAR(bt709.decode(bt709.encode(v)), v, 1e-15) << v;
+    }
+}
+
+TEST(RgbSpace, MatricesMatchTheirPublishedValues) {
+    // RGB → XYZ (D65 or C white), 7 decimals: Display P3 and Rec.2020 from CSS Color 4 §10;
+    // Adobe RGB (1998) from its specification §4.3.4.1 (4 decimals); SMPTE-C and NTSC from
+    // Lindbloom's RGB working space table, which scales to the ASTM E308 white XYZ instead of
+    // the xy white: its Z row differs by 2.3e-4 (D65 Z 1.08883 vs 1.08906 from xy 0.3127,
+    // 0.3290) and for NTSC by 1.2e-3 (C Z 1.18232 vs FCC's xy 0.310, 0.316 giving 1.18354).
+    const struct {
+        const RgbSpace* space;
+        double m[3][3];
+        double tolerance;
+    } cases[] = {
+        {&display_p3(),
+         {{0.4865709, 0.2656677, 0.1982173}, {0.2289746, 0.6917385, 0.0792869}, {0.0, 0.0451134, 1.0439444}},
+         1e-6},
+        {&rec2020(),
+         {{0.6369580, 0.1446169, 0.1688810}, {0.2627002, 0.6779981, 0.0593017}, {0.0, 0.0280727, 1.0609851}},
+         1e-6},
+        {&adobe_rgb(),
+         {{0.5767, 0.1856, 0.1882}, {0.2974, 0.6273, 0.0753}, {0.0270, 0.0707, 0.9911}},
+         3e-4},
+        {&smpte_c(),
+         {{0.3935891, 0.3652497, 0.1916313}, {0.2124132, 0.7010437, 0.0865432}, {0.0187423, 0.1119313, 0.9581563}},
+         2.5e-4},
+        {&ntsc1953(),
+         {{0.6068909, 0.1735011, 0.2003480}, {0.2989164, 0.5865990, 0.1144845}, {0.0, 0.0660957, 1.1162243}},
+         1.3e-3},
+    };
+    for (const auto& c : cases) {
+        const Mat3& m = c.space->to_xyz_matrix();
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                EXPECT_NEAR(m[i][j], c.m[i][j], c.tolerance) << c.space->name() << " " << i << "," << j;
+            }
+        }
+    }
 }
 
 TEST(TransferFunction, Bt2020PiecesMeetAtBeta) {
@@ -111,6 +167,16 @@ TEST(RgbSpace, UserDefinedSpacesAreValidated) {
     EXPECT_THROW(RgbSpace("zero y", {{0.7, 0.0}, {0.2, 0.75}, {0.14, 0.05}}, {0.3127, 0.329},
                           TransferFunction(TransferFunction::Kind::linear)),
                  Error);
+    EXPECT_THROW(RgbSpace("white outside", {{0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}}, {0.6, 0.2},
+                          TransferFunction(TransferFunction::Kind::linear)),
+                 Error);
+    // ACES AP0 (SMPTE ST 2065-1) has an imaginary blue primary, y < 0; its white is ACES's
+    // (0.32168, 0.33767) and its matrix's luminance row is 0.3439664, 0.7281661, −0.0721325.
+    const RgbSpace ap0("aces-ap0", {{0.7347, 0.2653}, {0.0, 1.0}, {0.0001, -0.0770}},
+                       {0.32168, 0.33767}, TransferFunction(TransferFunction::Kind::linear));
+    EXPECT_NEAR(ap0.to_xyz_matrix()[1][0], 0.3439664, 1e-6);
+    EXPECT_NEAR(ap0.to_xyz_matrix()[1][1], 0.7281661, 1e-6);
+    EXPECT_NEAR(ap0.to_xyz_matrix()[1][2], -0.0721325, 1e-6);
 }
 
 }  // namespace

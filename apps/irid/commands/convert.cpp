@@ -69,17 +69,34 @@ const char* header_of(const Space& s) {
 class Converter {
 public:
     Converter(const Space& from, const Space& to, const Xy& white, ChromaticAdaptation cat)
-        : m_from(from), m_to(to), m_white_xy(white), m_white(xy_to_xyz(white)), m_cat(cat) {}
+        : m_from(from),
+          m_to(to),
+          m_white_xy(white),
+          m_white(xy_to_xyz(white)),
+          m_from_native(adaptation_from(native_white(from), cat)),
+          m_to_native(adaptation_to(native_white(to), cat)) {}
 
     [[nodiscard]] Vec3 operator()(const Vec3& in) const { return from_xyz(to_xyz(in)); }
 
 private:
-    /// Adapts XYZ from a native white to the reference white (or back when `inverse`).
-    Xyz adapt(const Xyz& c, const Xy& native, bool to_reference) const {
-        if (native.x == m_white_xy.x && native.y == m_white_xy.y) return c;
-        const Xyz n = xy_to_xyz(native);
-        const Mat3 m = to_reference ? adaptation_matrix(n, m_white, m_cat)
-                                    : adaptation_matrix(m_white, n, m_cat);
+    /// The white a space's XYZ is relative to, when it has one of its own.
+    static std::optional<Xy> native_white(const Space& s) {
+        if (s.family == Family::oklab || s.family == Family::oklch) return oklab_white;
+        if (s.rgb != nullptr) return s.rgb->white();
+        return std::nullopt;
+    }
+    bool is_reference(const Xy& w) const { return w.x == m_white_xy.x && w.y == m_white_xy.y; }
+    /// XYZ under a space's native white → XYZ under the reference white (identity when equal).
+    Mat3 adaptation_from(const std::optional<Xy>& native, ChromaticAdaptation cat) const {
+        if (!native || is_reference(*native)) return Mat3::identity();
+        return adaptation_matrix(xy_to_xyz(*native), m_white, cat);
+    }
+    Mat3 adaptation_to(const std::optional<Xy>& native, ChromaticAdaptation cat) const {
+        if (!native || is_reference(*native)) return Mat3::identity();
+        return adaptation_matrix(m_white, xy_to_xyz(*native), cat);
+    }
+    /// XYZ → XYZ by an adaptation matrix.
+    static Xyz apply(const Mat3& m, const Xyz& c) {
         const Vec3 v = m * Vec3{c.X, c.Y, c.Z};
         return {v[0], v[1], v[2]};
     }
@@ -87,19 +104,23 @@ private:
     Xyz to_xyz(const Vec3& v) const {
         switch (m_from.family) {
             case Family::xyz: return {v[0], v[1], v[2]};
-            case Family::xyy: return xyy_to_xyz({v[0], v[1], v[2]});
+            case Family::xyy:
+                if (v[1] == 0.0 && v[2] != 0.0) {
+                    throw Error("chromaticity y = 0 with luminance Y = " + format_shortest(v[2]) +
+                                " has no XYZ (only black may have y = 0)");
+                }
+                return xyy_to_xyz({v[0], v[1], v[2]});
             case Family::luv: return luv_to_xyz({v[0], v[1], v[2]}, m_white);
             case Family::lab: return lab_to_xyz({v[0], v[1], v[2]}, m_white);
             case Family::lchuv: return luv_to_xyz(lch_to_luv({v[0], v[1], v[2]}), m_white);
             case Family::lchab: return lab_to_xyz(lch_to_lab({v[0], v[1], v[2]}), m_white);
-            case Family::oklab: return adapt(oklab_to_xyz({v[0], v[1], v[2]}), oklab_white, true);
+            case Family::oklab: return apply(m_from_native, oklab_to_xyz({v[0], v[1], v[2]}));
             case Family::oklch:
-                return adapt(oklab_to_xyz(oklch_to_oklab({v[0], v[1], v[2]})), oklab_white, true);
+                return apply(m_from_native, oklab_to_xyz(oklch_to_oklab({v[0], v[1], v[2]})));
             case Family::rgb_linear:
-                return adapt(m_from.rgb->to_xyz({v[0], v[1], v[2]}), m_from.rgb->white(), true);
+                return apply(m_from_native, m_from.rgb->to_xyz({v[0], v[1], v[2]}));
             case Family::rgb_encoded:
-                return adapt(m_from.rgb->to_xyz(m_from.rgb->decode({v[0], v[1], v[2]})),
-                             m_from.rgb->white(), true);
+                return apply(m_from_native, m_from.rgb->to_xyz(m_from.rgb->decode({v[0], v[1], v[2]})));
         }
         return {};
     }
@@ -128,19 +149,19 @@ private:
                 return {r.L, r.C, r.h};
             }
             case Family::oklab: {
-                const Oklab r = xyz_to_oklab(adapt(c, oklab_white, false));
+                const Oklab r = xyz_to_oklab(apply(m_to_native, c));
                 return {r.L, r.a, r.b};
             }
             case Family::oklch: {
-                const Oklch r = oklab_to_oklch(xyz_to_oklab(adapt(c, oklab_white, false)));
+                const Oklch r = oklab_to_oklch(xyz_to_oklab(apply(m_to_native, c)));
                 return {r.L, r.C, r.h};
             }
             case Family::rgb_linear: {
-                const Rgb r = m_to.rgb->from_xyz(adapt(c, m_to.rgb->white(), false));
+                const Rgb r = m_to.rgb->from_xyz(apply(m_to_native, c));
                 return {r.r, r.g, r.b};
             }
             case Family::rgb_encoded: {
-                const Rgb r = m_to.rgb->encode(m_to.rgb->from_xyz(adapt(c, m_to.rgb->white(), false)));
+                const Rgb r = m_to.rgb->encode(m_to.rgb->from_xyz(apply(m_to_native, c)));
                 return {r.r, r.g, r.b};
             }
         }
@@ -154,7 +175,8 @@ private:
     Space m_to;
     Xy m_white_xy;
     Xyz m_white;
-    ChromaticAdaptation m_cat;
+    Mat3 m_from_native;
+    Mat3 m_to_native;
 };
 
 struct ConvertOptions {
@@ -181,7 +203,12 @@ int run_convert(const ConvertOptions& o) {
     std::string out = std::string(header_of(to)) + "\n";
     for (std::size_t r = 0; r < table.rows.size(); ++r) {
         const auto& row = table.rows[r];
-        const Vec3 result = convert({row[0], row[1], row[2]});
+        Vec3 result{};
+        try {
+            result = convert({row[0], row[1], row[2]});
+        } catch (const Error& e) {
+            throw Error("<stdin>:" + std::to_string(table.line_numbers[r]) + ": " + e.what());
+        }
         for (int i = 0; i < 3; ++i) {
             if (!std::isfinite(result[i])) {
                 throw Error("<stdin>:" + std::to_string(table.line_numbers[r]) + ": the colour (" +

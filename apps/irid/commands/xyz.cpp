@@ -56,6 +56,10 @@ int run_xyz(const XyzOptions& o) {
         for (std::size_t r = 0; r < table.rows.size(); ++r) values[r] = table.rows[r][c];
         const PiecewiseLinearSpectrum measured(lambda, std::move(values), Extrapolation::hold_ends);
         const Xyz xyz = reflectance_to_xyz(DenseSpectrum::resample(measured), illuminant, observer);
+        if (!std::isfinite(xyz.X) || !std::isfinite(xyz.Y) || !std::isfinite(xyz.Z)) {
+            throw Error("<stdin>: spectrum column " + std::to_string(c + 1) +
+                        " overflows: its values are too large for XYZ");
+        }
         append_csv_line(out, std::array{xyz.X, xyz.Y, xyz.Z});
     }
     write_stdout(out);

@@ -53,7 +53,8 @@ inline constexpr double planck_c1l_w_m2_per_sr = 1.191042972e-16;
 /// The chromaticity of a named white (CIE 1931 2°). D65 is (0.31270, 0.32900), the value of
 /// ITU-R BT.709 and IEC 61966-2-1; D50 (0.34567, 0.35850), D55 (0.33242, 0.34743), D75
 /// (0.29902, 0.31485), A (0.44757, 0.40745), C (0.31006, 0.31616) from CIE 015:2004 Table T.3;
-/// E (1/3, 1/3). Also accepts "x,y" for any white. Throws irid::Error otherwise.
+/// E (1/3, 1/3). (The NTSC 1953 space keeps the FCC's rounded C, (0.310, 0.316).) Also accepts
+/// "x,y" (spaces allowed) for any white. Throws irid::Error otherwise.
 [[nodiscard]] Xy white_point_xy(std::string_view name);
 
 }  // namespace irid

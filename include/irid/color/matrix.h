@@ -49,6 +49,23 @@ struct Mat3 {
     }
 };
 
+/// The inverse by the adjugate, unchecked: for matrices known to be regular (constants), usable
+/// in constant expressions.
+[[nodiscard]] constexpr Mat3 inverse_unchecked(const Mat3& a) noexcept {
+    const double s = 1.0 / a.determinant();
+    Mat3 r;
+    r[0][0] = (a[1][1] * a[2][2] - a[1][2] * a[2][1]) * s;
+    r[0][1] = (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * s;
+    r[0][2] = (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * s;
+    r[1][0] = (a[1][2] * a[2][0] - a[1][0] * a[2][2]) * s;
+    r[1][1] = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * s;
+    r[1][2] = (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * s;
+    r[2][0] = (a[1][0] * a[2][1] - a[1][1] * a[2][0]) * s;
+    r[2][1] = (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * s;
+    r[2][2] = (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * s;
+    return r;
+}
+
 /// The inverse by the adjugate. Throws irid::Error when the matrix is singular (|det| below
 /// 1e-300 or not finite), naming `what`.
 [[nodiscard]] Mat3 inverse(const Mat3& a, const char* what = "matrix");

@@ -18,8 +18,10 @@ struct NumericTable {
 };
 
 /// Reads comma-separated numbers. A first line that is not numeric is a header, unless every
-/// field of it begins like a number (a sign, point or digit: "1e400,0,0", "0x1,2,3"), which is
-/// mistyped data and an error rather than silently skipped; blank lines are skipped; every other line must hold `columns` finite numbers (any count ≥ min_columns, the
+/// field of it is empty or begins like a number (a sign, point or digit: "1e400,0,0",
+/// "0x1,2,3", "1,,0"), which is mistyped data and an error rather than silently skipped; a
+/// UTF-8 byte-order mark is ignored; blank lines are skipped; numbers too small for a double
+/// become 0 (or subnormal), too large ones are errors; every other line must hold `columns` finite numbers (any count ≥ min_columns, the
 /// same on every line, when columns is 0). Spaces around fields and a final CR are ignored.
 /// Throws irid::Error "<source>:<line>: <what was wrong>" on the first bad line.
 [[nodiscard]] NumericTable read_numeric_table(std::istream& in, std::string_view source,

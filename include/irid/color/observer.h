@@ -35,8 +35,9 @@ struct ColorMatchingFunctions {
 /// Chromaticity of the spectral locus at lambda_nm.
 [[nodiscard]] Xy spectral_locus_xy(double lambda_nm, Observer observer = Observer::cie1931_2deg);
 
-/// Maximum luminous efficacy of radiation for photopic vision, K_m [lm/W]. CIE 015:2018 §7.1
-/// (from the SI definition of the candela, 683 lm/W at 540e12 Hz).
+/// Luminous efficacy for absolute photometry [lm/W]: 683, the SI K_cd (definition of the candela,
+/// 683 lm/W at 540e12 Hz), which the issue and most software use. CIE 015:2018's K_m for the
+/// tabulated V(λ) is 683.002 lm/W (683 × V(555)/V(555.016)), 3e-6 larger.
 inline constexpr double max_luminous_efficacy_lm_per_w = 683.0;
 
 /// Tristimulus values of a reflectance (or transmittance) factor seen under an illuminant,

@@ -20,7 +20,7 @@ public:
         /// Identity.
         linear,
         /// IEC 61966-2-1 (sRGB, also Display P3): 12.92 v below 0.0031308, else
-        /// 1.055 v^(1/2.4) − 0.055.
+        /// 1.055 v^(1/2.4) − 0.055; decoded as its exact inverse.
         srgb,
         /// ITU-R BT.709 / BT.601 / SMPTE 170M: 4.5 v below 0.018, else 1.099 v^0.45 − 0.099.
         rec709,
@@ -51,8 +51,9 @@ struct RgbPrimaries {
 
 /// The normalised primary matrix (RGB → XYZ, white at Y = 1) derived from the primaries and the
 /// white point, SMPTE RP 177-1993 §3.3: the columns are the primaries' XYZ (at Y = 1), scaled so
-/// that RGB = (1, 1, 1) maps to the white. Throws irid::Error if a chromaticity has y ≤ 0 or is
-/// not finite, or if the primaries are collinear.
+/// that RGB = (1, 1, 1) maps to the white. Throws irid::Error if a chromaticity is not finite, a
+/// primary has y = 0, the white has y ≤ 0 or lies outside the primaries' triangle, or the
+/// primaries are collinear. Imaginary primaries (y < 0, as ACES AP0's blue) are allowed.
 [[nodiscard]] Mat3 rgb_to_xyz_matrix(const RgbPrimaries& primaries, const Xy& white);
 
 /// An RGB colour space: primaries, white point and transfer function. Validated when built.

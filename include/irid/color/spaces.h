@@ -57,6 +57,11 @@ inline constexpr Mat3 oklab_m2{{{{0.2104542553, 0.7936177850, -0.0040720468},
                                  {1.9779984951, -2.4285922050, 0.4505937099},
                                  {0.0259040371, 0.7827717662, -0.8086757660}}}};
 
+/// Inverses of M1 and M2, computed from them (Ottosson's published inverses are rounded to 10
+/// digits and would break exact round trips).
+inline constexpr Mat3 oklab_m1_inverse = inverse_unchecked(oklab_m1);
+inline constexpr Mat3 oklab_m2_inverse = inverse_unchecked(oklab_m2);
+
 /// Oklab from XYZ relative to D65 (Y = 1 white); the cube root is odd-symmetric (cbrt) so
 /// negative LMS values from out-of-gamut colours stay invertible.
 [[nodiscard]] Oklab xyz_to_oklab(const Xyz& c) noexcept;
