@@ -1,0 +1,424 @@
+#include <irid/color/difference.h>
+#include <irid/color/numeric_table.h>
+#include <irid/color/spaces.h>
+#include <irid/error.h>
+#include <irid/optics/film_color.h>
+#include <irid/optics/thesis_models.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace irid {
+namespace {
+
+constexpr double degrees_to_radians = std::numbers::pi / 180.0;
+/// The most entries a colour table may have: 10⁷ colours are 480 MB.
+constexpr double max_table_entries = 1e7;
+
+Mat3 xyz_to_rgb_under(const Xyz& white, const RgbSpace& rgb, ChromaticAdaptation adaptation) {
+    const Xyz& rgb_white = rgb.white_xyz();
+    const bool same_white = std::abs(xyz_to_xy(white).x - rgb.white().x) < 1e-12 &&
+                            std::abs(xyz_to_xy(white).y - rgb.white().y) < 1e-12;
+    if (same_white) return rgb.from_xyz_matrix();
+    return rgb.from_xyz_matrix() * adaptation_matrix(white, rgb_white, adaptation);
+}
+
+FilmColor color_of(const Colorimeter& colorimeter, const Xyz& xyz) {
+    return {xyz, colorimeter.linear_rgb(xyz)};
+}
+
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) return 0.0;
+    const auto k = static_cast<std::size_t>(std::round(p * static_cast<double>(values.size() - 1)));
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+    return values[k];
+}
+
+}  // namespace
+
+// --- Colorimeter ----------------------------------------------------------------------------
+
+Colorimeter::Colorimeter(const DenseSpectrum& illuminant, Observer observer, const RgbSpace& rgb,
+                         ChromaticAdaptation adaptation)
+    : m_white(illuminant_white(illuminant, observer)),
+      m_observer(observer),
+      m_rgb(rgb),
+      m_xyz_to_rgb(xyz_to_rgb_under(m_white, rgb, adaptation)) {
+    const ColorMatchingFunctions& cmf = color_matching_functions(observer);
+    const double k = 1.0 / illuminant.dot(cmf.y);
+    for (int i = 0; i < dense_sample_count; ++i) {
+        m_weight_x[i] = k * illuminant[i] * cmf.x[i];
+        m_weight_y[i] = k * illuminant[i] * cmf.y[i];
+        m_weight_z[i] = k * illuminant[i] * cmf.z[i];
+    }
+}
+
+Xyz Colorimeter::xyz(const DenseSpectrum& reflectance) const noexcept {
+    return {reflectance.dot(m_weight_x), reflectance.dot(m_weight_y), reflectance.dot(m_weight_z)};
+}
+
+Rgb Colorimeter::linear_rgb(const Xyz& c) const noexcept {
+    const Vec3 v = m_xyz_to_rgb * Vec3{c.X, c.Y, c.Z};
+    return {v[0], v[1], v[2]};
+}
+
+Lab Colorimeter::lab(const Xyz& c) const noexcept { return xyz_to_lab(c, m_white); }
+
+double delta_e_2000_of(const Colorimeter& colorimeter, const Xyz& a, const Xyz& b) noexcept {
+    return delta_e_2000(colorimeter.lab(a), colorimeter.lab(b));
+}
+
+// --- spectra --------------------------------------------------------------------------------
+
+DenseSpectrum exact_reflectance_spectrum(const FilmStack& stack, double angle_rad,
+                                         Polarization polarization) {
+    return DenseSpectrum::from_function(
+        [&](double lambda) { return stack.evaluate(lambda, angle_rad, polarization).R; });
+}
+
+PreparedFilm::PreparedFilm(const SingleFilm& film, double angle_rad)
+    : m_samples(dense_sample_count), m_film(film), m_angle_rad(angle_rad) {
+    check_incidence_angle(angle_rad);
+    if (!film.ambient.is_lossless()) {
+        throw Error("film: the ambient medium '" + film.ambient.name() +
+                    "' absorbs (k > 0); the angle of incidence needs a lossless ambient");
+    }
+    constexpr std::complex<double> two_i{0.0, 2.0};
+    const double sin_theta = std::sin(angle_rad);
+    const double cos_theta0 = std::cos(angle_rad);
+    for (int i = 0; i < dense_sample_count; ++i) {
+        const double lambda = DenseSpectrum::wavelength_nm(i);
+        const double n0 = film.ambient.index(lambda).real();
+        const Complex n1 = film.film.index(lambda);
+        const Complex n2 = film.substrate.index(lambda);
+        const double s = n0 * sin_theta;  // Snell invariant
+        const double phase_scale = 2.0 * std::numbers::pi / lambda;
+        if (n1.imag() == 0.0 && n2.imag() == 0.0 && n1.real() > s && n2.real() > s) {
+            // Lossless film and substrate, no total reflection: every q = N cos θ is real and the
+            // Fresnel amplitudes are r_s = (q_i − q_t)/(q_i + q_t) and, as the ratio of tangential
+            // fields, r_p = (N_i² q_t − N_t² q_i)/(N_i² q_t + N_t² q_i) (Born & Wolf §1.5.2; the
+            // sign convention cancels in |r|²).
+            const double a = n0, b = n1.real(), c = n2.real();
+            const double q0 = a * cos_theta0;
+            const double q1 = std::sqrt((b - s) * (b + s));
+            const double q2 = std::sqrt((c - s) * (c + s));
+            m_samples[i] = {(q0 - q1) / (q0 + q1), (q1 - q2) / (q1 + q2),
+                            (a * a * q1 - b * b * q0) / (a * a * q1 + b * b * q0),
+                            (b * b * q2 - c * c * q1) / (b * b * q2 + c * c * q1),
+                            two_i * (phase_scale * q1), true};
+            continue;
+        }
+        const Complex q1 = n1 * cos_theta(n1, s);
+        if (std::abs(q1) < 1e-12) m_degenerate.push_back(i);
+        const FresnelCoefficients f01 = fresnel(n0, n1, s);
+        const FresnelCoefficients f12 = fresnel(n1, n2, s);
+        m_samples[i] = {f01.r_s, f12.r_s, f01.r_p, f12.r_p, two_i * phase_scale * q1, false};
+    }
+}
+
+double PreparedFilm::reflectance(int i, double thickness_nm) const noexcept {
+    const Sample& s = m_samples[i];
+    if (!m_degenerate.empty() &&
+        std::find(m_degenerate.begin(), m_degenerate.end(), i) != m_degenerate.end()) {
+        const FilmStack stack(m_film.ambient, {Layer{m_film.film, thickness_nm}}, m_film.substrate);
+        return stack.evaluate(DenseSpectrum::wavelength_nm(i), m_angle_rad, Polarization::unpolarized).R;
+    }
+    if (s.real) {
+        const double cos_phi = std::cos(s.phase_per_nm.imag() * thickness_nm);
+        const auto airy = [cos_phi](double r01, double r12) {
+            const double cross = 2.0 * r01 * r12 * cos_phi;
+            return (r01 * r01 + r12 * r12 + cross) / (1.0 + r01 * r01 * r12 * r12 + cross);
+        };
+        return 0.5 * (airy(s.r01_s.real(), s.r12_s.real()) + airy(s.r01_p.real(), s.r12_p.real()));
+    }
+    const std::complex<double> z = std::exp(s.phase_per_nm * thickness_nm);
+    const auto airy = [&](std::complex<double> r01, std::complex<double> r12) {
+        const std::complex<double> r12z = r12 * z;
+        return std::norm(r01 + r12z) / std::norm(1.0 + r01 * r12z);
+    };
+    return 0.5 * (airy(s.r01_s, s.r12_s) + airy(s.r01_p, s.r12_p));
+}
+
+DenseSpectrum PreparedFilm::reflectance_spectrum(double thickness_nm) const {
+    DenseSpectrum r;
+    for (int i = 0; i < dense_sample_count; ++i) r[i] = reflectance(i, thickness_nm);
+    return r;
+}
+
+FilmColor PreparedFilm::color(double thickness_nm, const Colorimeter& colorimeter) const noexcept {
+    int i = 0;
+    const Xyz xyz = colorimeter.xyz_of([&](double) { return reflectance(i++, thickness_nm); });
+    return {xyz, colorimeter.linear_rgb(xyz)};
+}
+
+double thesis_single_film_reflectance(const SingleFilm& film, double thickness_nm, double lambda_nm,
+                                      double angle_rad, double k,
+                                      std::optional<bool> phase_change) noexcept {
+    const double n0 = film.ambient.index(lambda_nm).real();
+    const double n1 = film.film.index(lambda_nm).real();
+    const double n2 = film.substrate.index(lambda_nm).real();
+    const bool phase = phase_change.value_or(thesis_phase_change(n0, n1, n2));
+    const double theta_film = thesis_film_angle_rad(angle_rad, n1, n0);
+    // Eq. 24: the film acts as one of index 1 and thickness t′ = t n cos θ.
+    const double effective = thesis_effective_thickness_nm(thickness_nm, n1, theta_film);
+    return thesis_film_reflectance(lambda_nm, effective, 1.0, phase, k);
+}
+
+DenseSpectrum thesis_single_film_spectrum(const SingleFilm& film, double thickness_nm,
+                                          double angle_rad, double k,
+                                          std::optional<bool> phase_change) {
+    return DenseSpectrum::from_function([&](double lambda) {
+        return thesis_single_film_reflectance(film, thickness_nm, lambda, angle_rad, k, phase_change);
+    });
+}
+
+double thesis_matched_k(const SingleFilm& film, double lambda_nm) noexcept {
+    const double n0 = film.ambient.index(lambda_nm).real();
+    const double n1 = film.film.index(lambda_nm).real();
+    const double n2 = film.substrate.index(lambda_nm).real();
+    // Normal-incidence Fresnel amplitudes (n_i − n_t)/(n_i + n_t).
+    return std::abs((n0 - n1) / (n0 + n1)) + std::abs((n1 - n2) / (n1 + n2));
+}
+
+// --- tables ---------------------------------------------------------------------------------
+
+FilmColorTable::Range FilmColorTable::check_range(double min_nm, double max_nm, double step_nm) {
+    if (!(std::isfinite(min_nm) && min_nm >= 0.0)) {
+        throw Error("colour table: minimum thickness " + format_shortest(min_nm) + " nm must be >= 0");
+    }
+    if (!(std::isfinite(max_nm) && max_nm > min_nm)) {
+        throw Error("colour table: maximum thickness " + format_shortest(max_nm) +
+                    " nm must be greater than the minimum " + format_shortest(min_nm) + " nm");
+    }
+    if (!(std::isfinite(step_nm) && step_nm > 0.0)) {
+        throw Error("colour table: thickness step " + format_shortest(step_nm) + " nm must be > 0");
+    }
+    const double intervals = std::ceil((max_nm - min_nm) / step_nm - 1e-9);
+    if (intervals + 1.0 > max_table_entries) {
+        throw Error("colour table: " + format_shortest(intervals + 1.0) +
+                    " entries is more than the limit of 1e7; use a larger step");
+    }
+    const auto n = static_cast<std::size_t>(intervals);
+    return {min_nm, max_nm, (max_nm - min_nm) / static_cast<double>(n), n + 1};
+}
+
+FilmColorTable::FilmColorTable(const Range& r)
+    : m_min(r.min), m_max(r.max), m_step(r.step), m_colors(r.count) {}
+
+FilmColor FilmColorTable::at(double thickness_nm) const noexcept {
+    double u = (thickness_nm - m_min) / m_step;
+    if (!(u > 0.0)) return m_colors.front();  // also NaN
+    const double last = static_cast<double>(m_colors.size() - 1);
+    if (u >= last) return m_colors.back();
+    const auto i = static_cast<std::size_t>(u);
+    u -= static_cast<double>(i);
+    const FilmColor& a = m_colors[i];
+    const FilmColor& b = m_colors[i + 1];
+    const auto mix = [u](double x, double y) { return x + u * (y - x); };
+    return {{mix(a.xyz.X, b.xyz.X), mix(a.xyz.Y, b.xyz.Y), mix(a.xyz.Z, b.xyz.Z)},
+            {mix(a.rgb_linear.r, b.rgb_linear.r), mix(a.rgb_linear.g, b.rgb_linear.g),
+             mix(a.rgb_linear.b, b.rgb_linear.b)}};
+}
+
+FilmColorTable2D::Grid FilmColorTable2D::check(double max_thickness_nm, double thickness_step_nm,
+                                               double cos_min, int cos_steps) {
+    if (!(std::isfinite(max_thickness_nm) && max_thickness_nm > 0.0)) {
+        throw Error("colour table: maximum thickness " + format_shortest(max_thickness_nm) +
+                    " nm must be > 0");
+    }
+    if (!(std::isfinite(thickness_step_nm) && thickness_step_nm > 0.0)) {
+        throw Error("colour table: thickness step " + format_shortest(thickness_step_nm) +
+                    " nm must be > 0");
+    }
+    const double intervals = std::ceil(max_thickness_nm / thickness_step_nm - 1e-9);
+    if (intervals + 1.0 > max_table_entries) {
+        throw Error("colour table: more than 1e7 entries; use larger steps");
+    }
+    const auto thickness_count = static_cast<std::size_t>(intervals) + 1;
+    if (!(cos_min > 0.0 && cos_min < 1.0)) {
+        throw Error("colour table: smallest cos θ " + format_shortest(cos_min) +
+                    " must be in (0, 1) (angles below 90°)");
+    }
+    if (cos_steps < 1 || cos_steps > 10000) {
+        throw Error("colour table: cos θ steps " + std::to_string(cos_steps) + " must be in 1..10000");
+    }
+    if (static_cast<double>(thickness_count) * (cos_steps + 1) > max_table_entries) {
+        throw Error("colour table: more than 1e7 entries; use larger steps");
+    }
+    return {max_thickness_nm, max_thickness_nm / intervals, cos_min, thickness_count,
+            static_cast<std::size_t>(cos_steps) + 1};
+}
+
+FilmColorTable2D::FilmColorTable2D(const Grid& g)
+    : m_step(g.step),
+      m_cos_min(g.cos_min),
+      m_cos_step((1.0 - g.cos_min) / static_cast<double>(g.cos_count - 1)),
+      m_thickness_count(g.thickness_count),
+      m_cos_count(g.cos_count),
+      m_colors(g.thickness_count * g.cos_count) {}
+
+FilmColor FilmColorTable2D::at(double thickness_nm, double cos_theta) const noexcept {
+    const auto locate = [](double u, std::size_t count, std::size_t& i, double& f) {
+        const double last = static_cast<double>(count - 1);
+        if (!(u > 0.0)) u = 0.0;
+        if (u >= last) u = last;
+        i = std::min(static_cast<std::size_t>(u), count - 2);
+        f = u - static_cast<double>(i);
+    };
+    std::size_t i = 0, j = 0;
+    double fi = 0.0, fj = 0.0;
+    locate(thickness_nm / m_step, m_thickness_count, i, fi);
+    locate((cos_theta - m_cos_min) / m_cos_step, m_cos_count, j, fj);
+    const FilmColor& c00 = m_colors[j * m_thickness_count + i];
+    const FilmColor& c10 = m_colors[j * m_thickness_count + i + 1];
+    const FilmColor& c01 = m_colors[(j + 1) * m_thickness_count + i];
+    const FilmColor& c11 = m_colors[(j + 1) * m_thickness_count + i + 1];
+    const auto mix = [&](double a, double b, double c, double d) {
+        return (1 - fj) * ((1 - fi) * a + fi * b) + fj * ((1 - fi) * c + fi * d);
+    };
+    return {{mix(c00.xyz.X, c10.xyz.X, c01.xyz.X, c11.xyz.X),
+             mix(c00.xyz.Y, c10.xyz.Y, c01.xyz.Y, c11.xyz.Y),
+             mix(c00.xyz.Z, c10.xyz.Z, c01.xyz.Z, c11.xyz.Z)},
+            {mix(c00.rgb_linear.r, c10.rgb_linear.r, c01.rgb_linear.r, c11.rgb_linear.r),
+             mix(c00.rgb_linear.g, c10.rgb_linear.g, c01.rgb_linear.g, c11.rgb_linear.g),
+             mix(c00.rgb_linear.b, c10.rgb_linear.b, c01.rgb_linear.b, c11.rgb_linear.b)}};
+}
+
+FilmColor exact_film_color(const SingleFilm& film, double thickness_nm, double angle_rad,
+                           const Colorimeter& colorimeter) {
+    return PreparedFilm(film, angle_rad).color(thickness_nm, colorimeter);
+}
+
+FilmColorTable exact_film_color_table(const SingleFilm& film, double angle_rad, double max_thickness_nm,
+                                      double step_nm, const Colorimeter& colorimeter) {
+    const PreparedFilm prepared(film, angle_rad);
+    return FilmColorTable(0.0, max_thickness_nm, step_nm,
+                          [&](double t) { return prepared.color(t, colorimeter); });
+}
+
+FilmColorTable thesis_film_color_table(bool phase_change, double max_effective_thickness_nm,
+                                       double step_nm, const Colorimeter& colorimeter) {
+    return FilmColorTable(0.0, max_effective_thickness_nm, step_nm, [&](double t_effective) {
+        return color_of(colorimeter, colorimeter.xyz_of([&](double lambda) {
+            return thesis_film_reflectance(lambda, t_effective, 1.0, phase_change, 1.0);
+        }));
+    });
+}
+
+FilmColorTable2D exact_film_color_table_2d(const SingleFilm& film, double max_thickness_nm,
+                                           double thickness_step_nm, double max_angle_rad,
+                                           int cos_steps, const Colorimeter& colorimeter) {
+    check_incidence_angle(max_angle_rad);
+    // Rows share an angle: prepare each once (the table fills row by row).
+    std::optional<PreparedFilm> row;
+    double row_cos = -1.0;
+    return FilmColorTable2D(max_thickness_nm, thickness_step_nm, std::cos(max_angle_rad), cos_steps,
+                            [&](double t, double cos_theta) {
+                                if (!row || cos_theta != row_cos) {
+                                    row.emplace(film, std::acos(std::min(cos_theta, 1.0)));
+                                    row_cos = cos_theta;
+                                }
+                                return row->color(t, colorimeter);
+                            });
+}
+
+LookupError measure_exact_table_error(const FilmColorTable2D& table, const SingleFilm& film,
+                                      const Colorimeter& colorimeter) {
+    LookupError e;
+    double sum = 0.0;
+    for (std::size_t j = 0; j + 1 < table.cos_count(); ++j) {
+        const double c = table.cos_theta(j) + 0.5 * table.cos_step();
+        const PreparedFilm prepared(film, std::acos(c));
+        for (std::size_t i = 0; i + 1 < table.thickness_count(); ++i) {
+            const double t = table.thickness_nm(i) + 0.5 * table.thickness_step_nm();
+            const FilmColor direct = prepared.color(t, colorimeter);
+            const double d = delta_e_2000_of(colorimeter, table.at(t, c).xyz, direct.xyz);
+            sum += d;
+            ++e.samples;
+            if (d > e.max_delta_e) {
+                e.max_delta_e = d;
+                e.worst_thickness_nm = t;
+                e.worst_cos_theta = c;
+            }
+        }
+    }
+    e.mean_delta_e = e.samples ? sum / static_cast<double>(e.samples) : 0.0;
+    return e;
+}
+
+double choose_exact_table_step(const SingleFilm& film, double angle_rad, double max_thickness_nm,
+                               double max_delta_e2000, const Colorimeter& colorimeter,
+                               double start_step_nm) {
+    if (!(max_delta_e2000 > 0.0)) {
+        throw Error("table step: the ΔE2000 bound " + format_shortest(max_delta_e2000) + " must be > 0");
+    }
+    const PreparedFilm prepared(film, angle_rad);
+    for (double step = start_step_nm; step >= start_step_nm / 1024.0; step /= 2.0) {
+        const FilmColorTable table =
+            exact_film_color_table(film, angle_rad, max_thickness_nm, step, colorimeter);
+        const LookupError e = measure_lookup_error(
+            table, [&](double t) { return prepared.color(t, colorimeter); }, colorimeter);
+        if (e.max_delta_e <= max_delta_e2000) return table.step_nm();
+    }
+    throw Error("table step: no step down to " + format_shortest(start_step_nm / 1024.0) +
+                " nm keeps lookups within ΔE2000 " + format_shortest(max_delta_e2000));
+}
+
+// --- the error study ------------------------------------------------------------------------
+
+ErrorStudyResult thesis_error_study(const std::string& name, const SingleFilm& film,
+                                    const Colorimeter& colorimeter, const ErrorStudyOptions& o) {
+    if (!(o.thickness_step_nm > 0.0 && o.max_thickness_nm >= 0.0 && o.angle_step_deg > 0.0 &&
+          o.max_angle_deg >= 0.0 && o.max_angle_deg < 90.0)) {
+        throw Error("error study: steps must be > 0, thickness >= 0 and angles in [0, 90)");
+    }
+    ErrorStudyResult r;
+    r.name = name;
+    r.k = o.k.value_or(thesis_matched_k(film));
+    std::vector<double> all;
+    const auto thickness_count = static_cast<std::size_t>(std::floor(o.max_thickness_nm / o.thickness_step_nm + 1e-9)) + 1;
+    const auto band_count = static_cast<std::size_t>(std::ceil(o.max_thickness_nm / 100.0 - 1e-9));
+    std::vector<double> band_sum(std::max<std::size_t>(band_count, 1), 0.0);
+    std::vector<std::size_t> band_n(band_sum.size(), 0);
+    for (double angle = 0.0; angle <= o.max_angle_deg + 1e-9; angle += o.angle_step_deg) {
+        const double theta = angle * degrees_to_radians;
+        const PreparedFilm prepared(film, theta);
+        double sum = 0.0, worst = 0.0;
+        for (std::size_t i = 0; i < thickness_count; ++i) {
+            const double t = o.thickness_step_nm * static_cast<double>(i);
+            const Xyz exact = prepared.color(t, colorimeter).xyz;
+            const Xyz thesis = colorimeter.xyz_of([&](double lambda) {
+                return thesis_single_film_reflectance(film, t, lambda, theta, r.k, std::nullopt);
+            });
+            const double d = delta_e_2000_of(colorimeter, thesis, exact);
+            all.push_back(d);
+            sum += d;
+            worst = std::max(worst, d);
+            const std::size_t band = std::min(static_cast<std::size_t>(t / 100.0), band_sum.size() - 1);
+            band_sum[band] += d;
+            ++band_n[band];
+            if (d > r.max) {
+                r.max = d;
+                r.worst_thickness_nm = t;
+                r.worst_angle_deg = angle;
+            }
+        }
+        r.angles_deg.push_back(angle);
+        r.mean_by_angle.push_back(sum / static_cast<double>(thickness_count));
+        r.max_by_angle.push_back(worst);
+    }
+    for (std::size_t b = 0; b < band_sum.size(); ++b) {
+        r.mean_by_thickness_band.push_back(band_n[b] ? band_sum[b] / static_cast<double>(band_n[b]) : 0.0);
+    }
+    r.samples = all.size();
+    double total = 0.0;
+    for (const double d : all) total += d;
+    r.mean = total / static_cast<double>(all.size());
+    r.median = percentile(all, 0.5);
+    r.p95 = percentile(all, 0.95);
+    return r;
+}
+
+}  // namespace irid
