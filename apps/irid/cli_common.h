@@ -32,6 +32,9 @@ using Runner = std::function<int()>;
 void add_convert_command(CLI::App& app, Runner& runner);
 void add_xyz_command(CLI::App& app, Runner& runner);
 void add_delta_e_command(CLI::App& app, Runner& runner);
+void add_film_command(CLI::App& app, Runner& runner);
+void add_film_table_command(CLI::App& app, Runner& runner);
+void add_film_error_command(CLI::App& app, Runner& runner);
 
 /// Reads all of standard input as a numeric CSV table (source name "<stdin>").
 [[nodiscard]] NumericTable read_stdin_table(int columns, int min_columns = 1);
@@ -41,6 +44,10 @@ void append_csv_line(std::string& out, std::span<const double> values);
 
 /// Writes the whole output at once; throws irid::Error when standard output fails.
 void write_stdout(const std::string& text);
+
+/// Writes a file so that it appears only when complete: into a temporary file in the same
+/// folder, then renamed over the destination. Throws irid::Error naming the path on failure.
+void write_file_atomically(const std::string& path, const std::string& text);
 
 /// "a, b, c" for messages.
 [[nodiscard]] std::string join(const std::vector<std::string>& names);

@@ -1,0 +1,63 @@
+// irid film: the reflectance spectrum (or colour) of a film or stack of films.
+//
+//   irid film --layer water:350 [--ambient air] [--substrate air] [--angle 30]
+//             [--polarization s|p|unpolarized] [--wavelengths 380:780:5]       → wavelength_nm,R,T
+//   irid film --model thesis --layer 1.33:350 [--phase-change|--no-phase-change] [--K 1]
+//   irid film --model thesis-multilayer --layer 1.56:100 --periods 12 [--K 1]  → wavelength_nm,R
+//   irid film --model morpho [--d1 150] [--d2 50] [--n 1.56] [--periods 12] [--blend]
+//   ... --color [--illuminant D65] [--observer cie1931] [--rgb srgb]            → one colour line
+#include "film_options.h"
+
+#include <irid/color.h>
+
+#include <array>
+
+namespace irid::cli {
+namespace {
+
+struct FilmCommand {
+    FilmArguments args;
+    bool color = false;
+};
+
+int run_film(const FilmCommand& c) {
+    const Film film = parse_film(c.args, true);
+    std::string out;
+    if (c.color) {
+        const Colorimeter colorimeter = parse_colorimeter(c.args);
+        const FilmColor fc = film.color(colorimeter, film.angle_rad);
+        const Xy xy = xyz_to_xy(fc.xyz, xyz_to_xy(colorimeter.white()));
+        const Lab lab = colorimeter.lab(fc.xyz);
+        out = "X,Y,Z,x,y,L,a,b,R_linear,G_linear,B_linear\n";
+        append_csv_line(out, std::array{fc.xyz.X, fc.xyz.Y, fc.xyz.Z, xy.x, xy.y, lab.L, lab.a, lab.b,
+                                        fc.rgb_linear.r, fc.rgb_linear.g, fc.rgb_linear.b});
+    } else {
+        const Range range = parse_range(c.args.wavelengths, "--wavelengths", 1.0, 1e5, 1000000);
+        const bool exact = film.model == FilmModel::exact;
+        out = exact ? "wavelength_nm,R,T\n" : "wavelength_nm,R\n";
+        for (const double lambda : range.values()) {
+            const Optics o = film.evaluate(lambda, film.angle_rad);
+            if (exact) append_csv_line(out, std::array{lambda, o.R, o.T});
+            else append_csv_line(out, std::array{lambda, o.R});
+        }
+    }
+    write_stdout(out);
+    return exit_success;
+}
+
+}  // namespace
+
+void add_film_command(CLI::App& app, Runner& runner) {
+    auto command = std::make_shared<FilmCommand>();
+    CLI::App* cmd = app.add_subcommand(
+        "film", "Reflectance spectrum (CSV) or colour of a thin film or stack: the exact optics or "
+                "the thesis' models");
+    add_film_options(*cmd, command->args, true);
+    cmd->add_option("--wavelengths", command->args.wavelengths, "START:END:STEP in nm")
+        ->capture_default_str();
+    cmd->add_flag("--color", command->color,
+                  "Print the colour (X,Y,Z,x,y,L,a,b,R_linear,G_linear,B_linear) instead of the spectrum");
+    cmd->callback([command, &runner] { runner = [command] { return run_film(*command); }; });
+}
+
+}  // namespace irid::cli

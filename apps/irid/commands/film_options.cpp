@@ -1,0 +1,267 @@
+#include "film_options.h"
+
+#include <irid/color.h>
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
+namespace irid::cli {
+namespace {
+
+constexpr double degrees_to_radians = std::numbers::pi / 180.0;
+
+/// A whole string as a finite double, or nothing.
+std::optional<double> parse_double(std::string_view s) {
+    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+    while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
+    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (s.empty() || ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) {
+        return std::nullopt;
+    }
+    return v;
+}
+
+Material parse_medium(const std::string& text, const std::string& option) {
+    try {
+        return parse_material(text);
+    } catch (const Error& e) {
+        throw UsageError(option + ": " + e.what());
+    }
+}
+
+LayerArgument parse_layer(const std::string& text, int number, bool thickness_required) {
+    const std::string option = "--layer " + std::to_string(number) + " '" + text + "'";
+    const auto colon = text.rfind(':');
+    if (colon == std::string::npos) {
+        if (thickness_required) {
+            throw UsageError(option + ": expected INDEX:THICKNESS, e.g. 1.33:350 or water:350 "
+                                      "(thickness in nm, >= 0)");
+        }
+        return {parse_medium(text, option), std::nullopt};
+    }
+    const std::optional<double> t = parse_double(std::string_view(text).substr(colon + 1));
+    if (!t || *t < 0.0) {
+        throw UsageError(option + ": thickness '" + text.substr(colon + 1) +
+                         "' must be a number of nm >= 0");
+    }
+    if (*t > 1e6) {
+        throw UsageError(option + ": thickness " + format_shortest(*t) + " nm must be <= 1e6 nm (1 mm)");
+    }
+    return {parse_medium(text.substr(0, colon), option), *t};
+}
+
+FilmModel parse_model(const std::string& name) {
+    if (name == "exact") return FilmModel::exact;
+    if (name == "thesis") return FilmModel::thesis;
+    if (name == "thesis-multilayer") return FilmModel::thesis_multilayer;
+    if (name == "morpho") return FilmModel::morpho;
+    throw UsageError("--model '" + name + "' is unknown; valid: exact, thesis, thesis-multilayer, morpho");
+}
+
+/// Real part of an index at a wavelength: the thesis' models take real indices.
+double real_index(const Material& m, double lambda_nm) { return m.index(lambda_nm).real(); }
+
+}  // namespace
+
+std::vector<double> Range::values() const {
+    std::vector<double> v;
+    const auto count = static_cast<std::size_t>(std::floor((end - start) / step + 1e-9)) + 1;
+    v.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) v.push_back(start + step * static_cast<double>(i));
+    return v;
+}
+
+Range parse_range(const std::string& text, const char* option, double minimum, double maximum,
+                  std::size_t max_count) {
+    const auto fail = [&](const std::string& why) {
+        throw UsageError(std::string(option) + " '" + text + "': " + why);
+    };
+    const auto first = text.find(':');
+    const auto second = first == std::string::npos ? first : text.find(':', first + 1);
+    if (second == std::string::npos) fail("expected START:END:STEP");
+    const auto start = parse_double(std::string_view(text).substr(0, first));
+    const auto end = parse_double(std::string_view(text).substr(first + 1, second - first - 1));
+    const auto step = parse_double(std::string_view(text).substr(second + 1));
+    if (!start || !end || !step) fail("START, END and STEP must be numbers");
+    if (*start < minimum || *end > maximum) {
+        fail("values must lie in [" + format_shortest(minimum) + ", " + format_shortest(maximum) +
+             (maximum == 90.0 ? ")" : "]"));
+    }
+    if (*end < *start) fail("the range is reversed: END must be >= START");
+    if (!(*step > 0.0)) fail("STEP must be > 0");
+    const double count = std::floor((*end - *start) / *step + 1e-9) + 1.0;
+    if (count > static_cast<double>(max_count)) {
+        fail("more than " + std::to_string(max_count) + " values; use a larger STEP");
+    }
+    return {*start, *end, *step};
+}
+
+void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) {
+    cmd.add_option("--model", a.model, "exact, thesis (eq. 21/22), thesis-multilayer (eq. 25/26) or morpho (eq. 29)")
+        ->capture_default_str();
+    cmd.add_option("--ambient", a.ambient,
+                   "Index of the ambient medium: 1.33, 1.5+0.02i (n+ik) or a material name")
+        ->capture_default_str();
+    cmd.add_option("--substrate", a.substrate, "Index of the substrate (same forms)")
+        ->capture_default_str();
+    cmd.add_option("--layer", a.layers,
+                   thickness_required ? "A film INDEX:THICKNESS (nm), from the ambient side; repeatable"
+                                      : "The film INDEX (its :THICKNESS is ignored: --thickness varies it)");
+    cmd.add_option("--angle", a.angle_deg, "Angle of incidence in the ambient [degrees, 0 <= angle < 90]")
+        ->capture_default_str();
+    cmd.add_option("--polarization", a.polarization, "s, p or unpolarized (exact model)")
+        ->capture_default_str();
+    cmd.add_flag("--phase-change", a.phase_change, "Thesis model: force eq. 21 (a π phase change)");
+    cmd.add_flag("--no-phase-change", a.no_phase_change, "Thesis model: force eq. 22");
+    cmd.add_option("--K", a.k, "The thesis' amplitude factor K (> 0)")->capture_default_str();
+    cmd.add_option("--periods", a.periods, "Number of films l in eq. 25 (thesis-multilayer, morpho: 12)");
+    cmd.add_option("--d1", a.d1_nm, "Morpho: path in air per period d1 [nm]")->capture_default_str();
+    cmd.add_option("--d2", a.d2_nm, "Morpho: chitin mullion thickness d2 [nm]")->capture_default_str();
+    cmd.add_option("--n", a.n, "Morpho: index of chitin (>= 1)")->capture_default_str();
+    cmd.add_flag("--blend", a.blend, "Morpho: average over mullion thicknesses d2 = 50..150 nm");
+    cmd.add_option("--illuminant", a.illuminant, "D65, D50, A, E, D<CCT>, blackbody:<T>")
+        ->capture_default_str();
+    cmd.add_option("--observer", a.observer, "cie1931 or cie1964")->capture_default_str();
+    cmd.add_option("--rgb", a.rgb,
+                   "RGB space of the linear RGB: srgb, display-p3, rec2020, adobe-rgb, smpte-c, ntsc1953")
+        ->capture_default_str();
+}
+
+Film parse_film(const FilmArguments& a, bool thickness_required) {
+    Film f;
+    f.model = parse_model(a.model);
+    f.ambient = parse_medium(a.ambient, "--ambient");
+    f.substrate = parse_medium(a.substrate, "--substrate");
+    if (!f.ambient.is_lossless()) {
+        throw UsageError("--ambient '" + a.ambient + "' absorbs (k > 0); the ambient must have k = 0");
+    }
+    for (std::size_t i = 0; i < a.layers.size(); ++i) {
+        f.layers.push_back(parse_layer(a.layers[i], static_cast<int>(i) + 1, thickness_required));
+    }
+    if (!(a.angle_deg >= 0.0 && a.angle_deg < 90.0)) {
+        throw UsageError("--angle " + format_shortest(a.angle_deg) + " must be in [0, 90) degrees");
+    }
+    f.angle_rad = a.angle_deg * degrees_to_radians;
+    if (a.polarization == "s") f.polarization = Polarization::s;
+    else if (a.polarization == "p") f.polarization = Polarization::p;
+    else if (a.polarization == "unpolarized") f.polarization = Polarization::unpolarized;
+    else throw UsageError("--polarization '" + a.polarization + "' is unknown; valid: s, p, unpolarized");
+    if (a.phase_change && a.no_phase_change) {
+        throw UsageError("--phase-change and --no-phase-change exclude each other");
+    }
+    if (a.phase_change) f.phase_change = true;
+    if (a.no_phase_change) f.phase_change = false;
+    if (!(a.k > 0.0 && std::isfinite(a.k))) {
+        throw UsageError("--K " + format_shortest(a.k) + " must be a finite number > 0");
+    }
+    f.k = a.k;
+    if (a.periods != -1 && (a.periods < 0 || a.periods > thesis_max_periods)) {
+        throw UsageError("--periods " + std::to_string(a.periods) + " must be in 0.." +
+                         std::to_string(thesis_max_periods));
+    }
+
+    const auto need_layers = [&](std::size_t count, const char* model) {
+        if (f.layers.size() != count) {
+            throw UsageError(std::string("--model ") + model + " takes exactly " +
+                             std::to_string(count) + " --layer, found " + std::to_string(f.layers.size()));
+        }
+    };
+    switch (f.model) {
+        case FilmModel::exact:
+            if (f.layers.empty() && thickness_required) {
+                throw UsageError("--layer is required: give at least one INDEX:THICKNESS");
+            }
+            if (!thickness_required) need_layers(1, "exact (film-table)");
+            break;
+        case FilmModel::thesis: need_layers(1, "thesis"); break;
+        case FilmModel::thesis_multilayer:
+            need_layers(1, "thesis-multilayer");
+            if (a.periods == -1) throw UsageError("--periods is required with --model thesis-multilayer");
+            f.periods = a.periods;
+            if (real_index(f.layers.front().material, 555.0) < 1.0) {
+                throw UsageError("--layer: eq. 26 needs the film's index >= 1 (air around it)");
+            }
+            break;
+        case FilmModel::morpho:
+            if (!f.layers.empty()) throw UsageError("--model morpho takes no --layer (use --d1, --d2, --n)");
+            f.morpho = {a.d1_nm, a.d2_nm, a.n, a.periods == -1 ? 12 : a.periods, a.k};
+            try {
+                validate_morpho(f.morpho);
+            } catch (const Error& e) {
+                throw UsageError(e.what());
+            }
+            if (a.blend) f.blend = MorphoBlend{};
+            break;
+    }
+    return f;
+}
+
+Colorimeter parse_colorimeter(const FilmArguments& a) {
+    try {
+        const RgbSpace* rgb = find_rgb_space(a.rgb);
+        if (rgb == nullptr) {
+            throw Error("--rgb '" + a.rgb + "' is unknown; valid: srgb, display-p3, rec2020, adobe-rgb, smpte-c, ntsc1953");
+        }
+        return Colorimeter(illuminant_by_name(a.illuminant), parse_observer(a.observer), *rgb);
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+}
+
+double Film::morpho_thickness_nm(double angle_rad_) const {
+    return morpho_effective_thickness_nm(morpho, angle_rad_);
+}
+
+Optics Film::evaluate(double lambda_nm, double angle, std::optional<double> thickness_nm) const {
+    const auto thickness = [&](std::size_t i) {
+        return thickness_nm && i == 0 ? *thickness_nm : layers[i].thickness_nm.value_or(0.0);
+    };
+    switch (model) {
+        case FilmModel::exact: {
+            std::vector<Layer> stack_layers;
+            for (std::size_t i = 0; i < layers.size(); ++i) {
+                stack_layers.push_back({layers[i].material, thickness(i)});
+            }
+            return FilmStack(ambient, std::move(stack_layers), substrate).evaluate(lambda_nm, angle, polarization);
+        }
+        case FilmModel::thesis: {
+            const SingleFilm film{ambient, layers.front().material, substrate};
+            return {thesis_single_film_reflectance(film, thickness(0), lambda_nm, angle, k, phase_change), 0.0};
+        }
+        case FilmModel::thesis_multilayer: {
+            const double n = real_index(layers.front().material, lambda_nm);
+            const double t_theta = thesis_multilayer_effective_thickness_nm(thickness(0), n, angle);
+            return {thesis_multilayer_reflectance(lambda_nm, t_theta, periods, k), 0.0};
+        }
+        case FilmModel::morpho: {
+            if (!blend) return {morpho_reflectance(morpho, lambda_nm, angle), 0.0};
+            double sum = 0.0;
+            for (int i = 0; i < blend->samples; ++i) {
+                MorphoParameters wing = morpho;
+                const double d = blend->samples == 1
+                                     ? blend->min_nm
+                                     : blend->min_nm + (blend->max_nm - blend->min_nm) * i / (blend->samples - 1);
+                (blend->varies == MorphoBlendThickness::d2 ? wing.d2_nm : wing.d1_nm) = d;
+                sum += morpho_reflectance(wing, lambda_nm, angle);
+            }
+            return {sum / blend->samples, 0.0};
+        }
+    }
+    return {};
+}
+
+FilmColor Film::color(const Colorimeter& colorimeter, double angle,
+                      std::optional<double> thickness_nm) const {
+    if (model == FilmModel::exact && layers.size() == 1 && polarization == Polarization::unpolarized) {
+        const SingleFilm film{ambient, layers.front().material, substrate};
+        return PreparedFilm(film, angle).color(thickness_nm.value_or(layers.front().thickness_nm.value_or(0.0)),
+                                               colorimeter);
+    }
+    const Xyz xyz = colorimeter.xyz_of([&](double lambda) { return evaluate(lambda, angle, thickness_nm).R; });
+    return {xyz, colorimeter.linear_rgb(xyz)};
+}
+
+}  // namespace irid::cli

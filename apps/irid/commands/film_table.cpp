@@ -1,0 +1,84 @@
+// irid film-table: a colour table like the thesis' §3.3, thickness (× angle) → colour.
+//
+//   irid film-table --layer water --thickness 0:1500:2 [--angles 0:80:10] [-o table.csv]
+//
+// One line per (thickness, angle): thickness_nm,angle_deg,cos_theta,X,Y,Z,R_linear,G_linear,
+// B_linear (XYZ under the illuminant with white Y = 1; linear RGB unclipped). For the Morpho
+// model the table is indexed by angle alone and thickness_nm is eq. 29's effective thickness.
+#include "film_options.h"
+
+#include <irid/color.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace irid::cli {
+namespace {
+
+struct FilmTableCommand {
+    FilmArguments args;
+    std::string thickness;
+    std::string angles;
+    std::string output;
+};
+
+int run_film_table(const FilmTableCommand& c) {
+    const bool morpho = c.args.model == "morpho";
+    const Film film = parse_film(c.args, false);
+    const Colorimeter colorimeter = parse_colorimeter(c.args);
+    if (!morpho && c.thickness.empty()) {
+        throw UsageError("--thickness START:END:STEP is required (thickness in nm, >= 0)");
+    }
+    if (morpho && !c.thickness.empty()) {
+        throw UsageError("--thickness does not apply to --model morpho; its table is indexed by --angles");
+    }
+    const std::vector<double> thicknesses =
+        morpho ? std::vector<double>{0.0}
+               : parse_range(c.thickness, "--thickness", 0.0, 1e6, 10000000).values();
+    const std::vector<double> angles =
+        c.angles.empty() ? std::vector<double>{c.args.angle_deg}
+                         : parse_range(c.angles, "--angles", 0.0, 90.0, 100000).values();
+    if (!angles.empty() && angles.back() >= 90.0) {
+        throw UsageError("--angles '" + c.angles + "': angles must be < 90 degrees");
+    }
+    if (static_cast<double>(thicknesses.size()) * static_cast<double>(angles.size()) > 1e7) {
+        throw UsageError("--thickness × --angles: more than 1e7 rows; use larger steps");
+    }
+
+    std::string out = "thickness_nm,angle_deg,cos_theta,X,Y,Z,R_linear,G_linear,B_linear\n";
+    for (const double angle_deg : angles) {
+        const double angle = angle_deg * std::numbers::pi / 180.0;
+        // The exact single film at one angle: prepare it once for every thickness.
+        std::optional<PreparedFilm> prepared;
+        if (film.model == FilmModel::exact && film.polarization == Polarization::unpolarized) {
+            prepared.emplace(SingleFilm{film.ambient, film.layers.front().material, film.substrate}, angle);
+        }
+        for (const double t : thicknesses) {
+            const FilmColor fc = prepared ? prepared->color(t, colorimeter)
+                                          : film.color(colorimeter, angle, t);
+            const double thickness = morpho ? film.morpho_thickness_nm(angle) : t;
+            append_csv_line(out, std::array{thickness, angle_deg, std::cos(angle), fc.xyz.X, fc.xyz.Y,
+                                            fc.xyz.Z, fc.rgb_linear.r, fc.rgb_linear.g, fc.rgb_linear.b});
+        }
+    }
+    if (c.output.empty() || c.output == "-") write_stdout(out);
+    else write_file_atomically(c.output, out);
+    return exit_success;
+}
+
+}  // namespace
+
+void add_film_table_command(CLI::App& app, Runner& runner) {
+    auto command = std::make_shared<FilmTableCommand>();
+    CLI::App* cmd = app.add_subcommand(
+        "film-table", "A colour table (thesis §3.3): film thickness (× angle) → XYZ and linear RGB");
+    add_film_options(*cmd, command->args, false);
+    cmd->add_option("--thickness", command->thickness, "START:END:STEP of the film's thickness [nm]");
+    cmd->add_option("--angles", command->angles,
+                    "START:END:STEP of angles of incidence [degrees, < 90]; default: --angle");
+    cmd->add_option("-o,--output", command->output, "Output CSV file (written when complete); default stdout");
+    cmd->callback([command, &runner] { runner = [command] { return run_film_table(*command); }; });
+}
+
+}  // namespace irid::cli
