@@ -379,36 +379,46 @@ TEST(Morpho, BlendOfTwoSamplesIsTheMeanOfTheThinnestAndThickestMullion) {
     MorphoParameters thin = wing, thick = wing;
     thin.d2_nm = 50.0;
     thick.d2_nm = 150.0;
-    const DenseSpectrum blend = morpho_blend_spectrum(wing, MorphoBlend{50.0, 150.0, 2}, 20.0);
+    const DenseSpectrum blend =
+        morpho_blend_spectrum(wing, MorphoBlend{50.0, 150.0, 2, MorphoBlendThickness::d2}, 20.0);
     const DenseSpectrum a = morpho_spectrum(thin, 20.0), b = morpho_spectrum(thick, 20.0);
     for (int i = 0; i < dense_sample_count; ++i)
         EXPECT_NEAR(blend[i], 0.5 * (a[i] + b[i]), 1e-12 * (a[i] + b[i] + 1.0));
 }
 
-TEST(Morpho, DefaultBlendAveragesEveryWholeNanometreOfMullionFrom50To150) {
+TEST(Morpho, DefaultBlendAveragesEveryWholeNanometreOfSpacingFrom50To150) {
     const MorphoParameters wing;
     const DenseSpectrum blend = morpho_blend_spectrum(wing, MorphoBlend{}, 0.0);
     for (double lambda : {400.0, 456.0, 600.0, 768.0}) {
         double sum = 0.0;
-        for (int d2 = 50; d2 <= 150; ++d2)
-            sum += thesis_multilayer_reflectance(lambda, 150.0 + d2 * 1.56, 12);
+        for (int d1 = 50; d1 <= 150; ++d1)
+            sum += thesis_multilayer_reflectance(lambda, d1 + 50.0 * 1.56, 12);
         EXPECT_NEAR(blend(lambda), sum / 101.0, 1e-12 * sum) << lambda;
     }
 }
 
+TEST(Morpho, DefaultBlendKeepsTheWingBlueAsInFigure9) {
+    // The first-order poles 2(d₁ + 78) of d₁ = 50..150 nm lie in 256-456 nm: the wing reflects
+    // most in the blue, so z̄ dominates: Z > X and Z > Y under D65.
+    const Xyz c = reflectance_to_xyz(morpho_blend_spectrum(MorphoParameters{}, MorphoBlend{}), illuminant_d65());
+    EXPECT_GT(c.Z, c.X);
+    EXPECT_GT(c.Z, c.Y);
+}
+
 TEST(Morpho, BlendOverASingleThicknessIsThatWing) {
     MorphoParameters wing;
-    wing.d2_nm = 80.0;
+    wing.d1_nm = 80.0;
     const DenseSpectrum single = morpho_spectrum(wing, 35.0);
     const DenseSpectrum blend = morpho_blend_spectrum(wing, MorphoBlend{80.0, 80.0, 5}, 35.0);
     for (int i = 0; i < dense_sample_count; ++i)
         EXPECT_NEAR(blend[i], single[i], 1e-12 * (single[i] + 1.0));
 }
 
-TEST(Morpho, DefaultBlendSpreadsTheFirstOrderPeakFrom456To768nm) {
+TEST(Morpho, ChitinBlendSpreadsTheFirstOrderPeakFrom456To768nm) {
     // Each d₂ sample puts its pole 2(150 + 1.56 d₂) in 456-768 nm, worth ½·13² there. At 612 nm
     // (d₂ = 100) one of the 101 samples is at its pole and the others are ≥ 0.
-    const DenseSpectrum blend = morpho_blend_spectrum(MorphoParameters{}, MorphoBlend{});
+    const DenseSpectrum blend = morpho_blend_spectrum(
+        MorphoParameters{}, MorphoBlend{50.0, 150.0, 101, MorphoBlendThickness::d2});
     EXPECT_GE(blend(612.0), 0.5 * 169.0 / 101.0);
     EXPECT_GE(blend(768.0), 0.5 * 169.0 / 101.0);
 }

@@ -121,7 +121,7 @@ void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) 
     cmd.add_option("--d1", a.d1_nm, "Morpho: path in air per period d1 [nm]")->capture_default_str();
     cmd.add_option("--d2", a.d2_nm, "Morpho: chitin mullion thickness d2 [nm]")->capture_default_str();
     cmd.add_option("--n", a.n, "Morpho: index of chitin (>= 1)")->capture_default_str();
-    cmd.add_flag("--blend", a.blend, "Morpho: average over mullion thicknesses d2 = 50..150 nm");
+    cmd.add_flag("--blend", a.blend, "Morpho: average over mullion spacings d1 = 50..150 nm (thesis §3.7)");
     cmd.add_option("--illuminant", a.illuminant, "D65, D50, A, E, D<CCT>, blackbody:<T>")
         ->capture_default_str();
     cmd.add_option("--observer", a.observer, "cie1931 or cie1964")->capture_default_str();

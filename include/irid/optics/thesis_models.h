@@ -37,14 +37,14 @@
 //   required so that n² − sin²θ ≥ 0 at every angle.
 // - Morpho (eq. 29): d₁ is a path in air (it goes with cos θ), d₂ one in chitin of index n (it
 //   goes with (n² − sin²θ)^½); "twelve mullions" is l = 12. The blend "over mullion
-//   thicknesses from 50 to 150 nm": the mullions are the chitin lamellae, so by default the
-//   blend varies d₂ (d₁ is kept) over 50, 51, ..., 150 nm (101 equally spaced samples,
-//   endpoints included) and takes the arithmetic mean of the reflectance spectra; because XYZ
-//   is linear in ρ this is also the mean of the colours. Consequence: at normal incidence the
-//   first-order peaks 2(d₁ + d₂n) sweep 456–768 nm, so the blended wing is a pale yellow-white
-//   (D65: xy ≈ 0.38, 0.42), not blue. Varying d₁ over 50–150 nm instead (MorphoBlend::varies)
-//   keeps the peaks at 256–456 nm and the wing blue-violet; the thesis text does not settle
-//   which it means.
+//   thicknesses from 50 to 150 nm" takes 101 equally spaced samples (every nm, endpoints
+//   included) and the arithmetic mean of the reflectance spectra; because XYZ is linear in ρ
+//   this is also the mean of the colours. The text does not say which of d₁, d₂ varies. Varying
+//   d₂ (the chitin) sweeps the first-order peaks 2(d₁ + d₂n) over 456–768 nm and turns the
+//   wing a pale yellow-white (D65: xy ≈ 0.38, 0.42), which contradicts the blue wing of the
+//   thesis' Figure 9; varying d₁ (the spacing, which the default 150 nm bounds) keeps the peaks
+//   at 256–456 nm and the wing blue-violet. So the default blend varies d₁;
+//   MorphoBlend::varies selects d₂.
 // - The Morpho table is sampled at equal steps over θ ∈ [0°, 90°] (90° is the last node, so a
 //   lookup anywhere in [0°, 90°) interpolates between two nodes).
 
@@ -186,9 +186,9 @@ struct MorphoParameters {
 
 /// The thickness of eq. 29 that MorphoBlend varies.
 enum class MorphoBlendThickness {
-    /// d₂, the mullion (chitin): the reading of "mullion thicknesses" taken by default.
+    /// d₂, the chitin: the literal reading, which turns the blended wing yellow-white.
     d2,
-    /// d₁, the air between mullions: the alternative reading, which keeps the wing blue.
+    /// d₁, the spacing: the default, which keeps the wing blue as in Figure 9.
     d1,
 };
 
@@ -200,7 +200,7 @@ struct MorphoBlend {
     double max_nm = 150.0;
     /// 101 samples: every 1 nm from 50 to 150 nm.
     int samples = 101;
-    MorphoBlendThickness varies = MorphoBlendThickness::d2;
+    MorphoBlendThickness varies = MorphoBlendThickness::d1;
 };
 
 /// Throws irid::Error naming the parameter unless d1, d2 ≥ 0, n ≥ 1 (all finite),
