@@ -22,9 +22,11 @@ struct FilmCommand {
 
 int run_film(const FilmCommand& c) {
     const Film film = parse_film(c.args, true);
+    // Every option is checked, whether or not this run uses it.
+    const Colorimeter colorimeter = parse_colorimeter(c.args);
+    const Range range = parse_range(c.args.wavelengths, "--wavelengths", 1.0, 1e5, 1000000);
     std::string out;
     if (c.color) {
-        const Colorimeter colorimeter = parse_colorimeter(c.args);
         const FilmColor fc = film.color(colorimeter, film.angle_rad);
         const Xy xy = xyz_to_xy(fc.xyz, xyz_to_xy(colorimeter.white()));
         const Lab lab = colorimeter.lab(fc.xyz);
@@ -32,7 +34,6 @@ int run_film(const FilmCommand& c) {
         append_csv_line(out, std::array{fc.xyz.X, fc.xyz.Y, fc.xyz.Z, xy.x, xy.y, lab.L, lab.a, lab.b,
                                         fc.rgb_linear.r, fc.rgb_linear.g, fc.rgb_linear.b});
     } else {
-        const Range range = parse_range(c.args.wavelengths, "--wavelengths", 1.0, 1e5, 1000000);
         const bool exact = film.model == FilmModel::exact;
         out = exact ? "wavelength_nm,R,T\n" : "wavelength_nm,R\n";
         for (const double lambda : range.values()) {

@@ -100,6 +100,7 @@ Range parse_range(const std::string& text, const char* option, double minimum, d
 }
 
 void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) {
+    a.command = &cmd;
     cmd.add_option("--model", a.model, "exact, thesis (eq. 21/22), thesis-multilayer (eq. 25/26) or morpho (eq. 29)")
         ->capture_default_str();
     cmd.add_option("--ambient", a.ambient,
@@ -117,7 +118,7 @@ void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) 
     cmd.add_flag("--phase-change", a.phase_change, "Thesis model: force eq. 21 (a π phase change)");
     cmd.add_flag("--no-phase-change", a.no_phase_change, "Thesis model: force eq. 22");
     cmd.add_option("--K", a.k, "The thesis' amplitude factor K (> 0)")->capture_default_str();
-    cmd.add_option("--periods", a.periods, "Number of films l in eq. 25 (thesis-multilayer, morpho: 12)");
+    cmd.add_option("--periods", a.periods, "Number of films l in eq. 25 (thesis-multilayer; morpho default 12)");
     cmd.add_option("--d1", a.d1_nm, "Morpho: path in air per period d1 [nm]")->capture_default_str();
     cmd.add_option("--d2", a.d2_nm, "Morpho: chitin mullion thickness d2 [nm]")->capture_default_str();
     cmd.add_option("--n", a.n, "Morpho: index of chitin (>= 1)")->capture_default_str();
@@ -158,9 +159,35 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
         throw UsageError("--K " + format_shortest(a.k) + " must be a finite number > 0");
     }
     f.k = a.k;
-    if (a.periods != -1 && (a.periods < 0 || a.periods > thesis_max_periods)) {
+    const auto given = [&](const char* option) { return a.command && a.command->count(option) > 0; };
+    if (a.periods < 0 || a.periods > thesis_max_periods) {
         throw UsageError("--periods " + std::to_string(a.periods) + " must be in 0.." +
                          std::to_string(thesis_max_periods));
+    }
+    // Options of another model are refused rather than silently ignored.
+    const auto refuse = [&](std::initializer_list<const char*> options) {
+        for (const char* option : options) {
+            if (given(option)) {
+                throw UsageError(std::string(option) + " does not apply to --model " + a.model);
+            }
+        }
+    };
+    switch (f.model) {
+        case FilmModel::exact:
+            refuse({"--phase-change", "--no-phase-change", "--K", "--periods", "--d1", "--d2", "--n", "--blend"});
+            break;
+        case FilmModel::thesis:
+            refuse({"--polarization", "--periods", "--d1", "--d2", "--n", "--blend"});
+            break;
+        case FilmModel::thesis_multilayer:
+            // Eq. 26 assumes air around the films.
+            refuse({"--ambient", "--substrate", "--polarization", "--phase-change", "--no-phase-change",
+                    "--d1", "--d2", "--n", "--blend"});
+            break;
+        case FilmModel::morpho:
+            refuse({"--ambient", "--substrate", "--polarization", "--phase-change", "--no-phase-change",
+                    "--layer"});
+            break;
     }
 
     const auto need_layers = [&](std::size_t count, const char* model) {
@@ -179,15 +206,24 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
         case FilmModel::thesis: need_layers(1, "thesis"); break;
         case FilmModel::thesis_multilayer:
             need_layers(1, "thesis-multilayer");
-            if (a.periods == -1) throw UsageError("--periods is required with --model thesis-multilayer");
+            if (!given("--periods")) throw UsageError("--periods is required with --model thesis-multilayer");
             f.periods = a.periods;
             if (real_index(f.layers.front().material, 555.0) < 1.0) {
                 throw UsageError("--layer: eq. 26 needs the film's index >= 1 (air around it)");
             }
             break;
         case FilmModel::morpho:
-            if (!f.layers.empty()) throw UsageError("--model morpho takes no --layer (use --d1, --d2, --n)");
-            f.morpho = {a.d1_nm, a.d2_nm, a.n, a.periods == -1 ? 12 : a.periods, a.k};
+            if (!(std::isfinite(a.d1_nm) && a.d1_nm >= 0.0 && a.d1_nm <= 1e6)) {
+                throw UsageError("--d1 " + format_shortest(a.d1_nm) + " must be a thickness in [0, 1e6] nm");
+            }
+            if (!(std::isfinite(a.d2_nm) && a.d2_nm >= 0.0 && a.d2_nm <= 1e6)) {
+                throw UsageError("--d2 " + format_shortest(a.d2_nm) + " must be a thickness in [0, 1e6] nm");
+            }
+            if (!(std::isfinite(a.n) && a.n >= 1.0)) {
+                throw UsageError("--n " + format_shortest(a.n) +
+                                 " must be >= 1 (eq. 29 assumes the wing is in air)");
+            }
+            f.morpho = {a.d1_nm, a.d2_nm, a.n, a.periods, a.k};
             try {
                 validate_morpho(f.morpho);
             } catch (const Error& e) {
@@ -200,15 +236,21 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
 }
 
 Colorimeter parse_colorimeter(const FilmArguments& a) {
-    try {
-        const RgbSpace* rgb = find_rgb_space(a.rgb);
-        if (rgb == nullptr) {
-            throw Error("--rgb '" + a.rgb + "' is unknown; valid: srgb, display-p3, rec2020, adobe-rgb, smpte-c, ntsc1953");
-        }
-        return Colorimeter(illuminant_by_name(a.illuminant), parse_observer(a.observer), *rgb);
-    } catch (const Error& e) {
-        throw UsageError(e.what());
+    const RgbSpace* rgb = find_rgb_space(a.rgb);
+    if (rgb == nullptr) {
+        throw UsageError("--rgb '" + a.rgb +
+                         "' is unknown; valid: srgb, display-p3, rec2020, adobe-rgb, smpte-c, ntsc1953");
     }
+    const auto checked = [](const char* option, auto&& parse) {
+        try {
+            return parse();
+        } catch (const Error& e) {
+            throw UsageError(std::string(option) + ": " + e.what());
+        }
+    };
+    const DenseSpectrum illuminant = checked("--illuminant", [&] { return illuminant_by_name(a.illuminant); });
+    const Observer observer = checked("--observer", [&] { return parse_observer(a.observer); });
+    return Colorimeter(illuminant, observer, *rgb);
 }
 
 double Film::morpho_thickness_nm(double angle_rad_) const {

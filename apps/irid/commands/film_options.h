@@ -38,12 +38,14 @@ struct FilmArguments {
     bool phase_change = false;
     bool no_phase_change = false;
     double k = 1.0;
-    int periods = -1;  // -1: the model's default
+    int periods = 12;
     double d1_nm = 150.0, d2_nm = 50.0, n = 1.56;
     bool blend = false;
     std::string illuminant = "D65";
     std::string observer = "cie1931";
     std::string rgb = "srgb";
+    /// The command the options belong to, to ask which were given.
+    const CLI::App* command = nullptr;
 };
 
 /// Registers the film options on a command.
