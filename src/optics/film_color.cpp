@@ -78,53 +78,38 @@ DenseSpectrum exact_reflectance_spectrum(const FilmStack& stack, double angle_ra
         [&](double lambda) { return stack.evaluate(lambda, angle_rad, polarization).R; });
 }
 
-PreparedFilm::PreparedFilm(const SingleFilm& film, double angle_rad)
-    : m_samples(dense_sample_count), m_film(film), m_angle_rad(angle_rad) {
-    check_incidence_angle(angle_rad);
-    if (!film.ambient.is_lossless()) {
-        throw Error("film: the ambient medium '" + film.ambient.name() +
-                    "' absorbs (k > 0); the angle of incidence needs a lossless ambient");
-    }
+PreparedFilm::Sample PreparedFilm::prepare(const SingleFilm& film, double sin_theta, double cos_theta0,
+                                           int i, bool& degenerate) noexcept {
     constexpr std::complex<double> two_i{0.0, 2.0};
-    const double sin_theta = std::sin(angle_rad);
-    const double cos_theta0 = std::cos(angle_rad);
-    for (int i = 0; i < dense_sample_count; ++i) {
-        const double lambda = DenseSpectrum::wavelength_nm(i);
-        const double n0 = film.ambient.index(lambda).real();
-        const Complex n1 = film.film.index(lambda);
-        const Complex n2 = film.substrate.index(lambda);
-        const double s = n0 * sin_theta;  // Snell invariant
-        const double phase_scale = 2.0 * std::numbers::pi / lambda;
-        if (n1.imag() == 0.0 && n2.imag() == 0.0 && n1.real() > s && n2.real() > s) {
-            // Lossless film and substrate, no total reflection: every q = N cos θ is real and the
-            // Fresnel amplitudes are r_s = (q_i − q_t)/(q_i + q_t) and, as the ratio of tangential
-            // fields, r_p = (N_i² q_t − N_t² q_i)/(N_i² q_t + N_t² q_i) (Born & Wolf §1.5.2; the
-            // sign convention cancels in |r|²).
-            const double a = n0, b = n1.real(), c = n2.real();
-            const double q0 = a * cos_theta0;
-            const double q1 = std::sqrt((b - s) * (b + s));
-            const double q2 = std::sqrt((c - s) * (c + s));
-            m_samples[i] = {(q0 - q1) / (q0 + q1), (q1 - q2) / (q1 + q2),
-                            (a * a * q1 - b * b * q0) / (a * a * q1 + b * b * q0),
-                            (b * b * q2 - c * c * q1) / (b * b * q2 + c * c * q1),
-                            two_i * (phase_scale * q1), true};
-            continue;
-        }
-        const Complex q1 = n1 * cos_theta(n1, s);
-        if (std::abs(q1) < 1e-12) m_degenerate.push_back(i);
-        const FresnelCoefficients f01 = fresnel(n0, n1, s);
-        const FresnelCoefficients f12 = fresnel(n1, n2, s);
-        m_samples[i] = {f01.r_s, f12.r_s, f01.r_p, f12.r_p, two_i * phase_scale * q1, false};
+    const double lambda = DenseSpectrum::wavelength_nm(i);
+    const double n0 = film.ambient.index(lambda).real();
+    const Complex n1 = film.film.index(lambda);
+    const Complex n2 = film.substrate.index(lambda);
+    const double s = n0 * sin_theta;  // Snell invariant
+    const double phase_scale = 2.0 * std::numbers::pi / lambda;
+    degenerate = false;
+    if (n1.imag() == 0.0 && n2.imag() == 0.0 && n1.real() > s && n2.real() > s) {
+        // Lossless film and substrate, no total reflection: every q = N cos θ is real and the
+        // Fresnel amplitudes are r_s = (q_i − q_t)/(q_i + q_t) and, as the ratio of tangential
+        // fields, r_p = (N_i² q_t − N_t² q_i)/(N_i² q_t + N_t² q_i) (Born & Wolf §1.5.2; the
+        // sign convention cancels in |r|²).
+        const double a = n0, b = n1.real(), c = n2.real();
+        const double q0 = a * cos_theta0;
+        const double q1 = std::sqrt((b - s) * (b + s));
+        const double q2 = std::sqrt((c - s) * (c + s));
+        return {(q0 - q1) / (q0 + q1), (q1 - q2) / (q1 + q2),
+                (a * a * q1 - b * b * q0) / (a * a * q1 + b * b * q0),
+                (b * b * q2 - c * c * q1) / (b * b * q2 + c * c * q1), two_i * (phase_scale * q1),
+                true};
     }
+    const Complex q1 = n1 * cos_theta(n1, s);
+    degenerate = std::abs(q1) < 1e-12;
+    const FresnelCoefficients f01 = fresnel(n0, n1, s);
+    const FresnelCoefficients f12 = fresnel(n1, n2, s);
+    return {f01.r_s, f12.r_s, f01.r_p, f12.r_p, two_i * phase_scale * q1, false};
 }
 
-double PreparedFilm::reflectance(int i, double thickness_nm) const noexcept {
-    const Sample& s = m_samples[i];
-    if (!m_degenerate.empty() &&
-        std::find(m_degenerate.begin(), m_degenerate.end(), i) != m_degenerate.end()) {
-        const FilmStack stack(m_film.ambient, {Layer{m_film.film, thickness_nm}}, m_film.substrate);
-        return stack.evaluate(DenseSpectrum::wavelength_nm(i), m_angle_rad, Polarization::unpolarized).R;
-    }
+double PreparedFilm::airy_reflectance(const Sample& s, double thickness_nm) noexcept {
     if (s.real) {
         const double cos_phi = std::cos(s.phase_per_nm.imag() * thickness_nm);
         const auto airy = [cos_phi](double r01, double r12) {
@@ -139,6 +124,45 @@ double PreparedFilm::reflectance(int i, double thickness_nm) const noexcept {
         return std::norm(r01 + r12z) / std::norm(1.0 + r01 * r12z);
     };
     return 0.5 * (airy(s.r01_s, s.r12_s) + airy(s.r01_p, s.r12_p));
+}
+
+namespace {
+
+void check_film_angle(const SingleFilm& film, double angle_rad) {
+    check_incidence_angle(angle_rad);
+    if (!film.ambient.is_lossless()) {
+        throw Error("film: the ambient medium '" + film.ambient.name() +
+                    "' absorbs (k > 0); the angle of incidence needs a lossless ambient");
+    }
+}
+
+/// The exact film at a wavelength where the Airy sum is 0/0: by the transfer matrix.
+double stack_reflectance(const SingleFilm& film, double thickness_nm, double lambda_nm,
+                         double angle_rad) {
+    const FilmStack stack(film.ambient, {Layer{film.film, thickness_nm}}, film.substrate);
+    return stack.evaluate(lambda_nm, angle_rad, Polarization::unpolarized).R;
+}
+
+}  // namespace
+
+PreparedFilm::PreparedFilm(const SingleFilm& film, double angle_rad)
+    : m_samples(dense_sample_count), m_film(film), m_angle_rad(angle_rad) {
+    check_film_angle(film, angle_rad);
+    const double sin_theta = std::sin(angle_rad);
+    const double cos_theta0 = std::cos(angle_rad);
+    for (int i = 0; i < dense_sample_count; ++i) {
+        bool degenerate = false;
+        m_samples[i] = prepare(film, sin_theta, cos_theta0, i, degenerate);
+        if (degenerate) m_degenerate.push_back(i);
+    }
+}
+
+double PreparedFilm::reflectance(int i, double thickness_nm) const noexcept {
+    if (!m_degenerate.empty() &&
+        std::find(m_degenerate.begin(), m_degenerate.end(), i) != m_degenerate.end()) {
+        return stack_reflectance(m_film, thickness_nm, DenseSpectrum::wavelength_nm(i), m_angle_rad);
+    }
+    return airy_reflectance(m_samples[i], thickness_nm);
 }
 
 DenseSpectrum PreparedFilm::reflectance_spectrum(double thickness_nm) const {
@@ -288,7 +312,19 @@ FilmColor FilmColorTable2D::at(double thickness_nm, double cos_theta) const noex
 
 FilmColor exact_film_color(const SingleFilm& film, double thickness_nm, double angle_rad,
                            const Colorimeter& colorimeter) {
-    return PreparedFilm(film, angle_rad).color(thickness_nm, colorimeter);
+    // One pass: prepare each wavelength and sum its Airy reflectance at once, with no table and
+    // no copy of the materials; the same numbers as PreparedFilm.
+    check_film_angle(film, angle_rad);
+    const double sin_theta = std::sin(angle_rad);
+    const double cos_theta0 = std::cos(angle_rad);
+    const Xyz xyz = colorimeter.xyz_of([&](double lambda) {
+        const int i = static_cast<int>(lambda) - lambda_min_nm;
+        bool degenerate = false;
+        const PreparedFilm::Sample s = PreparedFilm::prepare(film, sin_theta, cos_theta0, i, degenerate);
+        return degenerate ? stack_reflectance(film, thickness_nm, lambda, angle_rad)
+                          : PreparedFilm::airy_reflectance(s, thickness_nm);
+    });
+    return {xyz, colorimeter.linear_rgb(xyz)};
 }
 
 FilmColorTable exact_film_color_table(const SingleFilm& film, double angle_rad, double max_thickness_nm,

@@ -95,7 +95,7 @@ public:
     [[nodiscard]] DenseSpectrum reflectance_spectrum(double thickness_nm) const;
     [[nodiscard]] FilmColor color(double thickness_nm, const Colorimeter& colorimeter) const noexcept;
 
-private:
+    /// What the film's reflectance at one wavelength needs besides the thickness.
     struct Sample {
         std::complex<double> r01_s, r12_s, r01_p, r12_p;
         /// 2i × 2π N1 cos θ1 / λ: z = exp(phase_per_nm × d).
@@ -104,9 +104,18 @@ private:
         /// then R = (r01² + r12² + 2 r01 r12 cos φ) / (1 + r01² r12² + 2 r01 r12 cos φ).
         bool real;
     };
+    /// The amplitudes and phase at the i-th wavelength; `degenerate` when the film is exactly at
+    /// its own critical angle there (the Airy sum is 0/0; use the transfer matrix).
+    static Sample prepare(const SingleFilm& film, double sin_theta, double cos_theta, int i,
+                          bool& degenerate) noexcept;
+    /// The unpolarised Airy reflectance of a prepared sample at a thickness (not for degenerate
+    /// samples).
+    static double airy_reflectance(const Sample& s, double thickness_nm) noexcept;
+
+private:
     std::vector<Sample> m_samples;
-    /// Wavelength indices where the film sits exactly at its own critical angle (the Airy sum is
-    /// 0/0 there); evaluated by the transfer matrix instead.
+    /// Wavelength indices where the film sits exactly at its own critical angle; evaluated by
+    /// the transfer matrix instead.
     std::vector<int> m_degenerate;
     SingleFilm m_film;
     double m_angle_rad;
