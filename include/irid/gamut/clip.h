@@ -1,0 +1,176 @@
+#pragma once
+
+// Gamut clipping: bringing a colour a display cannot show back into its gamut.
+//
+// The thesis' method (Smits 1990, §4.3) moves an out-of-gamut colour along the line of constant
+// luminance toward the grey of the same luminance and stops where the line enters the display's
+// RGB cube, found Cohen–Sutherland style from the outcodes of the three channels. It is
+// implemented in both of the thesis' forms (on linear RGB and on XYZ against the parallelepiped)
+// and compared with the methods used today. Every method is behind one interface, GamutClipper,
+// selected by name.
+//
+// What the thesis leaves open, decided here for every method (and tested):
+// - Non-finite input: NaN channels are taken as 0 and ±Inf as ±1e30 before clipping, so every
+//   output is finite (an image never receives a NaN).
+// - Luminance at or below 0 gives black; at or above the white's (max, max, max) it gives that
+//   white: no colour of that luminance is in the gamut except the extremes.
+// - A colour exactly on a face (a channel equal to 0 or to max) is in the gamut and unchanged.
+// - The destination's maximum may differ from 1 (an HDR peak): the cube is [0, max]³.
+
+#include <irid/color/matrix.h>
+#include <irid/color/rgb.h>
+#include <irid/color/types.h>
+
+#include <array>
+#include <cmath>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace irid {
+
+/// The clipping methods, in the order of the reports.
+enum class ClipMethod {
+    /// Per-channel clamp to [0, max] ("discarding negative values", Smits 1990 Figure 11 top).
+    clamp,
+    /// Smits 1990 §4.3, RGB form.
+    smits,
+    /// Smits 1990 §4.3, XYZ form (the parallelepiped's planes in XYZ).
+    smits_xyz,
+    /// Constant L* and hue in CIELUV, chroma reduced exactly to the gamut boundary.
+    luv_lightness_hue,
+    /// Constant CIELUV hue: the nearest in-gamut colour in ΔE*uv within the hue plane
+    /// (Figure 11 bottom).
+    luv_hue,
+    /// CSS Color Module Level 4 gamut mapping (binary search on OKLCh chroma, ΔEOK < JND 0.02).
+    css,
+    /// Constant Oklab lightness and hue, chroma reduced exactly to the boundary.
+    oklab,
+    /// smits followed by one Newton step along the gamut face toward the input's Oklab hue, at
+    /// constant luminance.
+    smits_corrected,
+};
+
+/// Every method, in order.
+[[nodiscard]] std::span<const ClipMethod> clip_methods() noexcept;
+/// The name used on the command line ("smits-xyz", "luv-lightness-hue", ...).
+[[nodiscard]] std::string_view clip_method_name(ClipMethod method) noexcept;
+/// Throws irid::Error listing the names when `name` is none of them.
+[[nodiscard]] ClipMethod parse_clip_method(std::string_view name);
+
+/// A display gamut: linear RGB of a space in [0, max]³.
+class Gamut {
+public:
+    /// Throws irid::Error unless 0 < max <= 1e6 (finite).
+    explicit Gamut(const RgbSpace& space, double max = 1.0);
+
+    [[nodiscard]] const RgbSpace& space() const noexcept { return m_space; }
+    [[nodiscard]] double max() const noexcept { return m_max; }
+    /// The luminance row (A, B, C) of the RGB → XYZ matrix: Y = A r + B g + C b.
+    [[nodiscard]] const Vec3& luminance_row() const noexcept { return m_luminance; }
+    [[nodiscard]] bool contains(const Rgb& c) const noexcept {
+        return c.r >= 0.0 && c.g >= 0.0 && c.b >= 0.0 && c.r <= m_max && c.g <= m_max && c.b <= m_max;
+    }
+
+private:
+    RgbSpace m_space;
+    double m_max;
+    Vec3 m_luminance;
+};
+
+/// Replaces NaN by 0 and ±Inf by ±1e30 (the rule above).
+[[nodiscard]] inline double finite_or_default(double v) noexcept {
+    if (std::isnan(v)) return 0.0;
+    if (std::isinf(v)) return v > 0.0 ? 1e30 : -1e30;
+    return v;
+}
+
+/// The thesis' clip in RGB form (Smits 1990, §4.3) on any arithmetic type T, so that the same
+/// code runs in double, in float for batches, and on a counting type to reproduce Table 1.
+/// `lum` is the luminance row (A, B, C), `inv_lum_sum` = 1/(A + B + C), `max` the cube's size.
+/// Steps: outcodes (a channel below 0 or above max); none → unchanged (comparisons only).
+/// Otherwise the grey of equal luminance w = (A r + B g + C b)/(A + B + C); Y <= 0 → black,
+/// w >= max → white; else for every channel out of range the parameter t of the segment
+/// c + t (w − c) where it meets that face, t = (c − bound)/(c − w), keeping the largest t (the
+/// intersection farthest from the input), and the point c + t (w − c).
+template <class T>
+[[nodiscard]] std::array<T, 3> smits_clip_rgb(const std::array<T, 3>& c, const std::array<T, 3>& lum,
+                                              const T& inv_lum_sum, const T& max) noexcept {
+    const T zero(0.0);
+    const bool low0 = c[0] < zero, low1 = c[1] < zero, low2 = c[2] < zero;
+    const bool high0 = c[0] > max, high1 = c[1] > max, high2 = c[2] > max;
+    if (!(low0 || low1 || low2 || high0 || high1 || high2)) return c;
+    const T y = lum[0] * c[0] + lum[1] * c[1] + lum[2] * c[2];
+    if (!(y > zero)) return {zero, zero, zero};
+    const T w = y * inv_lum_sum;
+    if (!(w < max)) return {max, max, max};
+    T t = zero;
+    const bool low[3] = {low0, low1, low2};
+    const bool high[3] = {high0, high1, high2};
+    for (int i = 0; i < 3; ++i) {
+        if (low[i]) {
+            const T ti = c[i] / (c[i] - w);  // (c − 0)/(c − w)
+            if (ti > t) t = ti;
+        } else if (high[i]) {
+            const T ti = (c[i] - max) / (c[i] - w);
+            if (ti > t) t = ti;
+        }
+    }
+    return {c[0] + t * (w - c[0]), c[1] + t * (w - c[1]), c[2] + t * (w - c[2])};
+}
+
+/// One clipping method on one gamut: built once (matrices, Oklab transforms), then clip() is
+/// noexcept and allocates nothing.
+class GamutClipper {
+public:
+    GamutClipper(ClipMethod method, const Gamut& gamut);
+
+    /// Clips linear RGB of the gamut's space. In-gamut colours come back unchanged (css and
+    /// clamp included); every output is finite and inside [0, max]³.
+    [[nodiscard]] Rgb clip(const Rgb& linear) const noexcept;
+    /// The same on XYZ relative to the gamut's white (Y = max for the white), returning XYZ.
+    /// For smits_xyz this is the thesis' XYZ form itself; the others go through RGB.
+    [[nodiscard]] Xyz clip_xyz(const Xyz& xyz) const noexcept;
+
+    [[nodiscard]] ClipMethod method() const noexcept { return m_method; }
+    [[nodiscard]] const Gamut& gamut() const noexcept { return m_gamut; }
+
+private:
+    [[nodiscard]] Rgb clip_finite(const Rgb& c) const noexcept;
+    [[nodiscard]] Rgb smits(const Rgb& c) const noexcept;
+    [[nodiscard]] Xyz smits_xyz(const Xyz& c) const noexcept;
+    [[nodiscard]] Rgb luv_lightness_hue(const Rgb& c) const noexcept;
+    [[nodiscard]] Rgb luv_hue(const Rgb& c) const noexcept;
+    [[nodiscard]] Rgb css(const Rgb& c) const noexcept;
+    [[nodiscard]] Rgb oklab(const Rgb& c) const noexcept;
+    [[nodiscard]] Rgb smits_corrected(const Rgb& c) const noexcept;
+    [[nodiscard]] Rgb clamp(const Rgb& c) const noexcept;
+
+    /// Oklab of linear RGB of this gamut (adapted from the space's white to D65 when needed).
+    [[nodiscard]] Oklab to_oklab(const Rgb& c) const noexcept;
+    [[nodiscard]] Rgb from_oklab(const Oklab& c) const noexcept;
+    /// The largest s in [0, 1] for which the chromaticity u' = u'n + s Δu', v' = v'n + s Δv' at
+    /// luminance y is inside the gamut (exact: each face is a linear condition in s).
+    [[nodiscard]] double luv_chroma_limit(double y, double du, double dv) const noexcept;
+
+    ClipMethod m_method;
+    Gamut m_gamut;
+    Mat3 m_rgb_to_xyz, m_xyz_to_rgb;
+    Mat3 m_rgb_to_lms, m_lms_to_rgb;  // Oklab's LMS (before the cube root)
+    Xyz m_white;                      // XYZ of (max, max, max)
+    double m_white_oklab_l;           // Oklab L of (max, max, max)
+};
+
+/// Operation counts of the thesis' RGB clip on one colour (Table 1), from the same template run
+/// on a counting number type.
+struct OperationCounts {
+    long comparisons = 0, additions = 0, multiplications = 0, divisions = 0;
+};
+/// Counts for an in-gamut colour and for colours crossing one, two and three planes (sRGB).
+struct Table1 {
+    OperationCounts in_gamut, one_plane, two_planes, three_planes;
+};
+[[nodiscard]] Table1 count_smits_operations();
+
+}  // namespace irid

@@ -1,0 +1,473 @@
+#include <irid/color/adaptation.h>
+#include <irid/color/difference.h>
+#include <irid/color/numeric_table.h>
+#include <irid/color/spaces.h>
+#include <irid/error.h>
+#include <irid/gamut/clip.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+namespace irid {
+namespace {
+
+constexpr std::array<ClipMethod, 8> all_methods{
+    ClipMethod::clamp,   ClipMethod::smits, ClipMethod::smits_xyz, ClipMethod::luv_lightness_hue,
+    ClipMethod::luv_hue, ClipMethod::css,   ClipMethod::oklab,     ClipMethod::smits_corrected};
+
+constexpr double degrees_per_radian = 180.0 / std::numbers::pi;
+
+Vec3 v3(const Rgb& c) noexcept { return {c.r, c.g, c.b}; }
+Rgb rgb(const Vec3& v) noexcept { return {v[0], v[1], v[2]}; }
+
+/// CSS Color 4 §13.2.2: the just noticeable difference and the search's resolution, in Oklab.
+constexpr double css_jnd = 0.02;
+constexpr double css_epsilon = 0.0001;
+
+/// The signed difference b − a of two hue angles in degrees, in (−180, 180].
+double hue_difference(double a, double b) noexcept {
+    double d = std::fmod(b - a, 360.0);
+    if (d > 180.0) d -= 360.0;
+    if (d <= -180.0) d += 360.0;
+    return d;
+}
+
+/// Real roots in [0, 1] of c0 + c1 s + c2 s² + c3 s³, smallest first, by splitting [0, 1] at the
+/// derivative's roots into monotonic pieces and bisecting each piece that changes sign (to the
+/// resolution of a double: the result is exact to rounding).
+double smallest_root_in_unit_interval(const std::array<double, 4>& c) noexcept {
+    const auto f = [&](double s) { return c[0] + s * (c[1] + s * (c[2] + s * c[3])); };
+    std::array<double, 4> cuts{0.0, 1.0, 1.0, 1.0};
+    int n = 1;
+    // f'(s) = c1 + 2 c2 s + 3 c3 s².
+    const double a = 3.0 * c[3], b = 2.0 * c[2], cc = c[1];
+    const auto add_cut = [&](double s) {
+        if (s > 0.0 && s < 1.0) cuts[n++] = s;
+    };
+    if (std::abs(a) > 1e-300) {
+        const double disc = b * b - 4.0 * a * cc;
+        if (disc >= 0.0) {
+            const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+            if (q != 0.0) add_cut(cc / q);
+            add_cut(q / a);
+        }
+    } else if (std::abs(b) > 1e-300) {
+        add_cut(-cc / b);
+    }
+    if (n == 3 && cuts[2] < cuts[1]) std::swap(cuts[1], cuts[2]);  // at most two interior cuts
+    cuts[n] = 1.0;
+    for (int k = 0; k < n; ++k) {
+        double lo = cuts[k], hi = cuts[k + 1];
+        double flo = f(lo), fhi = f(hi);
+        if (flo == 0.0 && lo > 0.0) return lo;
+        if ((flo < 0.0) == (fhi < 0.0) && fhi != 0.0) continue;
+        for (int it = 0; it < 200 && hi - lo > 0.0; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            if (mid <= lo || mid >= hi) break;
+            const double fm = f(mid);
+            if ((fm < 0.0) == (flo < 0.0) && fm != 0.0) {
+                lo = mid;
+                flo = fm;
+            } else {
+                hi = mid;
+            }
+        }
+        return hi;
+    }
+    return 2.0;  // no root in [0, 1]
+}
+
+}  // namespace
+
+std::span<const ClipMethod> clip_methods() noexcept { return all_methods; }
+
+std::string_view clip_method_name(ClipMethod method) noexcept {
+    switch (method) {
+        case ClipMethod::clamp: return "clamp";
+        case ClipMethod::smits: return "smits";
+        case ClipMethod::smits_xyz: return "smits-xyz";
+        case ClipMethod::luv_lightness_hue: return "luv-lightness-hue";
+        case ClipMethod::luv_hue: return "luv-hue";
+        case ClipMethod::css: return "css";
+        case ClipMethod::oklab: return "oklab";
+        case ClipMethod::smits_corrected: return "smits-corrected";
+    }
+    return "";
+}
+
+ClipMethod parse_clip_method(std::string_view name) {
+    std::string names;
+    for (const ClipMethod m : all_methods) {
+        if (clip_method_name(m) == name) return m;
+        names += (names.empty() ? "" : ", ") + std::string(clip_method_name(m));
+    }
+    throw Error("unknown clip method '" + std::string(name) + "'; valid: " + names);
+}
+
+Gamut::Gamut(const RgbSpace& space, double max) : m_space(space), m_max(max) {
+    if (!(std::isfinite(max) && max > 0.0 && max <= 1e6)) {
+        throw Error("gamut: maximum " + format_shortest(max) + " must be in (0, 1e6]");
+    }
+    m_luminance = space.to_xyz_matrix()[1];
+}
+
+GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut)
+    : m_method(method),
+      m_gamut(gamut),
+      m_rgb_to_xyz(gamut.space().to_xyz_matrix()),
+      m_xyz_to_rgb(gamut.space().from_xyz_matrix()) {
+    // Oklab is defined on XYZ relative to D65 (Ottosson 2020): adapt from the space's white.
+    const Xy d65{0.3127, 0.3290};
+    const Xy w = gamut.space().white();
+    const Mat3 to_d65 = (w.x == d65.x && w.y == d65.y)
+                            ? Mat3::identity()
+                            : adaptation_matrix(xy_to_xyz(w), xy_to_xyz(d65), ChromaticAdaptation::bradford);
+    m_rgb_to_lms = oklab_m1 * to_d65 * m_rgb_to_xyz;
+    m_lms_to_rgb = inverse(m_rgb_to_lms, "RGB to LMS matrix");
+    const double max = gamut.max();
+    const Vec3 white = m_rgb_to_xyz * Vec3{max, max, max};
+    m_white = {white[0], white[1], white[2]};
+    m_white_oklab_l = to_oklab({max, max, max}).L;
+}
+
+Oklab GamutClipper::to_oklab(const Rgb& c) const noexcept {
+    const Vec3 lms = m_rgb_to_lms * v3(c);
+    const Vec3 lab = oklab_m2 * Vec3{std::cbrt(lms[0]), std::cbrt(lms[1]), std::cbrt(lms[2])};
+    return {lab[0], lab[1], lab[2]};
+}
+
+Rgb GamutClipper::from_oklab(const Oklab& c) const noexcept {
+    const Vec3 r = oklab_m2_inverse * Vec3{c.L, c.a, c.b};
+    return rgb(m_lms_to_rgb * Vec3{r[0] * r[0] * r[0], r[1] * r[1] * r[1], r[2] * r[2] * r[2]});
+}
+
+Rgb GamutClipper::clip(const Rgb& linear) const noexcept {
+    const Rgb c{finite_or_default(linear.r), finite_or_default(linear.g), finite_or_default(linear.b)};
+    if (m_method == ClipMethod::clamp) return clamp(c);
+    if (m_gamut.contains(c)) return c;
+    Rgb out = clip_finite(c);
+    // Rounding may leave a result a few ulps outside a face; the contract is [0, max]³.
+    out = clamp(out);
+    return out;
+}
+
+Xyz GamutClipper::clip_xyz(const Xyz& xyz) const noexcept {
+    const Xyz c{finite_or_default(xyz.X), finite_or_default(xyz.Y), finite_or_default(xyz.Z)};
+    if (m_method == ClipMethod::smits_xyz) return smits_xyz(c);
+    const Rgb out = clip(rgb(m_xyz_to_rgb * Vec3{c.X, c.Y, c.Z}));
+    const Vec3 v = m_rgb_to_xyz * v3(out);
+    return {v[0], v[1], v[2]};
+}
+
+Rgb GamutClipper::clip_finite(const Rgb& c) const noexcept {
+    switch (m_method) {
+        case ClipMethod::clamp: return clamp(c);
+        case ClipMethod::smits: return smits(c);
+        case ClipMethod::smits_xyz: {
+            const Vec3 x = m_rgb_to_xyz * v3(c);
+            const Xyz clipped = smits_xyz({x[0], x[1], x[2]});
+            return rgb(m_xyz_to_rgb * Vec3{clipped.X, clipped.Y, clipped.Z});
+        }
+        case ClipMethod::luv_lightness_hue: return luv_lightness_hue(c);
+        case ClipMethod::luv_hue: return luv_hue(c);
+        case ClipMethod::css: return css(c);
+        case ClipMethod::oklab: return oklab(c);
+        case ClipMethod::smits_corrected: return smits_corrected(c);
+    }
+    return c;
+}
+
+Rgb GamutClipper::clamp(const Rgb& c) const noexcept {
+    const double m = m_gamut.max();
+    return {std::clamp(c.r, 0.0, m), std::clamp(c.g, 0.0, m), std::clamp(c.b, 0.0, m)};
+}
+
+// --- Smits 1990, §4.3 ------------------------------------------------------------------------
+
+Rgb GamutClipper::smits(const Rgb& c) const noexcept {
+    const Vec3& lum = m_gamut.luminance_row();
+    const auto out = smits_clip_rgb<double>({c.r, c.g, c.b}, {lum[0], lum[1], lum[2]},
+                                            1.0 / (lum[0] + lum[1] + lum[2]), m_gamut.max());
+    return {out[0], out[1], out[2]};
+}
+
+Xyz GamutClipper::smits_xyz(const Xyz& c) const noexcept {
+    // The parallelepiped's three pairs of planes row_i · XYZ = 0 and = max, row_i the rows of
+    // the XYZ → RGB matrix; the neutral point is the white's direction at the colour's Y.
+    const double max = m_gamut.max();
+    const Vec3 p{c.X, c.Y, c.Z};
+    std::array<double, 3> value{};
+    bool outside = false;
+    for (int i = 0; i < 3; ++i) {
+        const Vec3& row = m_xyz_to_rgb[i];
+        value[i] = row[0] * p[0] + row[1] * p[1] + row[2] * p[2];
+        outside = outside || value[i] < 0.0 || value[i] > max;
+    }
+    if (!outside) return c;
+    if (!(c.Y > 0.0)) return {0.0, 0.0, 0.0};
+    // The white (max, max, max) has luminance m_white.Y; the grey of luminance Y is W Y / W_Y.
+    const double k = c.Y / m_white.Y;
+    if (!(k < 1.0)) return m_white;
+    const Vec3 n{m_white.X * k, m_white.Y * k, m_white.Z * k};
+    // Each plane's value at the neutral point is max · k (the grey's RGB channels).
+    const double neutral = max * k;
+    double t = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        if (value[i] < 0.0) t = std::max(t, value[i] / (value[i] - neutral));
+        else if (value[i] > max) t = std::max(t, (value[i] - max) / (value[i] - neutral));
+    }
+    return {p[0] + t * (n[0] - p[0]), p[1] + t * (n[1] - p[1]), p[2] + t * (n[2] - p[2])};
+}
+
+// --- CIELUV methods --------------------------------------------------------------------------
+
+double GamutClipper::luv_chroma_limit(double y, double du, double dv) const noexcept {
+    // At luminance y and chromaticity (u', v'): X = 9 y u' / (4 v'), Z = y (12 − 3u' − 20v')/(4v'),
+    // so channel i = y N_i / (4 v') with N_i = 9 m_i0 u' + 4 m_i1 v' + m_i2 (12 − 3u' − 20v'),
+    // linear in s; channel >= 0 ⇔ N_i >= 0 and channel <= max ⇔ y N_i − 4 max v' <= 0 (v' > 0).
+    const UvPrime n = xyz_to_uv_prime(m_white);
+    const double max = m_gamut.max();
+    double limit = 1.0;
+    for (int i = 0; i < 3; ++i) {
+        const Vec3& m = m_xyz_to_rgb[i];
+        const auto numerator = [&](double u, double v) {
+            return 9.0 * m[0] * u + 4.0 * m[1] * v + m[2] * (12.0 - 3.0 * u - 20.0 * v);
+        };
+        const double n0 = numerator(n.u, n.v);
+        const double n1 = numerator(n.u + du, n.v + dv);
+        // Lower face: n0 + s (n1 − n0) >= 0.
+        if (n1 < 0.0 && n0 > 0.0) limit = std::min(limit, n0 / (n0 - n1));
+        // Upper face: g(s) = y N(s) − 4 max v'(s) <= 0.
+        const double g0 = y * n0 - 4.0 * max * n.v;
+        const double g1 = y * n1 - 4.0 * max * (n.v + dv);
+        if (g1 > 0.0 && g0 < 0.0) limit = std::min(limit, g0 / (g0 - g1));
+    }
+    return std::max(limit, 0.0);
+}
+
+Rgb GamutClipper::luv_lightness_hue(const Rgb& c) const noexcept {
+    const Vec3 x = m_rgb_to_xyz * v3(c);
+    const double y = x[1];
+    if (!(y > 0.0)) return {0.0, 0.0, 0.0};
+    if (!(y < m_white.Y)) return {m_gamut.max(), m_gamut.max(), m_gamut.max()};
+    const double d = x[0] + 15.0 * x[1] + 3.0 * x[2];
+    if (!(d > 0.0)) return smits(c);  // no chromaticity: fall back to the thesis' clip
+    const UvPrime n = xyz_to_uv_prime(m_white);
+    const UvPrime uv{4.0 * x[0] / d, 9.0 * x[1] / d};
+    const double s = luv_chroma_limit(y, uv.u - n.u, uv.v - n.v);
+    const double u = n.u + s * (uv.u - n.u), v = n.v + s * (uv.v - n.v);
+    const Vec3 out{9.0 * y * u / (4.0 * v), y, y * (12.0 - 3.0 * u - 20.0 * v) / (4.0 * v)};
+    return rgb(m_xyz_to_rgb * out);
+}
+
+Rgb GamutClipper::luv_hue(const Rgb& c) const noexcept {
+    const Vec3 x = m_rgb_to_xyz * v3(c);
+    const Luv luv = xyz_to_luv({x[0], x[1], x[2]}, m_white);
+    const double c0 = std::hypot(luv.u, luv.v);
+    const double l_max = 100.0;  // L* of the white (max, max, max), the reference
+    if (!(c0 > 1e-12)) return luv_lightness_hue(c);  // no hue: the grey, or black / white
+    const double du = luv.u / c0, dv = luv.v / c0;
+    // The largest in-gamut chroma at lightness L along this hue: s of the chromaticity line
+    // scaled back to chroma, C = 13 L s / |(Δu', Δv')| with (Δu', Δv') = (du, dv) / (13 L).
+    const auto c_max = [&](double L) {
+        if (!(L > 0.0) || !(L < l_max)) return 0.0;
+        const double y = m_white.Y * cie_lightness_to_relative_luminance(L);
+        const double scale = 1.0 / (13.0 * L);  // chroma 1 → chromaticity offset
+        // luv_chroma_limit works on s ∈ [0, 1] of a given offset: use the offset of chroma c0.
+        return c0 * luv_chroma_limit(y, du * c0 * scale, dv * c0 * scale);
+    };
+    const auto distance2 = [&](double L) {
+        const double cm = std::min(c0, c_max(L));
+        return (L - luv.L) * (L - luv.L) + (c0 - cm) * (c0 - cm);
+    };
+    // Dense search over L in [0, 100], then golden-section refinement around the best sample.
+    constexpr int samples = 200;
+    double best_l = 0.0, best = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= samples; ++k) {
+        const double L = l_max * k / samples;
+        const double d2 = distance2(L);
+        if (d2 < best) {
+            best = d2;
+            best_l = L;
+        }
+    }
+    double lo = std::max(0.0, best_l - l_max / samples), hi = std::min(l_max, best_l + l_max / samples);
+    constexpr double golden = 0.6180339887498949;
+    double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+    double fa = distance2(a), fb = distance2(b);
+    for (int it = 0; it < 60; ++it) {
+        if (fa < fb) {
+            hi = b;
+            b = a;
+            fb = fa;
+            a = hi - golden * (hi - lo);
+            fa = distance2(a);
+        } else {
+            lo = a;
+            a = b;
+            fa = fb;
+            b = lo + golden * (hi - lo);
+            fb = distance2(b);
+        }
+    }
+    const double L = distance2(0.5 * (lo + hi)) < best ? 0.5 * (lo + hi) : best_l;
+    const double C = std::min(c0, c_max(L));
+    return rgb(m_xyz_to_rgb * [&] {
+        const Xyz out = luv_to_xyz({L, C * du, C * dv}, m_white);
+        return Vec3{out.X, out.Y, out.Z};
+    }());
+}
+
+// --- Oklab methods ---------------------------------------------------------------------------
+
+Rgb GamutClipper::css(const Rgb& origin) const noexcept {
+    // CSS Color Module Level 4, §13.2.2 "Binary Search Gamut Mapping with Local MINDE", steps
+    // as the specification writes them; "white" and "black" are the gamut's extremes.
+    const double max = m_gamut.max();
+    const Oklab lab = to_oklab(origin);
+    if (lab.L >= m_white_oklab_l) return {max, max, max};
+    if (lab.L <= 0.0) return {0.0, 0.0, 0.0};
+    if (m_gamut.contains(origin)) return origin;
+    const Oklch origin_lch = oklab_to_oklch(lab);
+    Oklch current = origin_lch;
+    const auto delta = [&](const Rgb& clipped, const Oklch& cur) {
+        return delta_e_ok(to_oklab(clipped), oklch_to_oklab(cur));
+    };
+    Rgb clipped = clamp(from_oklab(oklch_to_oklab(current)));
+    double e = delta(clipped, current);
+    if (e < css_jnd) return clipped;
+    double lo = 0.0, hi = origin_lch.C;
+    bool lo_in_gamut = true;
+    while (hi - lo > css_epsilon) {
+        const double chroma = 0.5 * (lo + hi);
+        current.C = chroma;
+        const Rgb candidate = from_oklab(oklch_to_oklab(current));
+        if (lo_in_gamut && m_gamut.contains(candidate)) {
+            lo = chroma;
+            continue;
+        }
+        clipped = clamp(candidate);
+        e = delta(clipped, current);
+        if (e < css_jnd) {
+            if (css_jnd - e < css_epsilon) return clipped;
+            lo_in_gamut = false;
+            lo = chroma;
+        } else {
+            hi = chroma;
+        }
+    }
+    return clipped;
+}
+
+Rgb GamutClipper::oklab(const Rgb& c) const noexcept {
+    const double max = m_gamut.max();
+    const Oklab lab = to_oklab(c);
+    if (!(lab.L > 0.0)) return {0.0, 0.0, 0.0};
+    if (!(lab.L < m_white_oklab_l)) return {max, max, max};
+    // Along (L, s a, s b) the cube roots of LMS are linear in s, so each channel is a cubic in s:
+    // channel_i(s) = Σ_j M_ij (p_j + s q_j)³. Find the smallest s in [0, 1] where a channel
+    // reaches 0 or max.
+    const Vec3 p = oklab_m2_inverse * Vec3{lab.L, 0.0, 0.0};
+    const Vec3 q = oklab_m2_inverse * Vec3{0.0, lab.a, lab.b};
+    double s = 1.0;
+    for (int i = 0; i < 3; ++i) {
+        std::array<double, 4> poly{};
+        for (int j = 0; j < 3; ++j) {
+            const double m = m_lms_to_rgb[i][j];
+            poly[0] += m * p[j] * p[j] * p[j];
+            poly[1] += m * 3.0 * p[j] * p[j] * q[j];
+            poly[2] += m * 3.0 * p[j] * q[j] * q[j];
+            poly[3] += m * q[j] * q[j] * q[j];
+        }
+        s = std::min(s, smallest_root_in_unit_interval(poly));
+        poly[0] -= max;
+        s = std::min(s, smallest_root_in_unit_interval(poly));
+    }
+    return from_oklab({lab.L, s * lab.a, s * lab.b});
+}
+
+Rgb GamutClipper::smits_corrected(const Rgb& c) const noexcept {
+    const Rgb p = smits(c);
+    const Oklch target = oklab_to_oklch(to_oklab(c));
+    const Oklch now = oklab_to_oklch(to_oklab(p));
+    if (target.C < 1e-9 || now.C < 1e-9) return p;
+    const double max = m_gamut.max();
+    const Vec3& lum = m_gamut.luminance_row();
+    const std::array<double, 3> v{p.r, p.g, p.b};
+    const double tol = 1e-12 * max;
+    Rgb best = p;
+    double best_error = std::abs(hue_difference(now.h, target.h));
+    // On each face the point lies on, the direction that keeps both the face (its channel) and
+    // the luminance: d = e_k × (A, B, C). One Newton step on the Oklab hue along it.
+    for (int k = 0; k < 3; ++k) {
+        if (!(std::abs(v[k]) <= tol || std::abs(v[k] - max) <= tol)) continue;
+        Vec3 d{};
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        d[i] = lum[j];
+        d[j] = -lum[i];
+        const double norm = std::hypot(d[i], d[j]);
+        if (!(norm > 0.0)) continue;
+        const double h = 1e-6 * max / norm;
+        const Rgb forward{p.r + h * d[0], p.g + h * d[1], p.b + h * d[2]};
+        const Rgb backward{p.r - h * d[0], p.g - h * d[1], p.b - h * d[2]};
+        const double slope = hue_difference(oklab_to_oklch(to_oklab(backward)).h,
+                                            oklab_to_oklch(to_oklab(forward)).h) / (2.0 * h);
+        if (!(std::abs(slope) > 0.0) || !std::isfinite(slope)) continue;
+        const double tau = hue_difference(now.h, target.h) / slope;
+        Rgb moved{p.r + tau * d[0], p.g + tau * d[1], p.b + tau * d[2]};
+        // Leaving the face's edge: bring it back along constant luminance (the thesis' clip).
+        if (!m_gamut.contains(moved)) moved = smits(moved);
+        const double error = std::abs(hue_difference(oklab_to_oklch(to_oklab(moved)).h, target.h));
+        if (error < best_error) {
+            best_error = error;
+            best = moved;
+        }
+    }
+    return best;
+}
+
+// --- Table 1 ---------------------------------------------------------------------------------
+
+namespace {
+
+/// A double that counts the operations done on it (Table 1's comparisons, additions and
+/// subtractions, multiplications, divisions).
+struct Counted {
+    double v = 0.0;
+    static OperationCounts& counts() {
+        thread_local OperationCounts c;
+        return c;
+    }
+    Counted() = default;
+    explicit Counted(double x) : v(x) {}
+    friend Counted operator+(Counted a, Counted b) { ++counts().additions; return Counted(a.v + b.v); }
+    friend Counted operator-(Counted a, Counted b) { ++counts().additions; return Counted(a.v - b.v); }
+    friend Counted operator*(Counted a, Counted b) { ++counts().multiplications; return Counted(a.v * b.v); }
+    friend Counted operator/(Counted a, Counted b) { ++counts().divisions; return Counted(a.v / b.v); }
+    friend bool operator<(Counted a, Counted b) { ++counts().comparisons; return a.v < b.v; }
+    friend bool operator>(Counted a, Counted b) { ++counts().comparisons; return a.v > b.v; }
+};
+
+OperationCounts count_one(const Rgb& c) {
+    const Vec3& lum = srgb().to_xyz_matrix()[1];
+    const std::array<Counted, 3> l{Counted(lum[0]), Counted(lum[1]), Counted(lum[2])};
+    const Counted inv(1.0 / (lum[0] + lum[1] + lum[2]));  // precomputed once per gamut
+    Counted::counts() = {};
+    (void)smits_clip_rgb<Counted>({Counted(c.r), Counted(c.g), Counted(c.b)}, l, inv, Counted(1.0));
+    return Counted::counts();
+}
+
+}  // namespace
+
+Table1 count_smits_operations() {
+    // Representative sRGB colours: inside; above 1 in red only; red above 1 and green below 0;
+    // all three channels out of range (their grey lies inside, so every plane is tested).
+    return {count_one({0.5, 0.4, 0.3}), count_one({1.3, 0.5, 0.4}), count_one({1.3, -0.2, 0.4}),
+            count_one({1.3, -0.2, -0.1})};
+}
+
+}  // namespace irid
