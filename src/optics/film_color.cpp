@@ -78,35 +78,43 @@ DenseSpectrum exact_reflectance_spectrum(const FilmStack& stack, double angle_ra
         [&](double lambda) { return stack.evaluate(lambda, angle_rad, polarization).R; });
 }
 
-PreparedFilm::Sample PreparedFilm::prepare(const SingleFilm& film, double sin_theta, double cos_theta0,
-                                           int i, bool& degenerate) noexcept {
+PreparedFilm::Sample PreparedFilm::prepare(const SingleFilm& film, double cos_theta0, int i,
+                                           bool& degenerate) noexcept {
     constexpr std::complex<double> two_i{0.0, 2.0};
     const double lambda = DenseSpectrum::wavelength_nm(i);
-    const double n0 = film.ambient.index(lambda).real();
+    const double a = film.ambient.index(lambda).real();
     const Complex n1 = film.film.index(lambda);
     const Complex n2 = film.substrate.index(lambda);
-    const double s = n0 * sin_theta;  // Snell invariant
+    const double q0 = a * cos_theta0;
     const double phase_scale = 2.0 * std::numbers::pi / lambda;
-    degenerate = false;
-    if (n1.imag() == 0.0 && n2.imag() == 0.0 && n1.real() > s && n2.real() > s) {
-        // Lossless film and substrate, no total reflection: every q = N cos θ is real and the
-        // Fresnel amplitudes are r_s = (q_i − q_t)/(q_i + q_t) and, as the ratio of tangential
-        // fields, r_p = (N_i² q_t − N_t² q_i)/(N_i² q_t + N_t² q_i) (Born & Wolf §1.5.2; the
-        // sign convention cancels in |r|²).
-        const double a = n0, b = n1.real(), c = n2.real();
-        const double q0 = a * cos_theta0;
-        const double q1 = std::sqrt((b - s) * (b + s));
-        const double q2 = std::sqrt((c - s) * (c + s));
-        return {(q0 - q1) / (q0 + q1), (q1 - q2) / (q1 + q2),
-                (a * a * q1 - b * b * q0) / (a * a * q1 + b * b * q0),
-                (b * b * q2 - c * c * q1) / (b * b * q2 + c * c * q1), two_i * (phase_scale * q1),
+    // q = N cos θ = sqrt((N − n0)(N + n0) + q0²): N² − n0² sin²θ0 written so that it keeps q0's
+    // precision near grazing incidence.
+    const auto q_of = [&](Complex n) {
+        Complex q = std::sqrt((n - a) * (n + a) + q0 * q0);
+        if (q.imag() < 0.0 || (q.imag() == 0.0 && q.real() < 0.0)) q = -q;
+        return q;
+    };
+    const Complex q1 = q_of(n1);
+    const Complex q2 = q_of(n2);
+    // Near the film's own critical angle (q1 → 0) both faces reflect totally and the Airy sum
+    // becomes a ratio of vanishing quantities that rounding ruins: the transfer matrix (with its
+    // sinc) is evaluated there instead.
+    degenerate = std::abs(q1) < 1e-3 * std::abs(n1);
+    if (n1.imag() == 0.0 && n2.imag() == 0.0 && q1.imag() == 0.0 && q2.imag() == 0.0) {
+        // Lossless film and substrate, no total reflection: every q is real and the Fresnel
+        // amplitudes are r_s = (q_i − q_t)/(q_i + q_t) and, as the ratio of tangential fields,
+        // r_p = (N_i² q_t − N_t² q_i)/(N_i² q_t + N_t² q_i) (Born & Wolf §1.5.2; the sign
+        // convention cancels in |r|²).
+        const double b = n1.real(), c = n2.real(), p1 = q1.real(), p2 = q2.real();
+        return {(q0 - p1) / (q0 + p1), (p1 - p2) / (p1 + p2),
+                (a * a * p1 - b * b * q0) / (a * a * p1 + b * b * q0),
+                (b * b * p2 - c * c * p1) / (b * b * p2 + c * c * p1), two_i * (phase_scale * p1),
                 true};
     }
-    const Complex q1 = n1 * cos_theta(n1, s);
-    degenerate = std::abs(q1) < 1e-12;
-    const FresnelCoefficients f01 = fresnel(n0, n1, s);
-    const FresnelCoefficients f12 = fresnel(n1, n2, s);
-    return {f01.r_s, f12.r_s, f01.r_p, f12.r_p, two_i * phase_scale * q1, false};
+    // The same amplitudes in complex form (absorbing media, evanescent waves).
+    const Complex a2(a * a, 0.0), b2 = n1 * n1, c2 = n2 * n2;
+    return {(q0 - q1) / (q0 + q1), (q1 - q2) / (q1 + q2), (a2 * q1 - b2 * q0) / (a2 * q1 + b2 * q0),
+            (b2 * q2 - c2 * q1) / (b2 * q2 + c2 * q1), two_i * phase_scale * q1, false};
 }
 
 double PreparedFilm::airy_reflectance(const Sample& s, double thickness_nm) noexcept {
@@ -139,7 +147,9 @@ void check_film_angle(const SingleFilm& film, double angle_rad) {
 /// The exact film at a wavelength where the Airy sum is 0/0: by the transfer matrix.
 double stack_reflectance(const SingleFilm& film, double thickness_nm, double lambda_nm,
                          double angle_rad) {
-    const FilmStack stack(film.ambient, {Layer{film.film, thickness_nm}}, film.substrate);
+    // Thickness is a precondition (>= 0) of the noexcept callers; never throw from here.
+    const double t = std::isfinite(thickness_nm) ? std::max(thickness_nm, 0.0) : 0.0;
+    const FilmStack stack(film.ambient, {Layer{film.film, t}}, film.substrate);
     return stack.evaluate(lambda_nm, angle_rad, Polarization::unpolarized).R;
 }
 
@@ -148,11 +158,10 @@ double stack_reflectance(const SingleFilm& film, double thickness_nm, double lam
 PreparedFilm::PreparedFilm(const SingleFilm& film, double angle_rad)
     : m_samples(dense_sample_count), m_film(film), m_angle_rad(angle_rad) {
     check_film_angle(film, angle_rad);
-    const double sin_theta = std::sin(angle_rad);
     const double cos_theta0 = std::cos(angle_rad);
     for (int i = 0; i < dense_sample_count; ++i) {
         bool degenerate = false;
-        m_samples[i] = prepare(film, sin_theta, cos_theta0, i, degenerate);
+        m_samples[i] = prepare(film, cos_theta0, i, degenerate);
         if (degenerate) m_degenerate.push_back(i);
     }
 }
@@ -219,7 +228,7 @@ FilmColorTable::Range FilmColorTable::check_range(double min_nm, double max_nm, 
     if (!(std::isfinite(step_nm) && step_nm > 0.0)) {
         throw Error("colour table: thickness step " + format_shortest(step_nm) + " nm must be > 0");
     }
-    const double intervals = std::ceil((max_nm - min_nm) / step_nm - 1e-9);
+    const double intervals = std::max(1.0, std::ceil((max_nm - min_nm) / step_nm - 1e-9));
     if (intervals + 1.0 > max_table_entries) {
         throw Error("colour table: " + format_shortest(intervals + 1.0) +
                     " entries is more than the limit of 1e7; use a larger step");
@@ -256,7 +265,7 @@ FilmColorTable2D::Grid FilmColorTable2D::check(double max_thickness_nm, double t
         throw Error("colour table: thickness step " + format_shortest(thickness_step_nm) +
                     " nm must be > 0");
     }
-    const double intervals = std::ceil(max_thickness_nm / thickness_step_nm - 1e-9);
+    const double intervals = std::max(1.0, std::ceil(max_thickness_nm / thickness_step_nm - 1e-9));
     if (intervals + 1.0 > max_table_entries) {
         throw Error("colour table: more than 1e7 entries; use larger steps");
     }
@@ -315,12 +324,11 @@ FilmColor exact_film_color(const SingleFilm& film, double thickness_nm, double a
     // One pass: prepare each wavelength and sum its Airy reflectance at once, with no table and
     // no copy of the materials; the same numbers as PreparedFilm.
     check_film_angle(film, angle_rad);
-    const double sin_theta = std::sin(angle_rad);
     const double cos_theta0 = std::cos(angle_rad);
     const Xyz xyz = colorimeter.xyz_of([&](double lambda) {
         const int i = static_cast<int>(lambda) - lambda_min_nm;
         bool degenerate = false;
-        const PreparedFilm::Sample s = PreparedFilm::prepare(film, sin_theta, cos_theta0, i, degenerate);
+        const PreparedFilm::Sample s = PreparedFilm::prepare(film, cos_theta0, i, degenerate);
         return degenerate ? stack_reflectance(film, thickness_nm, lambda, angle_rad)
                           : PreparedFilm::airy_reflectance(s, thickness_nm);
     });

@@ -109,14 +109,21 @@ std::string material_label(std::string_view name) {
 }
 
 /// Throws unless n > 0 and k >= 0, both finite. `where` names the material, sample or line.
+/// Bounds that keep every product in the optics finite in double precision (N² and N⁴ of the
+/// p admittances): far beyond any material (n of optical materials lies in about 0.05-5, k of
+/// metals below about 20 in the visible).
+inline constexpr double min_index_n = 1e-6;
+inline constexpr double max_index_n = 1e6;
+inline constexpr double max_index_k = 1e6;
+
 void check_index(const std::string& where, double n, double k) {
-    if (!std::isfinite(n) || !(n > 0.0)) {
+    if (!std::isfinite(n) || !(n >= min_index_n && n <= max_index_n)) {
         throw Error(where + ": refractive index n " + format_shortest(n) +
-                    " must be finite and > 0");
+                    " must be > 0 and in [1e-6, 1e6]");
     }
-    if (!std::isfinite(k) || !(k >= 0.0)) {
+    if (!std::isfinite(k) || !(k >= 0.0 && k <= max_index_k)) {
         throw Error(where + ": extinction coefficient k " + format_shortest(k) +
-                    " must be finite and >= 0 (N = n + ik, k > 0 absorbs)");
+                    " must be >= 0 and <= 1e6 (N = n + ik, k > 0 absorbs)");
     }
 }
 

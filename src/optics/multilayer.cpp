@@ -2,6 +2,7 @@
 #include <irid/error.h>
 #include <irid/optics/multilayer.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <numbers>
@@ -32,6 +33,20 @@ Complex normal_index(Complex n, double snell_invariant) noexcept {
     if (q.imag() < 0.0 || (q.imag() == 0.0 && q.real() < 0.0)) q = -q;
     return q;
 }
+
+/// The same q in a stack lit from a lossless ambient n0 at cos θ0, written as
+/// sqrt((N − n0)(N + n0) + q0²) with q0 = n0 cos θ0: equal to sqrt(N² − n0² sin²θ0), but it
+/// keeps q0's precision near grazing incidence, where sin θ0 rounds to 1 and N² − s² would lose
+/// every digit (an air film in air must stay invisible at 89.9999999°).
+Complex normal_index_from(Complex n, double n0, double q0) noexcept {
+    Complex q = std::sqrt((n - n0) * (n + n0) + q0 * q0);
+    if (q.imag() < 0.0 || (q.imag() == 0.0 && q.real() < 0.0)) q = -q;
+    return q;
+}
+
+/// Above this |B| + |C| the characteristic product is rescaled (r is a ratio and does not
+/// change); what is transmitted is then below e^-230 of the incident power and is taken as 0.
+inline constexpr double rescale_limit = 1e100;
 
 /// The tilted admittance η = num / den of a medium (Macleod ch. 2): s: η = N cos θ = q / 1;
 /// p: η = N / cos θ = N² / q. Kept as a fraction because the p admittance is infinite where
@@ -130,11 +145,11 @@ Optics airy_film(double n0, Complex n1, Complex n2, double thickness_nm, double 
         return mean(airy_film(n0, n1, n2, thickness_nm, lambda_nm, angle_rad, Polarization::s),
                     airy_film(n0, n1, n2, thickness_nm, lambda_nm, angle_rad, Polarization::p));
     }
-    const double s = n0 * std::sin(angle_rad);
-    const Complex q1 = normal_index(n1, s);
-    const Admittance y0 = admittance(n0, n0 * std::cos(angle_rad), polarization);
+    const double q0 = n0 * std::cos(angle_rad);
+    const Complex q1 = normal_index_from(n1, n0, q0);
+    const Admittance y0 = admittance(n0, q0, polarization);
     const Admittance y1 = admittance(n1, q1, polarization);
-    const Admittance y2 = admittance(n2, normal_index(n2, s), polarization);
+    const Admittance y2 = admittance(n2, normal_index_from(n2, n0, q0), polarization);
 
     // One pass through the film multiplies the field by e^{iβ}; the internal reflections form a
     // geometric series in r10 r12 e^{2iβ} = -r01 r12 e^{2iβ} (Born & Wolf §7.6.1).
@@ -178,10 +193,10 @@ Optics FilmStack::evaluate(double lambda_nm, double angle_rad,
     }
     assert(lambda_nm > 0.0 && angle_rad >= 0.0 && angle_rad < std::numbers::pi / 2.0);
     const double n0 = m_ambient.index(lambda_nm).real();
-    const double s = n0 * std::sin(angle_rad);
-    const Admittance y0 = admittance(n0, n0 * std::cos(angle_rad), polarization);
+    const double q0 = n0 * std::cos(angle_rad);
+    const Admittance y0 = admittance(n0, q0, polarization);
     const Complex ns = m_substrate.index(lambda_nm);
-    const Admittance ys = admittance(ns, normal_index(ns, s), polarization);
+    const Admittance ys = admittance(ns, normal_index_from(ns, n0, q0), polarization);
 
     // (B, C) = M_1 ... M_L (1, η_s), scaled by η_s's denominator, which leaves r unchanged and
     // is undone in T by flux_into. Built from the substrate up.
@@ -190,7 +205,7 @@ Optics FilmStack::evaluate(double lambda_nm, double angle_rad,
     bool transmits = true;
     for (auto layer = m_layers.rbegin(); layer != m_layers.rend(); ++layer) {
         const Complex n = layer->material.index(lambda_nm);
-        const Complex q = normal_index(n, s);
+        const Complex q = normal_index_from(n, n0, q0);
         const double phase_per_q = 2.0 * std::numbers::pi * layer->thickness_nm / lambda_nm;
         if ((phase_per_q * q).imag() > opaque_layer_phase_imag) {
             const Admittance y = admittance(n, q, polarization);
@@ -200,14 +215,22 @@ Optics FilmStack::evaluate(double lambda_nm, double angle_rad,
             continue;
         }
         apply_layer(n, q, phase_per_q, polarization, b, c);
+        // Many absorbing or tunnelling layers together grow (B, C) as e^(Σ Im δ).
+        if (std::abs(b) + std::abs(c) > rescale_limit) {
+            b /= rescale_limit;
+            c /= rescale_limit;
+            transmits = false;
+        }
     }
 
     const double eta0 = (y0.num / y0.den).real();
     const Complex sum = eta0 * b + c;
-    const double reflectance = std::norm((eta0 * b - c) / sum);
+    // |r| <= 1 and T <= 1 physically; rounding may step past 1 under total reflection.
+    const double reflectance = std::min(1.0, std::norm((eta0 * b - c) / sum));
     // T = 4 η0 Re(η_s) / |η0 B + C|²: the substrate receives the field 2 η0 / (η0 B + C), over
     // the η0 of the unit incident field.
-    const double transmittance = transmits ? flux_into(ys, 2.0 * eta0 / sum) / eta0 : 0.0;
+    const double transmittance =
+        transmits ? std::clamp(flux_into(ys, 2.0 * eta0 / sum) / eta0, 0.0, 1.0) : 0.0;
     return {reflectance, transmittance};
 }
 

@@ -24,7 +24,8 @@ int run_film(const FilmCommand& c) {
     const Film film = parse_film(c.args, true);
     // Every option is checked, whether or not this run uses it.
     const Colorimeter colorimeter = parse_colorimeter(c.args);
-    const Range range = parse_range(c.args.wavelengths, "--wavelengths", 1.0, 1e5, 1000000);
+    // The dispersion fits (water, silica) and the metal tables hold over about 200-2000 nm.
+    const Range range = parse_range(c.args.wavelengths, "--wavelengths", 200.0, 2000.0, 1000000);
     std::string out;
     if (c.color) {
         const FilmColor fc = film.color(colorimeter, film.angle_rad);
@@ -54,7 +55,9 @@ void add_film_command(CLI::App& app, Runner& runner) {
         "film", "Reflectance spectrum (CSV) or colour of a thin film or stack: the exact optics or "
                 "the thesis' models");
     add_film_options(*cmd, command->args, true);
-    cmd->add_option("--wavelengths", command->args.wavelengths, "START:END:STEP in nm")
+    cmd->add_option("--wavelengths", command->args.wavelengths,
+                    "START:END:STEP in nm, within 200-2000 (T is the power entering the substrate: "
+                    "what it absorbs, when it absorbs)")
         ->capture_default_str();
     cmd->add_flag("--color", command->color,
                   "Print the colour (X,Y,Z,x,y,L,a,b,R_linear,G_linear,B_linear) instead of the spectrum");

@@ -9,6 +9,8 @@
 
 #include <fmt/core.h>
 
+#include <charconv>
+
 namespace irid::cli {
 namespace {
 
@@ -49,14 +51,12 @@ int run_film_error(const FilmErrorCommand& c) {
     if (angles.end >= 90.0) throw UsageError("--angles: END must be < 90 degrees");
     ErrorStudyOptions options{thickness.end, thickness.step, angles.end, angles.step, std::nullopt};
     if (c.k != "matched") {
-        try {
-            options.k = std::stod(c.k);
-        } catch (const std::exception&) {
+        double k = 0.0;
+        const auto [end, ec] = std::from_chars(c.k.data(), c.k.data() + c.k.size(), k);
+        if (ec != std::errc() || end != c.k.data() + c.k.size() || !(k > 0.0 && std::isfinite(k))) {
             throw UsageError("--K '" + c.k + "' must be 'matched' or a number > 0");
         }
-        if (!(*options.k > 0.0 && std::isfinite(*options.k))) {
-            throw UsageError("--K '" + c.k + "' must be 'matched' or a number > 0");
-        }
+        options.k = k;
     }
     const Material air = *find_material("air");
     const Material water = *find_material("water");

@@ -122,7 +122,10 @@ void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) 
     cmd.add_option("--d1", a.d1_nm, "Morpho: path in air per period d1 [nm]")->capture_default_str();
     cmd.add_option("--d2", a.d2_nm, "Morpho: chitin mullion thickness d2 [nm]")->capture_default_str();
     cmd.add_option("--n", a.n, "Morpho: index of chitin (>= 1)")->capture_default_str();
-    cmd.add_flag("--blend", a.blend, "Morpho: average over mullion spacings d1 = 50..150 nm (thesis §3.7)");
+    cmd.add_flag("--blend", a.blend, "Morpho: average over thicknesses 50..150 nm (thesis §3.7)");
+    cmd.add_option("--blend-vary", a.blend_vary,
+                   "Morpho blend: d1 (the spacing; keeps the wing blue as in Figure 9) or d2 (the chitin)")
+        ->capture_default_str();
     cmd.add_option("--illuminant", a.illuminant, "D65, D50, A, E, D<CCT>, blackbody:<T>")
         ->capture_default_str();
     cmd.add_option("--observer", a.observer, "cie1931 or cie1964")->capture_default_str();
@@ -174,15 +177,16 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
     };
     switch (f.model) {
         case FilmModel::exact:
-            refuse({"--phase-change", "--no-phase-change", "--K", "--periods", "--d1", "--d2", "--n", "--blend"});
+            refuse({"--phase-change", "--no-phase-change", "--K", "--periods", "--d1", "--d2", "--n", "--blend",
+                    "--blend-vary"});
             break;
         case FilmModel::thesis:
-            refuse({"--polarization", "--periods", "--d1", "--d2", "--n", "--blend"});
+            refuse({"--polarization", "--periods", "--d1", "--d2", "--n", "--blend", "--blend-vary"});
             break;
         case FilmModel::thesis_multilayer:
             // Eq. 26 assumes air around the films.
             refuse({"--ambient", "--substrate", "--polarization", "--phase-change", "--no-phase-change",
-                    "--d1", "--d2", "--n", "--blend"});
+                    "--d1", "--d2", "--n", "--blend", "--blend-vary"});
             break;
         case FilmModel::morpho:
             refuse({"--ambient", "--substrate", "--polarization", "--phase-change", "--no-phase-change",
@@ -229,7 +233,14 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
             } catch (const Error& e) {
                 throw UsageError(e.what());
             }
-            if (a.blend) f.blend = MorphoBlend{};
+            if (a.blend_vary != "d1" && a.blend_vary != "d2") {
+                throw UsageError("--blend-vary '" + a.blend_vary + "' is unknown; valid: d1, d2");
+            }
+            if (given("--blend-vary") && !a.blend) throw UsageError("--blend-vary needs --blend");
+            if (a.blend) {
+                f.blend = MorphoBlend{};
+                f.blend->varies = a.blend_vary == "d2" ? MorphoBlendThickness::d2 : MorphoBlendThickness::d1;
+            }
             break;
     }
     return f;

@@ -41,6 +41,7 @@ struct FilmArguments {
     int periods = 12;
     double d1_nm = 150.0, d2_nm = 50.0, n = 1.56;
     bool blend = false;
+    std::string blend_vary = "d1";
     std::string illuminant = "D65";
     std::string observer = "cie1931";
     std::string rgb = "srgb";

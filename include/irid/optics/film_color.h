@@ -90,7 +90,8 @@ public:
     /// Throws irid::Error for an angle outside [0, π/2) or an absorbing ambient.
     PreparedFilm(const SingleFilm& film, double angle_rad);
 
-    /// Reflectance at the i-th wavelength of the 1 nm grid (360 + i nm).
+    /// Reflectance at the i-th wavelength of the 1 nm grid (360 + i nm). Precondition for this
+    /// and the two below: thickness_nm finite and >= 0.
     [[nodiscard]] double reflectance(int i, double thickness_nm) const noexcept;
     [[nodiscard]] DenseSpectrum reflectance_spectrum(double thickness_nm) const;
     [[nodiscard]] FilmColor color(double thickness_nm, const Colorimeter& colorimeter) const noexcept;
@@ -104,10 +105,10 @@ public:
         /// then R = (r01² + r12² + 2 r01 r12 cos φ) / (1 + r01² r12² + 2 r01 r12 cos φ).
         bool real;
     };
-    /// The amplitudes and phase at the i-th wavelength; `degenerate` when the film is exactly at
-    /// its own critical angle there (the Airy sum is 0/0; use the transfer matrix).
-    static Sample prepare(const SingleFilm& film, double sin_theta, double cos_theta, int i,
-                          bool& degenerate) noexcept;
+    /// The amplitudes and phase at the i-th wavelength for an angle of incidence of cosine
+    /// cos_theta in the ambient; `degenerate` when the film is within |N1 cos θ1| < 1e-3 |N1| of
+    /// its own critical angle there, where the Airy sum loses its digits (use the transfer matrix).
+    static Sample prepare(const SingleFilm& film, double cos_theta, int i, bool& degenerate) noexcept;
     /// The unpolarised Airy reflectance of a prepared sample at a thickness (not for degenerate
     /// samples).
     static double airy_reflectance(const Sample& s, double thickness_nm) noexcept;
