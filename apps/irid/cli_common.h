@@ -35,6 +35,8 @@ void add_delta_e_command(CLI::App& app, Runner& runner);
 void add_film_command(CLI::App& app, Runner& runner);
 void add_film_table_command(CLI::App& app, Runner& runner);
 void add_film_error_command(CLI::App& app, Runner& runner);
+void add_clip_command(CLI::App& app, Runner& runner);
+void add_clip_report_command(CLI::App& app, Runner& runner);
 
 /// Reads all of standard input as a numeric CSV table (source name "<stdin>").
 [[nodiscard]] NumericTable read_stdin_table(int columns, int min_columns = 1);

@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
     add_film_command(app, runner);
     add_film_table_command(app, runner);
     add_film_error_command(app, runner);
+    add_clip_command(app, runner);
+    add_clip_report_command(app, runner);
 
     // CLI11 reports an unknown command word as a missing subcommand; name it instead.
     if (argc > 1 && argv[1][0] != '-') {

@@ -266,6 +266,9 @@ Rgb GamutClipper::luv_lightness_hue(const Rgb& c) const noexcept {
 
 Rgb GamutClipper::luv_hue(const Rgb& c) const noexcept {
     const Vec3 x = m_rgb_to_xyz * v3(c);
+    // The rule of every method: no luminance is black, the white's or more is white.
+    if (!(x[1] > 0.0)) return {0.0, 0.0, 0.0};
+    if (!(x[1] < m_white.Y)) return {m_gamut.max(), m_gamut.max(), m_gamut.max()};
     const Luv luv = xyz_to_luv({x[0], x[1], x[2]}, m_white);
     const double c0 = std::hypot(luv.u, luv.v);
     const double l_max = 100.0;  // L* of the white (max, max, max), the reference

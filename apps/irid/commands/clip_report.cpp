@@ -1,0 +1,77 @@
+// irid clip-report [--set spectrum|interference|rec2020|all] [--to SPACE]
+//
+// Every clipping method on a set of colours: ΔE2000, hue shift (CIELAB and Oklab), |ΔY|, chroma
+// kept and colours per second measured in this run, as Markdown tables (one per set, and for
+// --set all one more over the union). The definitions are in include/irid/gamut/report.h and
+// docs/GAMUT.md. SPACE is an RGB space, encoded or linear (the gamut is its linear cube [0, 1]³).
+#include "../cli_common.h"
+
+#include <irid/color/rgb.h>
+#include <irid/error.h>
+#include <irid/gamut/clip.h>
+#include <irid/gamut/report.h>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace irid::cli {
+namespace {
+
+struct ClipReportCommand {
+    std::string set = "all";
+    std::string to = "srgb";
+};
+
+/// An RGB space by its name as `irid convert` writes it: NAME (encoded) or NAME-linear; both
+/// give the same gamut.
+const RgbSpace& parse_destination(const std::string& name) {
+    if (const RgbSpace* s = find_rgb_space(name)) return *s;
+    constexpr std::string_view suffix = "-linear";
+    if (name.size() > suffix.size() && name.ends_with(suffix)) {
+        if (const RgbSpace* s = find_rgb_space(name.substr(0, name.size() - suffix.size()))) return *s;
+    }
+    std::vector<std::string> names;
+    for (const RgbSpace* s : builtin_rgb_spaces()) {
+        names.push_back(s->name());
+        names.push_back(s->name() + "-linear");
+    }
+    throw UsageError("unknown space '" + name + "' for --to (an RGB space); valid names: " + join(names));
+}
+
+int run_clip_report(const ClipReportCommand& c) {
+    std::vector<ClipReportSet> kinds;
+    try {
+        kinds = parse_clip_report_sets(c.set);
+    } catch (const Error& e) {
+        throw UsageError(std::string("--set: ") + e.what());
+    }
+    const RgbSpace& destination = parse_destination(c.to);
+    const Gamut gamut(destination);
+
+    std::vector<ColorSet> sets;
+    for (const ClipReportSet k : kinds) sets.push_back(clip_report_color_set(k, destination));
+    if (sets.size() > 1) sets.push_back(union_color_set(sets, c.set));
+
+    std::string out;
+    for (const ColorSet& set : sets) {
+        if (!out.empty()) out += "\n";
+        out += clip_report_markdown(measure_clip_report(set, gamut));
+    }
+    write_stdout(out);
+    return exit_success;
+}
+
+}  // namespace
+
+void add_clip_report_command(CLI::App& app, Runner& runner) {
+    auto command = std::make_shared<ClipReportCommand>();
+    CLI::App* cmd = app.add_subcommand(
+        "clip-report", "Every gamut-clipping method measured on a set of colours (Markdown tables)");
+    cmd->add_option("--set", command->set, "spectrum, interference, rec2020 or all")->capture_default_str();
+    cmd->add_option("--to", command->to, "Destination RGB space (encoded or -linear): the gamut")
+        ->capture_default_str();
+    cmd->callback([command, &runner] { runner = [command] { return run_clip_report(*command); }; });
+}
+
+}  // namespace irid::cli

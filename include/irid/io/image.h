@@ -1,0 +1,111 @@
+#pragma once
+
+// Images through OpenImageIO: read anything OpenImageIO reads (EXR, TIFF, PNG, HDR, JPEG, ...)
+// into float pixels, write EXR (linear, 32-bit float) or PNG/TIFF (encoded, 8 or 16 bit).
+// Output files appear only when complete (irid/io/atomic_file.h).
+//
+// Values are passed through as they are stored: irid_io converts numbers, never colours.
+// An 8- or 16-bit file (PNG, TIFF, JPEG) holds encoded values (sRGB, a gamma, ...); read_image
+// returns them scaled to [0, 1] and still encoded, and the caller decodes them with the transfer
+// function of the space they are in. write_image likewise expects encoded values in [0, 1] for
+// PNG and TIFF, and linear values for EXR.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace irid::io {
+
+/// An image in memory: float samples, interleaved (pixel by pixel, channel by channel), rows
+/// from the top. Only the first subimage and its data window are read.
+struct Image {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    /// One name per channel ("R", "G", "B", "A", "Z", ...).
+    std::vector<std::string> channel_names;
+    /// width × height × channels samples; sample c of pixel (x, y) is at
+    /// (y × width + x) × channels + c.
+    std::vector<float> pixels;
+    /// The colour space of the values, for example "srgb" or "srgb-linear"; empty when unknown.
+    /// Written as "oiio:ColorSpace" (which PNG keeps) and "irid:ColorSpace" (which EXR keeps;
+    /// OpenImageIO drops "oiio:" attributes from EXR). TIFF keeps neither through OpenImageIO
+    /// 2.4: name the space in the description too. Read from "irid:ColorSpace", else
+    /// "oiio:ColorSpace" (OpenImageIO reports "Linear" for any other EXR, "sRGB" for a PNG with
+    /// an sRGB chunk).
+    std::string color_space;
+    /// A free-text description ("ImageDescription"), empty when none.
+    std::string description;
+    /// How the file read stored its samples: bits per sample (8, 16, 32, ...) and whether they
+    /// are integers, i.e. encoded values (true for 8/16-bit PNG and TIFF, false for EXR and HDR).
+    /// Set by read_image; ignored by write_image.
+    int stored_bits = 32;
+    bool stored_integer = false;
+
+    /// An image of this size with every sample 0. Channel names default to R, G, B, A for up to
+    /// four channels and to "channel<i>" beyond. Throws irid::Error when a dimension is < 1.
+    [[nodiscard]] static Image blank(int width, int height, int channels);
+
+    [[nodiscard]] std::size_t pixel_count() const noexcept {
+        return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    }
+    /// The index of the channel with this exact name, or -1.
+    [[nodiscard]] int channel_index(std::string_view name) const noexcept;
+    [[nodiscard]] float& at(int x, int y, int c) noexcept { return pixels[index(x, y, c)]; }
+    [[nodiscard]] float at(int x, int y, int c) const noexcept { return pixels[index(x, y, c)]; }
+
+private:
+    [[nodiscard]] std::size_t index(int x, int y, int c) const noexcept {
+        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                static_cast<std::size_t>(x)) *
+                   static_cast<std::size_t>(channels) +
+               static_cast<std::size_t>(c);
+    }
+};
+
+/// Reads the first subimage of any file OpenImageIO reads, converted to float (integers scaled
+/// to [0, 1], still encoded: see above). Throws irid::Error naming the file when it does not
+/// exist or cannot be read (unknown format, truncated, a deep or volume image).
+[[nodiscard]] Image read_image(const std::filesystem::path& path);
+
+/// How write_image stores samples in PNG and TIFF.
+struct ImageEncoding {
+    /// 8 or 16 bits per sample in PNG and TIFF (EXR is always 32-bit float).
+    int bits = 8;
+    /// OpenImageIO's "compression" for the format ("zip", "piz", "none", ...); empty for the
+    /// format's default.
+    std::string compression;
+};
+
+/// The formats write_image produces, chosen by the file name's extension (case-insensitive).
+enum class ImageFormat {
+    /// .exr: OpenEXR, 32-bit float, values as given (linear).
+    exr,
+    /// .png: 8 or 16 bit, values in [0, 1] (encoded).
+    png,
+    /// .tif, .tiff: 8 or 16 bit, values in [0, 1] (encoded).
+    tiff,
+};
+
+/// The format for a file name; throws irid::Error naming the file and listing the supported
+/// extensions (.exr, .png, .tif, .tiff) otherwise.
+[[nodiscard]] ImageFormat image_format_for(const std::filesystem::path& path);
+/// True for the 8/16-bit formats (PNG and TIFF), whose values are encoded and in [0, 1].
+[[nodiscard]] constexpr bool is_integer_format(ImageFormat f) noexcept {
+    return f != ImageFormat::exr;
+}
+
+/// Writes `image` to `path` in the format of its extension (see ImageFormat), with its
+/// channel names, the colour space (see Image::color_space) and "ImageDescription" =
+/// image.description (each when not empty). Samples are written as they are, alpha included
+/// (colour is never divided or multiplied by alpha: PNG's alpha is marked unassociated). PNG and
+/// TIFF samples are quantised with rounding: round(v × (2^bits − 1)) after clamping v to [0, 1];
+/// NaN becomes 0. EXR stores the floats exactly. The file appears only when complete; on failure
+/// neither it nor a temporary file is left and irid::Error names the file and what was wrong
+/// (unsupported extension, bad bit depth, folder missing or not writable, OpenImageIO's message).
+void write_image(const std::filesystem::path& path, const Image& image,
+                 const ImageEncoding& encoding = {});
+
+}  // namespace irid::io

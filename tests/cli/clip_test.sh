@@ -1,0 +1,573 @@
+#!/usr/bin/env bash
+# The contract of `irid clip`: CSV in on stdin, R,G,B out on stdout; images IN -> OUT; Table 1.
+# Exit statuses 0 (success), 1 (bad data or I/O, the file or "<stdin>:LINE" named on stderr,
+# nothing on stdout) and 2 (usage, the valid values listed).
+#
+#   bash tests/cli/clip_test.sh <path-to-irid> <path-to-data-dir>
+#
+# Prints one line per failed check (what was run, what was expected, what came out) and ends
+# with "N passed, M failed"; exits 0 only when every check passed. Expected values come from
+# closed forms (the sRGB luminance row from its primaries, the sRGB transfer function, the
+# clamp), never from the program's own output. Images are made and inspected with oiiotool
+# (openimageio-tools).
+# shellcheck disable=SC2016  # awk conditions on $1, $2, $3 are passed in single quotes
+set -u
+
+if [[ $# -ne 2 ]]; then
+    echo "usage: bash $0 <path-to-irid> <path-to-data-dir>" >&2
+    exit 2
+fi
+IRID=$1
+# The data folder is not needed: every expected value is a closed form.
+
+TMP=$(mktemp -d) || exit 2
+trap 'rm -rf "$TMP"' EXIT
+
+passed=0
+failed=0
+STATUS=0
+RAN=
+
+# --- running the program ------------------------------------------------------------------
+
+# run_file FILE ARGS...: runs `irid ARGS` with FILE on stdin. Sets STATUS and RAN; stdout and
+# stderr are left in $TMP/out and $TMP/err.
+run_file() {
+    local input=$1 args
+    shift
+    "$IRID" "$@" <"$input" >"$TMP/out" 2>"$TMP/err"
+    STATUS=$?
+    printf -v args ' %q' "$@"
+    RAN="irid${args} < $input"
+}
+
+# run TEXT ARGS...: runs `irid ARGS` with TEXT (written as is, e.g. $'1,1,1\n') on stdin.
+run() {
+    local text=$1 args shown
+    shift
+    printf '%s' "$text" >"$TMP/in"
+    run_file "$TMP/in" "$@"
+    printf -v args ' %q' "$@"
+    shown=${text@Q}
+    RAN="printf '%s' ${shown} | irid${args}"
+}
+
+# --- reporting ----------------------------------------------------------------------------
+
+# show TEXT: TEXT quoted on one line (newlines escaped), cut short when long.
+show() {
+    local s=${1@Q}
+    ((${#s} > 240)) && s="${s:0:240}..."
+    printf '%s' "$s"
+}
+
+# slurp VAR FILE: sets VAR to the exact contents of FILE, trailing newline included.
+slurp() {
+    local s
+    s=$(cat "$2" && printf x)
+    printf -v "$1" '%s' "${s%x}"
+}
+
+pass() { passed=$((passed + 1)); }
+
+# fail EXPECTED GOT: one line naming the command that ran.
+fail() {
+    failed=$((failed + 1))
+    printf 'FAIL: %s | expected: %s | got: %s\n' "$RAN" "$1" "$2"
+}
+
+# What came out, for messages: the status, stdout and (when there is any) stderr.
+outcome() {
+    local out err s
+    slurp out "$TMP/out"
+    slurp err "$TMP/err"
+    s="status $STATUS, stdout $(show "$out")"
+    [[ -n $err ]] && s+=", stderr $(show "$err")"
+    printf '%s' "$s"
+}
+
+# --- checks on the last run ---------------------------------------------------------------
+
+# expect_status N
+expect_status() {
+    if [[ $STATUS -eq $1 ]]; then pass; else fail "exit status $1" "$(outcome)"; fi
+}
+
+# expect_output TEXT: stdout is exactly TEXT (give the trailing newline) and the status is 0.
+expect_output() {
+    local got
+    slurp got "$TMP/out"
+    if [[ $STATUS -eq 0 && $got == "$1" ]]; then pass; else fail "status 0, stdout $(show "$1")" "$(outcome)"; fi
+}
+
+# expect_empty_stdout: a failed run (or an image run) prints nothing on stdout.
+expect_empty_stdout() {
+    if [[ ! -s $TMP/out ]]; then pass; else fail "empty stdout" "$(outcome)"; fi
+}
+
+# expect_stderr_has TEXT / expect_stdout_has TEXT: a fixed string occurs in the stream.
+expect_stderr_has() {
+    if grep -qF -- "$1" "$TMP/err"; then pass; else fail "stderr containing $(show "$1")" "$(outcome)"; fi
+}
+expect_stdout_has() {
+    if grep -qF -- "$1" "$TMP/out"; then pass; else fail "stdout containing $(show "$1")" "$(outcome)"; fi
+}
+
+# compare_csv WANT_FILE GOT_FILE TOL: prints nothing when both files hold the same number of
+# CSV lines whose fields are numbers within TOL of each other (TOL: one tolerance for every
+# field, or a comma-separated tolerance per field); otherwise prints what differs.
+compare_csv() {
+    awk -F, -v tol="$3" '
+        function abs(x) { return x < 0 ? -x : x }
+        function is_number(s) { return s ~ /^-?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ }
+        BEGIN { ntol = split(tol, t, ",") }
+        NR == FNR { want[++n] = $0; next }
+        { got[++m] = $0 }
+        END {
+            if (m != n) { printf "%d lines instead of %d", m, n; exit }
+            for (i = 1; i <= n; ++i) {
+                nw = split(want[i], w, ",")
+                ng = split(got[i], g, ",")
+                if (ng != nw) { printf "line %d has %d fields instead of %d", i, ng, nw; exit }
+                for (j = 1; j <= nw; ++j) {
+                    tj = (ntol == 1) ? t[1] : t[j]
+                    if (!is_number(g[j])) { printf "line %d field %d (%s) is not a number", i, j, g[j]; exit }
+                    if (!(abs(g[j] - w[j]) <= tj + 0)) {
+                        printf "line %d field %d: %s differs from %s by %.3g", i, j, g[j], w[j], g[j] - w[j]
+                        exit
+                    }
+                }
+            }
+        }' "$1" "$2"
+}
+
+# expect_close WANT TOL: status 0 and the lines after stdout's header are, field by field,
+# within TOL of the lines of WANT (CSV numbers, one line per colour).
+expect_close() {
+    local verdict
+    printf '%s\n' "$1" >"$TMP/want"
+    tail -n +2 "$TMP/out" >"$TMP/data"
+    verdict=$(compare_csv "$TMP/want" "$TMP/data" "$2")
+    if [[ $STATUS -eq 0 && -z $verdict ]]; then
+        pass
+    else
+        fail "values $(show "$1") within $2" "$(outcome)${verdict:+ ($verdict)}"
+    fi
+}
+
+# expect_rows_where N CONDITION WHAT: status 0, exactly N lines after stdout's header, and the
+# awk CONDITION (on $1, $2, $3, with abs(), inside(v) = v in [0, 1], and the sRGB luminance
+# row LR, LG, LB) holds for every one of them; WHAT describes it for the message.
+expect_rows_where() {
+    if [[ $STATUS -eq 0 ]] && awk -F, -v n="$1" -v LR="$LR" -v LG="$LG" -v LB="$LB" "
+            function abs(x) { return x < 0 ? -x : x }
+            function inside(v) { return v >= 0 && v <= 1 }
+            NR > 1 { ++rows; if (!($2)) bad = 1 }
+            END { exit !(rows == n && !bad) }" "$TMP/out"; then
+        pass
+    else
+        fail "$3 ($1 rows)" "$(outcome)"
+    fi
+}
+
+# expect_bad_data LINE: exit status 1, "<stdin>:LINE:" on stderr, nothing on stdout.
+expect_bad_data() {
+    expect_status 1
+    expect_stderr_has "<stdin>:$1:"
+    expect_empty_stdout
+}
+
+# expect_usage_error TEXT: exit status 2, TEXT on stderr, nothing on stdout.
+expect_usage_error() {
+    expect_status 2
+    expect_stderr_has "$1"
+    expect_empty_stdout
+}
+
+# --- reference values ---------------------------------------------------------------------
+
+# The luminance row (A, B, C) of the sRGB RGB -> XYZ matrix from the primaries' and D65's
+# chromaticities (SMPTE RP 177): the scales S = P^-1 W of the primaries' XYZ columns
+# P = (x/y, 1, z/y), with W the white's XYZ at Y = 1; the Y row of the matrix is S itself.
+# Rounded, it is IEC 61966-2-1's 0.2126, 0.7152, 0.0722.
+read -r LR LG LB < <(awk 'BEGIN {
+    split("0.64 0.30 0.15", x, " "); split("0.33 0.60 0.06", y, " ")
+    for (i = 1; i <= 3; ++i) { p[1, i] = x[i] / y[i]; p[2, i] = 1; p[3, i] = (1 - x[i] - y[i]) / y[i] }
+    w[1] = 0.3127 / 0.3290; w[2] = 1; w[3] = (1 - 0.3127 - 0.3290) / 0.3290
+    det = p[1,1] * (p[2,2] * p[3,3] - p[2,3] * p[3,2]) - p[1,2] * (p[2,1] * p[3,3] - p[2,3] * p[3,1]) \
+        + p[1,3] * (p[2,1] * p[3,2] - p[2,2] * p[3,1])
+    for (c = 1; c <= 3; ++c) {   # Cramer: replace column c by w
+        for (i = 1; i <= 3; ++i) for (j = 1; j <= 3; ++j) q[i, j] = (j == c) ? w[i] : p[i, j]
+        d = q[1,1] * (q[2,2] * q[3,3] - q[2,3] * q[3,2]) - q[1,2] * (q[2,1] * q[3,3] - q[2,3] * q[3,1]) \
+          + q[1,3] * (q[2,1] * q[3,2] - q[2,2] * q[3,1])
+        s[c] = d / det
+    }
+    printf "%.17g %.17g %.17g\n", s[1], s[2], s[3]
+}')
+
+METHODS=(clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected)
+
+# === 1. CSV: the contract's defaults and shape ============================================
+
+RAN="the sRGB luminance row from the primaries"
+if awk -v a="$LR" -v b="$LG" -v c="$LB" 'BEGIN { exit !(a > 0.21255 && a < 0.21265 && b > 0.71515 && b < 0.71525 && c > 0.07215 && c < 0.07225) }'; then
+    pass
+else
+    fail "0.2126, 0.7152, 0.0722 to 4 decimals" "$LR $LG $LB"
+fi
+
+# In-gamut colours (inside, on faces, on edges, black and white) come back unchanged, for every
+# method, with the header R,G,B and shortest round-trip numbers.
+IN_GAMUT=$'0.2,0.3,0.4\n0,0,0\n1,1,1\n0.5,0,1\n1,0,0\n0.25,0.75,0\n0.001,0.999,0.5\n'
+for m in "${METHODS[@]}"; do
+    run "$IN_GAMUT" clip --method "$m"
+    expect_output "R,G,B"$'\n'"$IN_GAMUT"
+done
+# The same with the defaults spelled out, and an input header (skipped).
+run $'R,G,B\n0.2,0.3,0.4\n' clip --method smits --from srgb-linear --to srgb-linear
+expect_output $'R,G,B\n0.2,0.3,0.4\n'
+# No colours: just the header.
+run '' clip --method smits
+expect_output $'R,G,B\n'
+
+# === 2. CSV: the methods' closed forms ====================================================
+
+# clamp is per channel.
+run $'1.5,-0.2,0.3\n' clip --method clamp
+expect_output $'R,G,B\n1,0,0.3\n'
+run $'-3,7,0.5\n2,2,2\n-1,0.1,0.2\n' clip --method clamp
+expect_output $'R,G,B\n0,1,0.5\n1,1,1\n0,0.1,0.2\n'
+
+# smits keeps the luminance Y = A r + B g + C b when 0 < Y < 1, and the result lies inside the
+# cube with at least one channel on a face (0 or 1). smits-xyz is the same clip in XYZ form.
+OUT_OF_GAMUT=$'1.5,-0.2,0.3\n-0.3,0.8,0.2\n0.2,0.3,1.4\n1.1,0.9,-0.1\n-0.05,-0.02,0.9\n1.3,-0.2,-0.1\n0.3,1.2,0.05\n'
+printf '%s' "$OUT_OF_GAMUT" | awk -F, -v LR="$LR" -v LG="$LG" -v LB="$LB" \
+    '{ printf "%.17g\n", LR * $1 + LG * $2 + LB * $3 }' >"$TMP/y_in"
+for m in smits smits-xyz; do
+    run "$OUT_OF_GAMUT" clip --method "$m"
+    expect_rows_where 7 'inside($1) && inside($2) && inside($3) &&
+        (abs($1) < 1e-12 || abs($2) < 1e-12 || abs($3) < 1e-12 ||
+         abs($1 - 1) < 1e-12 || abs($2 - 1) < 1e-12 || abs($3 - 1) < 1e-12)' \
+        "every channel in [0, 1] and one on a face (within 1e-12)"
+    tail -n +2 "$TMP/out" | awk -F, -v LR="$LR" -v LG="$LG" -v LB="$LB" \
+        '{ printf "%.17g\n", LR * $1 + LG * $2 + LB * $3 }' >"$TMP/y_out"
+    verdict=$(compare_csv "$TMP/y_in" "$TMP/y_out" 1e-9)
+    if [[ -z $verdict ]]; then pass; else fail "Y = ${LR} r + ${LG} g + ${LB} b kept within 1e-9" "$verdict"; fi
+done
+# Both forms give the same colour.
+run "$OUT_OF_GAMUT" clip --method smits
+tail -n +2 "$TMP/out" >"$TMP/smits_rgb"
+run "$OUT_OF_GAMUT" clip --method smits-xyz
+expect_close "$(cat "$TMP/smits_rgb")" 1e-9
+# One worked example: (1.5, -0.2, 0.3) goes toward the grey w = Y / (A + B + C) = Y (A + B + C
+# = 1 for the sRGB row) and stops where green reaches 0: t = 0.2 / (0.2 + w).
+W=$(awk -v LR="$LR" -v LG="$LG" -v LB="$LB" 'BEGIN { y = LR * 1.5 - LG * 0.2 + LB * 0.3; w = y / (LR + LG + LB)
+    t = 0.2 / (0.2 + w); printf "%.17g,%.17g,%.17g", 1.5 + t * (w - 1.5), 0, 0.3 + t * (w - 0.3) }')
+run $'1.5,-0.2,0.3\n' clip --method smits
+expect_close "$W" 1e-12
+
+# Y <= 0 gives black, Y at or above the white's gives white, for every method but clamp (which
+# works per channel).
+for m in smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+    run $'-0.1,-0.1,-0.2\n-1,0.1,0.2\n0,0,-1e-3\n' clip --method "$m"
+    expect_output $'R,G,B\n0,0,0\n0,0,0\n0,0,0\n'
+    run $'2,1.5,1.2\n' clip --method "$m"
+    expect_rows_where 1 'abs($1 - 1) < 1e-9 && abs($2 - 1) < 1e-9 && abs($3 - 1) < 1e-9' "white (1, 1, 1)"
+done
+
+# Every method accepts every name and returns colours inside the cube.
+for m in "${METHODS[@]}"; do
+    run "$OUT_OF_GAMUT" clip --method "$m"
+    expect_rows_where 7 'inside($1) && inside($2) && inside($3)' "$m: every channel in [0, 1]"
+done
+
+# === 3. CSV: spaces, encoding, HDR peak ===================================================
+
+# --to srgb encodes: 1.055 * 0.5^(1/2.4) - 0.055.
+ENC_HALF=$(awk 'BEGIN { printf "%.17g", 1.055 * exp(log(0.5) / 2.4) - 0.055 }')
+run $'0.5,0.5,0.5\n' clip --method smits --to srgb
+expect_close "$ENC_HALF,$ENC_HALF,$ENC_HALF" 1e-12
+expect_stdout_has "0.7353569830524495"
+# Encoded in, encoded out, in gamut: unchanged (to rounding).
+run $'0.7353569830524495,0.2,1\n' clip --method smits --from srgb --to srgb
+expect_close "0.7353569830524495,0.2,1" 1e-12
+# Clipping happens on linear values even for encoded names: clamp of encoded (1.2, 0.5, -0.1).
+run $'1.2,0.5,-0.1\n' clip --method clamp --from srgb --to srgb
+expect_close "1,0.5,0" 1e-12
+
+# Rec.2020 green is outside sRGB (negative red there) and becomes a valid sRGB colour.
+run $'0,1,0\n' convert --from rec2020-linear --to srgb-linear
+expect_rows_where 1 '$1 < -0.5 && $2 > 1' "Rec.2020 green out of the sRGB gamut"
+for m in "${METHODS[@]}"; do
+    run $'0,1,0\n' clip --method "$m" --from rec2020-linear
+    expect_rows_where 1 'inside($1) && inside($2) && inside($3) && $2 > 0.5' \
+        "$m: Rec.2020 green as a valid, green sRGB colour"
+done
+# smits keeps its luminance: Rec.2020's green has Y = 0.6780 (ITU-R BT.2020 luminance row).
+run $'0,1,0\n' clip --method smits --from rec2020-linear
+expect_rows_where 1 "abs(LR * \$1 + LG * \$2 + LB * \$3 - 0.6780) < 1e-4" "Y = 0.6780 kept"
+
+# XYZ source: the D65 white (Y = 1) is sRGB white.
+D65_XYZ=$(awk 'BEGIN { x = 0.3127; y = 0.3290; printf "%.17g,1,%.17g", x / y, (1 - x - y) / y }')
+run "$D65_XYZ"$'\n' clip --method smits --from xyz
+expect_close "1,1,1" 1e-9
+# Other destinations: display-p3's gamut holds sRGB red.
+run $'1,0,0\n' clip --method smits --from srgb-linear --to display-p3-linear
+expect_rows_where 1 'inside($1) && inside($2) && inside($3) && $1 > 0.8' "sRGB red inside Display P3, unclipped"
+
+# An HDR peak: the cube is [0, max].
+run $'1.5,1.2,0.9\n' clip --method smits --max 2
+expect_output $'R,G,B\n1.5,1.2,0.9\n'
+run $'3,2.5,2.2\n' clip --method smits --max 2
+expect_close "2,2,2" 1e-9
+run $'3,-0.2,0.5\n' clip --method clamp --max 2
+expect_output $'R,G,B\n2,0,0.5\n'
+
+# === 4. Table 1 ============================================================================
+
+run '' clip --count-ops
+expect_status 0
+for text in "| in gamut |" "| 1 plane |" "| 2 planes |" "| 3 planes |" "comparisons" "additions" \
+            "multiplications" "divisions" "7 (7)" "1 (1)" "2 (2)" "3 (3)" "(5)" "(6)" "(9)" "(10)" \
+            "(11)" "Smits 1990"; do
+    expect_stdout_has "$text"
+done
+# Clipped rows: 7 multiplications, as many divisions as planes crossed (ours and the thesis').
+if awk -F'|' '/^\| [0-9] plane/ { n = $2 + 0; if ($5 !~ /^ *7 \(7\) *$/ || $6 !~ ("^ *" n " \\(" n "\\) *$")) bad = 1; ++rows }
+        END { exit !(rows == 3 && !bad) }' "$TMP/out"; then
+    pass
+else
+    fail "7 multiplications and n divisions for n planes" "$(outcome)"
+fi
+
+# === 5. Errors ============================================================================
+
+run $'1,1,1\n' clip --method no-such-method
+expect_usage_error "smits-corrected"
+run $'1,1,1\n' clip
+expect_usage_error "luv-lightness-hue"
+run $'1,1,1\n' clip --method smits --to lab
+expect_usage_error "srgb-linear"
+expect_stderr_has "display-p3"
+run $'1,1,1\n' clip --method smits --to no-such-space
+expect_usage_error "rec2020-linear"
+run $'1,1,1\n' clip --method smits --from no-such-space
+expect_usage_error "oklab"
+run $'1,1,1\n' clip --method smits --max 0
+expect_usage_error "--max"
+run $'1,1,1\n' clip --method smits --max -1
+expect_usage_error "--max"
+run $'1,1,1\n' clip --method smits --white no-such-white
+expect_usage_error "D65"
+run $'1,1,1\n' clip --method smits --no-such-option
+expect_usage_error "--no-such-option"
+run $'1,1,1\n' clip --method smits --bits 16
+expect_usage_error "--bits"
+run $'1,1,1\n' clip --method smits only-one-file.exr
+expect_usage_error "OUT"
+
+# Bad data: status 1, the line on stderr, nothing on stdout even after good lines.
+run $'0.1,0.2,0.3\n0.4,0.5\n' clip --method smits
+expect_bad_data 2
+run $'0.1,0.2,0.3\n2,-1,0\nnan,0,0\n' clip --method smits
+expect_bad_data 3
+run $'R,G,B\n0.1,0.2,0.3\n0.1,abc,0.3\n' clip --method clamp
+expect_bad_data 3
+run $'0.3,0.3,0.5\n0.3,0,0.5\n' clip --method smits --from xyy
+expect_bad_data 2
+
+# === 6. Images ============================================================================
+
+if ! command -v oiiotool >/dev/null; then
+    RAN="command -v oiiotool"
+    fail "oiiotool (openimageio-tools) for the image checks" "not found"
+    echo "$passed passed, $failed failed"
+    exit 1
+fi
+IMG=$TMP/img
+mkdir -p "$IMG"
+
+# pixels FILE: every pixel's samples as CSV lines (integer codes for 8/16-bit files), as stored
+# (alpha not multiplied in).
+pixels() {
+    oiiotool --iconfig oiio:UnassociatedAlpha 1 --dumpdata "$1" |
+        awk '/Pixel \(/ { sub(/^[^:]*: */, ""); sub(/ *\(.*$/, ""); gsub(/ +/, ","); print }'
+}
+
+# run_image ARGS...: runs `irid ARGS` (no stdin).
+run_image() {
+    local args
+    "$IRID" "$@" </dev/null >"$TMP/out" 2>"$TMP/err"
+    STATUS=$?
+    printf -v args ' %q' "$@"
+    RAN="irid${args}"
+}
+
+# expect_pixels FILE N CONDITION WHAT: FILE has N pixels and CONDITION (awk, on $1.. of each
+# pixel, with abs() and inside()) holds for all.
+expect_pixels() {
+    pixels "$1" >"$TMP/pixels" 2>/dev/null
+    if awk -F, -v n="$2" "
+            function abs(x) { return x < 0 ? -x : x }
+            function inside(v) { return v >= 0 && v <= 1 }
+            { ++rows; if (!($3)) bad = 1 }
+            END { exit !(rows == n && !bad) }" "$TMP/pixels"; then
+        pass
+    else
+        fail "$4 ($2 pixels)" "$(outcome); pixels $(show "$(head -c 300 "$TMP/pixels")")"
+    fi
+}
+
+# expect_info FILE TEXT: oiiotool's one-line description of FILE contains TEXT.
+expect_info() {
+    local info
+    info=$(oiiotool --info -v "$1" 2>&1)
+    if [[ $info == *"$2"* ]]; then pass; else fail "$1: $(show "$2")" "$(show "$info")"; fi
+}
+
+# expect_folder_holds NAMES...: the image folder holds exactly these files (no temporaries).
+expect_folder_holds() {
+    local got want
+    got=$(cd "$IMG" && ls -A | sort | tr '\n' ' ')
+    want=$(printf '%s\n' "$@" | sort | tr '\n' ' ')
+    if [[ $got == "$want" ]]; then pass; else fail "files: $want" "files: $got; $(outcome)"; fi
+}
+
+# --- EXR (linear float) with alpha -----------------------------------------------------------
+oiiotool --pattern constant:color=1.5,-0.2,0.3,0.5 4x4 4 -d float -o "$IMG/in.exr"
+run_image clip --method smits "$IMG/in.exr" "$IMG/out.exr"
+expect_status 0
+expect_empty_stdout
+expect_info "$IMG/out.exr" "4 x    4, 4 channel, float openexr"
+expect_info "$IMG/out.exr" "channel list: R, G, B, A"
+expect_info "$IMG/out.exr" 'irid:ColorSpace: "srgb-linear"'
+# The same colour as the CSV clip (float precision), alpha untouched.
+expect_pixels "$IMG/out.exr" 16 "abs(\$1 - ${W%%,*}) < 1e-6 && abs(\$2) < 1e-6 && abs(\$3 - ${W##*,}) < 1e-6 && \$4 == 0.5" \
+    "the CSV result $W, alpha 0.5"
+expect_pixels "$IMG/out.exr" 16 'inside($1) && inside($2) && inside($3)' "RGB inside [0, 1]"
+
+# Every method on an image, including NaN and infinities: finite output inside the cube, and
+# no other channel touched (alpha, depth). oiiotool prints 9 significant digits, which name a
+# float exactly: 0.200000003 is the float nearest 0.2.
+oiiotool --pattern constant:color=nan,inf,-inf,0.25,7 2x1 5 -d float --chnames R,G,B,A,Z \
+    --pattern constant:color=-0.3,0.8,0.2,1,-2 2x1 5 -d float --chnames R,G,B,A,Z \
+    --pattern constant:color=0.2,0.3,0.4,0,3 2x1 5 -d float --chnames R,G,B,A,Z \
+    --mosaic 1x3 -o "$IMG/odd.exr"
+for m in "${METHODS[@]}"; do
+    run_image clip --method "$m" "$IMG/odd.exr" "$IMG/odd_$m.exr"
+    expect_status 0
+    expect_pixels "$IMG/odd_$m.exr" 6 'inside($1) && inside($2) && inside($3) && (NR > 4 ? $1 == 0.200000003 && $2 == 0.300000012 && $3 == 0.400000006 : 1)' \
+        "$m: RGB finite and inside [0, 1], the in-gamut row unchanged"
+    expect_pixels "$IMG/odd_$m.exr" 6 '(NR <= 2 && $4 == 0.25 && $5 == 7) || (NR > 2 && NR <= 4 && $4 == 1 && $5 == -2) || (NR > 4 && $4 == 0 && $5 == 3)' \
+        "$m: A and Z untouched"
+    rm -f "$IMG/odd_$m.exr"
+done
+
+# --threads does not change the result.
+run_image clip --method smits --threads 1 "$IMG/in.exr" "$IMG/out1.exr"
+expect_status 0
+if [[ $(pixels "$IMG/out1.exr") == "$(pixels "$IMG/out.exr")" ]]; then pass; else RAN="--threads 1 vs default"; fail "same pixels" "different"; fi
+rm -f "$IMG/out1.exr"
+
+# --- PNG (encoded) with alpha ----------------------------------------------------------------
+# Written unassociated (as PNG stores it), so the codes are exactly 51, 102, 153, 64.
+oiiotool --pattern constant:color=0.2,0.4,0.6,0.25 3x2 4 -d uint8 --attrib oiio:UnassociatedAlpha 1 \
+    -o "$IMG/in.png"
+expect_pixels "$IMG/in.png" 6 '$1 == 51 && $2 == 102 && $3 == 153 && $4 == 64' "the test PNG as made"
+# In gamut, decoded and encoded again with sRGB: the same codes, alpha untouched.
+run_image clip --method smits --from srgb --to srgb "$IMG/in.png" "$IMG/same.png"
+expect_status 0
+expect_empty_stdout
+expect_info "$IMG/same.png" "3 x    2, 4 channel, uint8 png"
+expect_pixels "$IMG/same.png" 6 '$1 == 51 && $2 == 102 && $3 == 153 && $4 == 64' "in-gamut PNG unchanged"
+# 16 bits: the same values on the 16-bit scale (257 × the 8-bit codes).
+run_image clip --method oklab --from srgb --to srgb --bits 16 "$IMG/in.png" "$IMG/same16.png"
+expect_status 0
+expect_info "$IMG/same16.png" "uint16 png"
+expect_pixels "$IMG/same16.png" 6 '$1 == 51 * 257 && $2 == 102 * 257 && $3 == 153 * 257 && $4 == 64 * 257' \
+    "16-bit codes 257 × the 8-bit ones"
+# With the default --from srgb-linear the PNG's values are taken as linear light (a note on
+# stderr says so): code 51 is linear 0.2, written back encoded as round(255 × enc(0.2)).
+run_image clip --method smits "$IMG/in.png" "$IMG/aslinear.png"
+expect_status 0
+expect_stderr_has "--from srgb"
+ENC=$(awk 'function enc(v) { return 1.055 * exp(log(v) / 2.4) - 0.055 }
+    BEGIN { printf "%d %d %d", int(enc(51 / 255) * 255 + 0.5), int(enc(102 / 255) * 255 + 0.5), int(enc(153 / 255) * 255 + 0.5) }')
+read -r C1 C2 C3 <<<"$ENC"
+expect_pixels "$IMG/aslinear.png" 6 "\$1 == $C1 && \$2 == $C2 && \$3 == $C3 && \$4 == 64" "codes $C1, $C2, $C3 and alpha 64"
+rm -f "$IMG/aslinear.png"
+# A -linear destination still writes encoded values to PNG: 8-bit code 188 for linear 0.5
+# (round(255 × 0.7353569830524495)), and the metadata says srgb.
+oiiotool --pattern constant:color=0.5,0.5,0.5 2x2 3 -d float -o "$IMG/half.exr"
+run_image clip --method smits --to srgb-linear "$IMG/half.exr" "$IMG/half.png"
+expect_status 0
+expect_pixels "$IMG/half.png" 4 '$1 == 188 && $2 == 188 && $3 == 188' "linear 0.5 as sRGB code 188"
+expect_info "$IMG/half.png" 'oiio:ColorSpace: "srgb"'
+# Out of gamut into PNG and TIFF: encoded, inside the codes' range, alpha kept.
+run_image clip --method css "$IMG/in.exr" "$IMG/out.png"
+expect_status 0
+expect_pixels "$IMG/out.png" 16 '$1 >= 0 && $1 <= 255 && $2 <= 1 && $4 == 128' "PNG: clipped colour, alpha 128"
+run_image clip --method smits --bits 16 "$IMG/in.exr" "$IMG/out.tif"
+expect_status 0
+expect_info "$IMG/out.tif" "4 x    4, 4 channel, uint16 tiff"
+# Encoded sRGB of the smits result, on 16 bits.
+CODES=$(awk -v w="$W" 'function enc(v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * exp(log(v) / 2.4) - 0.055 }
+    BEGIN { split(w, c, ","); printf "%d %d %d", int(enc(c[1]) * 65535 + 0.5), int(enc(c[2]) * 65535 + 0.5), int(enc(c[3]) * 65535 + 0.5) }')
+read -r C1 C2 C3 <<<"$CODES"
+expect_pixels "$IMG/out.tif" 16 "abs(\$1 - $C1) <= 1 && abs(\$2 - $C2) <= 1 && abs(\$3 - $C3) <= 1 && \$4 == 32768" \
+    "TIFF codes $C1, $C2, $C3 (±1), alpha 32768"
+
+# Rec.2020 green, an image: a valid sRGB colour.
+oiiotool --pattern constant:color=0,1,0 2x2 3 -d float -o "$IMG/green2020.exr"
+run_image clip --method smits --from rec2020-linear --to srgb "$IMG/green2020.exr" "$IMG/green.exr"
+expect_status 0
+expect_pixels "$IMG/green.exr" 4 'inside($1) && inside($2) && inside($3) && $2 > 0.5' "Rec.2020 green inside sRGB"
+expect_info "$IMG/green.exr" 'irid:ColorSpace: "srgb-linear"'   # EXR: linear, whatever --to
+
+expect_folder_holds in.exr out.exr odd.exr in.png same.png same16.png half.exr half.png out.png \
+    out.tif green2020.exr green.exr
+
+# --- failures leave no OUT (and no temporary file) ---------------------------------------------
+run_image clip --method smits "$IMG/missing.exr" "$IMG/fail1.exr"
+expect_status 1
+expect_stderr_has "missing.exr"
+expect_empty_stdout
+run_image clip --method smits "$IMG/in.exr" "$IMG/no-such-folder/fail2.exr"
+expect_status 1
+expect_stderr_has "fail2.exr"
+run_image clip --method smits "$IMG/in.exr" "$IMG/fail3.jpg"
+expect_usage_error ".exr"
+run_image clip --method smits --max 2 "$IMG/in.exr" "$IMG/fail4.png"
+expect_usage_error "--max"
+run_image clip --method smits --bits 12 "$IMG/in.exr" "$IMG/fail5.png"
+expect_usage_error "16"
+run_image clip --method smits --bits 16 "$IMG/in.exr" "$IMG/fail6.exr"
+expect_usage_error "--bits"
+run_image clip --method no-such-method "$IMG/in.exr" "$IMG/fail7.exr"
+expect_usage_error "smits"
+# Not an image.
+printf 'R,G,B\n1,0,0\n' >"$IMG/colours.csv"
+run_image clip --method smits "$IMG/colours.csv" "$IMG/fail8.exr"
+expect_status 1
+expect_stderr_has "colours.csv"
+# Five channels cannot go into a PNG: OpenImageIO refuses after the work is done.
+run_image clip --method smits "$IMG/odd.exr" "$IMG/fail9.png"
+expect_status 1
+expect_stderr_has "fail9.png"
+# One channel is not a colour.
+oiiotool --pattern constant:color=0.5 2x2 1 -d float -o "$IMG/grey.exr"
+run_image clip --method smits "$IMG/grey.exr" "$IMG/fail10.exr"
+expect_status 1
+expect_stderr_has "grey.exr"
+expect_folder_holds in.exr out.exr odd.exr in.png same.png same16.png half.exr half.png out.png \
+    out.tif green2020.exr green.exr colours.csv grey.exr
+# A failed run does not touch an existing OUT.
+cp "$IMG/out.png" "$IMG/keep.png"
+run_image clip --method smits "$IMG/odd.exr" "$IMG/keep.png"
+expect_status 1
+if cmp -s "$IMG/out.png" "$IMG/keep.png"; then pass; else fail "keep.png unchanged" "changed"; fi
+
+# ===========================================================================================
+
+echo "$passed passed, $failed failed"
+[[ $failed -eq 0 ]]
