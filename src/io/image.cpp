@@ -1,29 +1,24 @@
 #include <irid/error.h>
-#include <irid/io/atomic_file.h>
 #include <irid/io/image.h>
 
-#include <OpenImageIO/imageio.h>
+#include "image_backend.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-#include <limits>
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <mutex>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace irid::io {
 namespace fs = std::filesystem;
 
 namespace {
 
-/// The colour space under a name OpenEXR files keep (OpenImageIO drops "oiio:" attributes
-/// from EXR files and reports "Linear" instead).
-constexpr const char* color_space_attribute = "irid:ColorSpace";
-
 std::string default_channel_name(int c, int channels) {
     static const char* const rgba[] = {"R", "G", "B", "A"};
-    if (channels <= 4) return rgba[c];
-    if (c < 4) return rgba[c];
+    if (channels <= 4 || c < 4) return rgba[c];
     return "channel" + std::to_string(c);
 }
 
@@ -34,44 +29,57 @@ std::string lowercase(std::string s) {
     return s;
 }
 
-/// OpenImageIO's message, or a fallback when it has none.
-std::string message_or(std::string message, const char* fallback) {
-    while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) {
-        message.pop_back();
+/// Where the module may be, in order: $IRID_OIIO_MODULE; beside the running program (the build
+/// tree's build/irid and an installed bin/irid's ../lib/irid); the build tree; the install tree.
+std::vector<fs::path> module_candidates() {
+    std::vector<fs::path> out;
+    if (const char* env = std::getenv("IRID_OIIO_MODULE"); env != nullptr && *env != '\0') {
+        out.emplace_back(env);
     }
-    return message.empty() ? std::string(fallback) : message;
-}
-
-/// Encoded [0, 1] samples → integers with rounding (NaN → 0, clamped).
-template <class T>
-std::vector<T> quantise(const std::vector<float>& samples) {
-    constexpr double top = static_cast<double>(std::numeric_limits<T>::max());
-    std::vector<T> out(samples.size());
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        const double v = static_cast<double>(samples[i]);
-        const double clamped = std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0);
-        out[i] = static_cast<T>(std::lround(clamped * top));
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        out.push_back(exe.parent_path() / IRID_OIIO_MODULE_NAME);
+        out.push_back(exe.parent_path().parent_path() / "lib" / "irid" / IRID_OIIO_MODULE_NAME);
     }
+    out.emplace_back(IRID_OIIO_MODULE_BUILD_PATH);
+    out.emplace_back(IRID_OIIO_MODULE_INSTALL_PATH);
     return out;
 }
 
-void check_image(const fs::path& path, const Image& image) {
-    const std::string shown = path.string();
-    if (image.width < 1 || image.height < 1 || image.channels < 1) {
-        throw Error(shown + ": cannot write an image of " + std::to_string(image.width) + " x " +
-                    std::to_string(image.height) + " pixels with " +
-                    std::to_string(image.channels) + " channels (each must be at least 1)");
-    }
-    const std::size_t expected = image.pixel_count() * static_cast<std::size_t>(image.channels);
-    if (image.pixels.size() != expected) {
-        throw Error(shown + ": the image holds " + std::to_string(image.pixels.size()) +
-                    " samples instead of width x height x channels = " + std::to_string(expected));
-    }
-    if (!image.channel_names.empty() &&
-        image.channel_names.size() != static_cast<std::size_t>(image.channels)) {
-        throw Error(shown + ": " + std::to_string(image.channel_names.size()) +
-                    " channel names for " + std::to_string(image.channels) + " channels");
-    }
+const ImageBackend& backend() {
+    static const ImageBackend* loaded = nullptr;
+    static std::string failure;
+    static std::once_flag once;
+    std::call_once(once, [] {
+        std::string tried;
+        for (const fs::path& candidate : module_candidates()) {
+            std::error_code ec;
+            if (!fs::exists(candidate, ec)) {
+                tried += "\n  " + candidate.string() + " (absent)";
+                continue;
+            }
+            void* handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+            if (handle == nullptr) {
+                tried += "\n  " + candidate.string() + " (" + dlerror() + ")";
+                continue;
+            }
+            using Entry = const ImageBackend* (*)();
+            const auto entry = reinterpret_cast<Entry>(dlsym(handle, "irid_image_backend"));
+            const ImageBackend* table = entry != nullptr ? entry() : nullptr;
+            if (table == nullptr || table->abi_version != image_backend_abi_version) {
+                tried += "\n  " + candidate.string() + " (not a matching irid image module)";
+                continue;
+            }
+            loaded = table;
+            return;
+        }
+        failure = "the OpenImageIO module " + std::string(IRID_OIIO_MODULE_NAME) +
+                  " of irid was not found; looked for:" + tried +
+                  "\n(set IRID_OIIO_MODULE to its path)";
+    });
+    if (loaded == nullptr) throw Error(failure);
+    return *loaded;
 }
 
 }  // namespace
@@ -86,8 +94,7 @@ Image Image::blank(int width, int height, int channels) {
     image.width = width;
     image.height = height;
     image.channels = channels;
-    for (int c = 0; c < channels; ++c)
-        image.channel_names.push_back(default_channel_name(c, channels));
+    for (int c = 0; c < channels; ++c) image.channel_names.push_back(default_channel_name(c, channels));
     image.pixels.assign(image.pixel_count() * static_cast<std::size_t>(channels), 0.0f);
     return image;
 }
@@ -99,56 +106,6 @@ int Image::channel_index(std::string_view name) const noexcept {
     return -1;
 }
 
-Image read_image(const fs::path& path) {
-    const std::string shown = path.string();
-    std::error_code ec;
-    if (!fs::exists(path, ec)) throw Error(shown + ": no such file");
-    if (fs::is_directory(path, ec)) throw Error(shown + ": is a directory, not an image");
-
-    // Samples exactly as stored: no premultiplication of colour by an unassociated alpha (PNG,
-    // some TIFFs), so that colour and alpha pass through unchanged.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(shown, &config);
-    if (!in) {
-        throw Error(shown + ": cannot read the image: " +
-                    message_or(OIIO::geterror(), "not a format OpenImageIO reads"));
-    }
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.deep) throw Error(shown + ": deep images are not supported");
-    if (spec.depth > 1) throw Error(shown + ": volume images are not supported");
-    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) {
-        throw Error(shown + ": the image is empty");
-    }
-
-    Image image;
-    image.width = spec.width;
-    image.height = spec.height;
-    image.channels = spec.nchannels;
-    for (int c = 0; c < spec.nchannels; ++c) {
-        const std::string name = static_cast<std::size_t>(c) < spec.channelnames.size()
-                                     ? spec.channelnames[static_cast<std::size_t>(c)]
-                                     : "";
-        image.channel_names.push_back(name.empty() ? default_channel_name(c, spec.nchannels)
-                                                   : name);
-    }
-    // irid's own attribute first: OpenImageIO reports "Linear" for every EXR.
-    image.color_space = spec.get_string_attribute(color_space_attribute);
-    if (image.color_space.empty()) image.color_space = spec.get_string_attribute("oiio:ColorSpace");
-    image.description = spec.get_string_attribute("ImageDescription");
-    image.stored_integer = !spec.format.is_floating_point();
-    image.stored_bits =
-        spec.get_int_attribute("oiio:BitsPerSample", static_cast<int>(spec.format.size() * 8));
-
-    image.pixels.resize(image.pixel_count() * static_cast<std::size_t>(image.channels));
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, image.pixels.data())) {
-        throw Error(shown + ": cannot read the pixels: " +
-                    message_or(in->geterror(), "the file is damaged or truncated"));
-    }
-    in->close();
-    return image;
-}
-
 ImageFormat image_format_for(const fs::path& path) {
     const std::string extension = lowercase(path.extension().string());
     if (extension == ".exr") return ImageFormat::exr;
@@ -158,69 +115,16 @@ ImageFormat image_format_for(const fs::path& path) {
                 "'; images are written as .exr (linear float), .png, .tif or .tiff (8 or 16 bit)");
 }
 
+Image read_image(const fs::path& path) {
+    Image image;
+    std::string error;
+    if (!backend().read(path.c_str(), &image, &error)) throw Error(error);
+    return image;
+}
+
 void write_image(const fs::path& path, const Image& image, const ImageEncoding& encoding) {
-    const std::string shown = path.string();
-    const ImageFormat format = image_format_for(path);
-    if (is_integer_format(format) && encoding.bits != 8 && encoding.bits != 16) {
-        throw Error(shown + ": " + std::to_string(encoding.bits) +
-                    " bits per sample; PNG and TIFF are written with 8 or 16");
-    }
-    check_image(path, image);
-
-    AtomicFile file(path);
-    const char* format_name = format == ImageFormat::exr   ? "openexr"
-                              : format == ImageFormat::png ? "png"
-                                                           : "tiff";
-    auto out = OIIO::ImageOutput::create(format_name);
-    if (!out) {
-        throw Error(shown + ": OpenImageIO cannot write " + format_name + ": " +
-                    message_or(OIIO::geterror(), "no such plugin"));
-    }
-    const OIIO::TypeDesc type = format == ImageFormat::exr ? OIIO::TypeDesc(OIIO::TypeDesc::FLOAT)
-                                : encoding.bits == 8       ? OIIO::TypeDesc(OIIO::TypeDesc::UINT8)
-                                                           : OIIO::TypeDesc(OIIO::TypeDesc::UINT16);
-    OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
-    spec.alpha_channel = -1;
-    for (int c = 0; c < image.channels; ++c) {
-        const std::string name = image.channel_names.empty()
-                                     ? default_channel_name(c, image.channels)
-                                     : image.channel_names[static_cast<std::size_t>(c)];
-        spec.channelnames[static_cast<std::size_t>(c)] = name;
-        if ((name == "A" || name == "a" || name == "Alpha") && spec.alpha_channel < 0) {
-            spec.alpha_channel = c;
-        }
-    }
-    // Colour and alpha are written as given (no division of colour by alpha for PNG).
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!image.color_space.empty()) {
-        spec.attribute("oiio:ColorSpace", image.color_space);      // PNG keeps it (a text chunk)
-        spec.attribute(color_space_attribute, image.color_space);  // EXR keeps it
-    }
-    if (!image.description.empty()) spec.attribute("ImageDescription", image.description);
-    if (!encoding.compression.empty()) spec.attribute("compression", encoding.compression);
-
-    const std::string temporary = file.temporary_path().string();
-    if (!out->open(temporary, spec)) {
-        throw Error(shown + ": cannot write: " +
-                    message_or(out->geterror(), "cannot create the file in its folder"));
-    }
-    bool ok = false;
-    if (format == ImageFormat::exr) {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-    } else if (encoding.bits == 8) {
-        const std::vector<std::uint8_t> samples = quantise<std::uint8_t>(image.pixels);
-        ok = out->write_image(OIIO::TypeDesc::UINT8, samples.data());
-    } else {
-        const std::vector<std::uint16_t> samples = quantise<std::uint16_t>(image.pixels);
-        ok = out->write_image(OIIO::TypeDesc::UINT16, samples.data());
-    }
-    const bool closed = out->close();
-    if (!ok || !closed) {
-        throw Error(shown +
-                    ": writing failed: " + message_or(out->geterror(), "the disk may be full"));
-    }
-    out.reset();
-    file.commit();
+    std::string error;
+    if (!backend().write(path.c_str(), &image, &encoding, &error)) throw Error(error);
 }
 
 }  // namespace irid::io
