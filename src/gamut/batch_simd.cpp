@@ -67,10 +67,18 @@ HWY_INLINE V clamp_clipped(V v, V zero, V max) {
 
 /// One channel's plane crossing in smits_clip_rgb: t_i = (c − bound)/(c − w) where the channel is
 /// below 0 (bound 0, numerator c itself) or above max, kept when larger than t.
-HWY_INLINE V crossing(V c, V w, V max, hn::Mask<D> low, hn::Mask<D> high, V t) {
+/// `face` records which channel gave the largest t so far (the first on ties, as the scalar loop).
+HWY_INLINE V crossing(V c, V w, V max, hn::Mask<D> low, hn::Mask<D> high, V t, V index, V& face) {
     const V num = hn::IfThenElse(low, c, hn::Sub(c, max));
     const V ti = hn::Div(num, hn::Sub(c, w));
-    return hn::IfThenElse(hn::And(hn::Or(low, high), hn::Gt(ti, t)), ti, t);
+    const auto larger = hn::And(hn::Or(low, high), hn::Gt(ti, t));
+    face = hn::IfThenElse(larger, index, face);
+    return hn::IfThenElse(larger, ti, t);
+}
+
+/// The channel of the face the colour was moved onto is exactly that face's bound.
+HWY_INLINE V on_face(V v, V face, V index, hn::Mask<D> low, V zero, V max) {
+    return hn::IfThenElse(hn::Eq(face, index), hn::IfThenElse(low, zero, max), v);
 }
 
 }  // namespace
@@ -101,12 +109,14 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
         const V y = hn::Add(hn::Add(hn::Mul(l0, r), hn::Mul(l1, g)), hn::Mul(l2, b));
         const V w = hn::Mul(y, inv);
         V t = zero;
-        t = crossing(r, w, max, low_r, high_r, t);
-        t = crossing(g, w, max, low_g, high_g, t);
-        t = crossing(b, w, max, low_b, high_b, t);
-        V rr = hn::Add(r, hn::Mul(t, hn::Sub(w, r)));
-        V gg = hn::Add(g, hn::Mul(t, hn::Sub(w, g)));
-        V bb = hn::Add(b, hn::Mul(t, hn::Sub(w, b)));
+        V face = hn::Set(d, -1.0f);
+        const V i0 = zero, i1 = hn::Set(d, 1.0f), i2 = hn::Set(d, 2.0f);
+        t = crossing(r, w, max, low_r, high_r, t, i0, face);
+        t = crossing(g, w, max, low_g, high_g, t, i1, face);
+        t = crossing(b, w, max, low_b, high_b, t, i2, face);
+        V rr = on_face(hn::Add(r, hn::Mul(t, hn::Sub(w, r))), face, i0, low_r, zero, max);
+        V gg = on_face(hn::Add(g, hn::Mul(t, hn::Sub(w, g))), face, i1, low_g, zero, max);
+        V bb = on_face(hn::Add(b, hn::Mul(t, hn::Sub(w, b))), face, i2, low_b, zero, max);
         // w >= max → white; Y <= 0 (or NaN) → black, tested first in the scalar code so it wins.
         const auto white = hn::Not(hn::Lt(w, max));
         const auto black = hn::Not(hn::Gt(y, zero));

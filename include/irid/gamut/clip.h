@@ -93,7 +93,8 @@ private:
 /// Otherwise the grey of equal luminance w = (A r + B g + C b)/(A + B + C); Y <= 0 → black,
 /// w >= max → white; else for every channel out of range the parameter t of the segment
 /// c + t (w − c) where it meets that face, t = (c − bound)/(c − w), keeping the largest t (the
-/// intersection farthest from the input), and the point c + t (w − c).
+/// intersection farthest from the input), and the point c + t (w − c), whose channel on that
+/// face is set exactly to the face's bound (0 or max) rather than to within rounding.
 template <class T>
 [[nodiscard]] std::array<T, 3> smits_clip_rgb(const std::array<T, 3>& c, const std::array<T, 3>& lum,
                                               const T& inv_lum_sum, const T& max) noexcept {
@@ -106,18 +107,22 @@ template <class T>
     const T w = y * inv_lum_sum;
     if (!(w < max)) return {max, max, max};
     T t = zero;
+    int face = -1;  // the channel whose face gave the largest t
     const bool low[3] = {low0, low1, low2};
     const bool high[3] = {high0, high1, high2};
     for (int i = 0; i < 3; ++i) {
         if (low[i]) {
             const T ti = c[i] / (c[i] - w);  // (c − 0)/(c − w)
-            if (ti > t) t = ti;
+            if (ti > t) t = ti, face = i;
         } else if (high[i]) {
             const T ti = (c[i] - max) / (c[i] - w);
-            if (ti > t) t = ti;
+            if (ti > t) t = ti, face = i;
         }
     }
-    return {c[0] + t * (w - c[0]), c[1] + t * (w - c[1]), c[2] + t * (w - c[2])};
+    std::array<T, 3> out{c[0] + t * (w - c[0]), c[1] + t * (w - c[1]), c[2] + t * (w - c[2])};
+    // The point is on that face: say so exactly rather than to within rounding.
+    if (face >= 0) out[face] = low[face] ? zero : max;
+    return out;
 }
 
 /// One clipping method on one gamut: built once (matrices, Oklab transforms), then clip() is
