@@ -53,6 +53,8 @@ TransferFunction::TransferFunction(Kind kind, double gamma) : m_kind(kind), m_ga
 
 double TransferFunction::encode(double linear) const noexcept {
     const double v = std::abs(linear);
+    // Every curve maps 1 to 1; the formulas' last bit does not (1.055 − 0.055 rounds below 1).
+    if (v == 1.0) return linear;
     double e = v;
     switch (m_kind) {
         case Kind::linear: return linear;

@@ -269,6 +269,8 @@ Rgb GamutClipper::luv_hue(const Rgb& c) const noexcept {
     // The rule of every method: no luminance is black, the white's or more is white.
     if (!(x[1] > 0.0)) return {0.0, 0.0, 0.0};
     if (!(x[1] < m_white.Y)) return {m_gamut.max(), m_gamut.max(), m_gamut.max()};
+    // X + 15Y + 3Z <= 0 (far outside the spectral locus) has no chromaticity and so no hue.
+    if (!(x[0] + 15.0 * x[1] + 3.0 * x[2] > 0.0)) return luv_lightness_hue(c);
     const Luv luv = xyz_to_luv({x[0], x[1], x[2]}, m_white);
     const double c0 = std::hypot(luv.u, luv.v);
     const double l_max = 100.0;  // L* of the white (max, max, max), the reference

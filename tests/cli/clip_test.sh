@@ -434,16 +434,30 @@ expect_folder_holds() {
 }
 
 # --- EXR (linear float) with alpha -----------------------------------------------------------
-oiiotool --pattern constant:color=1.5,-0.2,0.3,0.5 4x4 4 -d float -o "$IMG/in.exr"
+# EXR colour is premultiplied by alpha (OpenEXR's convention): (0.75, -0.1, 0.15) at alpha 0.5
+# is the colour (1.5, -0.2, 0.3), which is what gets clipped.
+oiiotool --pattern constant:color=0.75,-0.1,0.15,0.5 4x4 4 -d float -o "$IMG/in.exr"
 run_image clip --method smits "$IMG/in.exr" "$IMG/out.exr"
 expect_status 0
 expect_empty_stdout
 expect_info "$IMG/out.exr" "4 x    4, 4 channel, float openexr"
 expect_info "$IMG/out.exr" "channel list: R, G, B, A"
 expect_info "$IMG/out.exr" 'irid:ColorSpace: "srgb-linear"'
-# The same colour as the CSV clip (float precision), alpha untouched.
-expect_pixels "$IMG/out.exr" 16 "abs(\$1 - ${W%%,*}) < 1e-6 && abs(\$2) < 1e-6 && abs(\$3 - ${W##*,}) < 1e-6 && \$4 == 0.5" \
-    "the CSV result $W, alpha 0.5"
+# The same colour as the CSV clip (float precision), premultiplied again, alpha untouched.
+expect_pixels "$IMG/out.exr" 16 "abs(\$1 - 0.5 * ${W%%,*}) < 1e-6 && abs(\$2) < 1e-6 && abs(\$3 - 0.5 * ${W##*,}) < 1e-6 && \$4 == 0.5" \
+    "the CSV result $W times alpha 0.5, alpha 0.5"
+# Alpha conventions: EXR (0.4, 0.4, 0.4) at alpha 0.5 is the colour 0.8, which a PNG stores
+# unpremultiplied as sRGB code round(255 × 0.9063) = 231; an unpremultiplied PNG pixel at alpha
+# 0 is premultiplied into an EXR as 0.
+oiiotool --pattern constant:color=0.4,0.4,0.4,0.5 2x2 4 -d float -o "$IMG/grey.exr"
+run_image clip --method smits --to srgb "$IMG/grey.exr" "$IMG/grey.png"
+expect_status 0
+expect_pixels "$IMG/grey.png" 4 '$1 == 231 && $2 == 231 && $3 == 231 && $4 == 128' "sRGB 231 at alpha 128"
+oiiotool --pattern constant:color=1,0,0,0 2x2 4 -d uint8 --attrib oiio:UnassociatedAlpha 1 -o "$IMG/clear.png"
+run_image clip --method smits --from srgb "$IMG/clear.png" "$IMG/clear.exr"
+expect_status 0
+expect_pixels "$IMG/clear.exr" 4 '$1 == 0 && $2 == 0 && $3 == 0 && $4 == 0' "transparent pixel premultiplied to 0"
+rm -f "$IMG/grey.exr" "$IMG/grey.png" "$IMG/clear.png" "$IMG/clear.exr"
 expect_pixels "$IMG/out.exr" 16 'inside($1) && inside($2) && inside($3)' "RGB inside [0, 1]"
 
 # Every method on an image, including NaN and infinities: finite output inside the cube, and

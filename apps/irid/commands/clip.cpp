@@ -21,6 +21,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <filesystem>
 #include <cmath>
 #include <exception>
 #include <memory>
@@ -303,16 +305,29 @@ int run_clip_image(const ClipOptions& o, const Pipeline& p) {
     }
 
     // Gather the colour channels as the destination's linear RGB, clip, scatter back (encoded for
-    // PNG and TIFF); every other channel is left as it was.
+    // PNG and TIFF); every other channel is left as it was. EXR colour is premultiplied by alpha
+    // (associated alpha, the OpenEXR convention), PNG and TIFF colour is not: the colour is
+    // clipped unpremultiplied and premultiplied again only for an EXR output.
     const std::size_t pixels = image.pixel_count();
     const std::size_t stride = static_cast<std::size_t>(image.channels);
+    const int alpha = image.channel_index("A");
+    const auto is_exr = [](const std::string& path) {
+        std::string e = std::filesystem::path(path).extension().string();
+        for (char& ch : e) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        return e == ".exr";
+    };
+    const bool premultiplied_in = alpha >= 0 && is_exr(o.in);
+    const bool premultiplied_out = alpha >= 0 && is_exr(o.out);
     std::vector<float> colours(pixels * 3);
     parallel_for(pixels, o.threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             const float* s = &image.pixels[i * stride];
+            // Unpremultiply where alpha is above 0; a fully transparent pixel keeps its values.
+            const float a = premultiplied_in ? s[alpha] : 1.0f;
+            const float k = a > 0.0f ? 1.0f / a : 1.0f;
             Rgb c{};
             try {
-                c = p.to_linear({s[rgb[0]], s[rgb[1]], s[rgb[2]]});
+                c = p.to_linear({s[rgb[0]] * k, s[rgb[1]] * k, s[rgb[2]] * k});
             } catch (const Error& e) {
                 throw Error(o.in + ": pixel (" +
                             std::to_string(i % static_cast<std::size_t>(image.width)) + ", " +
@@ -330,6 +345,12 @@ int run_clip_image(const ClipOptions& o, const Pipeline& p) {
             Rgb c{colours[i * 3], colours[i * 3 + 1], colours[i * 3 + 2]};
             if (encoded_out) c = p.dest->encode(c);
             float* d = &image.pixels[i * stride];
+            // Premultiply for EXR, except a transparent EXR pixel, whose colour (light added
+            // without covering) was never divided by its alpha of 0.
+            if (premultiplied_out && (d[alpha] > 0.0f || !premultiplied_in)) {
+                const double a = d[alpha];
+                c = {c.r * a, c.g * a, c.b * a};
+            }
             d[rgb[0]] = static_cast<float>(c.r);
             d[rgb[1]] = static_cast<float>(c.g);
             d[rgb[2]] = static_cast<float>(c.b);

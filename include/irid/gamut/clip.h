@@ -13,7 +13,10 @@
 // - Non-finite input: NaN channels are taken as 0 and ±Inf as ±1e30 before clipping, so every
 //   output is finite (an image never receives a NaN).
 // - Luminance at or below 0 gives black; at or above the white's (max, max, max) it gives that
-//   white: no colour of that luminance is in the gamut except the extremes.
+//   white: no colour of that luminance is in the gamut except the extremes. css and oklab apply
+//   the same rule to Oklab lightness instead (L <= 0 black, L at or above the white's L — 1 for
+//   the D65 spaces' white to 1e-6, cbrt(max) at an HDR peak — white), as CSS Color 4 does.
+//   With an HDR peak, CIELUV's L* is relative to the peak's white.
 // - A colour exactly on a face (a channel equal to 0 or to max) is in the gamut and unchanged.
 // - The destination's maximum may differ from 1 (an HDR peak): the cube is [0, max]³.
 
