@@ -1,0 +1,114 @@
+#!/usr/bin/env bash
+# Image benchmark of `irid clip`: the cost of clipping a 4096×4096 RGB float EXR compared with
+# the pure read + write of the same file by OpenImageIO's oiiotool.
+#
+#   bench/image_clip_bench.sh IRID [WORKDIR] [RUNS]
+#
+#   IRID     path of the irid binary (e.g. build/irid)
+#   WORKDIR  where the images are written (default: a new temporary directory, removed at exit);
+#            about 3 × 90 MB
+#   RUNS     timed runs of each command, the best (fastest) kept (default 5)
+#
+# Needs oiiotool (Debian: openimageio-tools). Steps:
+#   1. oiiotool writes in.exr: a 4-corner gradient whose corners are all outside the sRGB cube
+#      (1.6, -0.3, 0.2), (-0.2, 1.4, 0.1), (0.3, 0.2, 1.7), (1.2, 1.2, -0.4), so that many pixels
+#      (42 %) are out of gamut; 3 float channels, OpenImageIO's default EXR compression (zip).
+#   2. Times, best of RUNS (wall clock; the two commands alternate):
+#        io:   oiiotool in.exr -o out_io.exr                               read + write
+#        clip: IRID clip --method smits in.exr out_clip.exr                read + clip + write
+#      Both run on all hardware threads (their defaults) and write a float EXR with the same
+#      default compression.
+#   3. Prints both times and the overhead (clip − io) / io in percent, and the fraction of the
+#      input's pixels out of gamut as a check of the test image.
+# The requirement: the overhead is no more than 25 %. The exit status is 0 when it holds, 1 when
+# it does not, 2 on a usage or tool error.
+
+set -Eeuo pipefail
+trap 'echo "error: command failed at line $LINENO" >&2; exit 2' ERR
+
+usage() { sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//'; }
+if [[ $# -ge 1 && ( "$1" == "-h" || "$1" == "--help" ) ]]; then
+    usage
+    exit 0
+fi
+if [[ $# -lt 1 || $# -gt 3 ]]; then
+    usage >&2
+    exit 2
+fi
+irid=$1
+runs=${3:-5}
+size=4096
+
+if [[ ! -x "$irid" ]]; then
+    echo "error: $irid is not an executable" >&2
+    exit 2
+fi
+if ! command -v oiiotool > /dev/null; then
+    echo "error: oiiotool not found (Debian: apt-get install openimageio-tools)" >&2
+    exit 2
+fi
+if ! [[ "$runs" =~ ^[1-9][0-9]*$ ]]; then
+    echo "error: RUNS must be a positive integer, not '$runs'" >&2
+    exit 2
+fi
+
+if [[ $# -ge 2 ]]; then
+    work=$2
+    mkdir -p "$work"
+else
+    work=$(mktemp -d)
+    trap 'rm -rf "$work"' EXIT
+fi
+
+in=$work/in.exr
+oiiotool --pattern fill:topleft=1.6,-0.3,0.2:topright=-0.2,1.4,0.1:bottomleft=0.3,0.2,1.7:bottomright=1.2,1.2,-0.4 \
+    "${size}x${size}" 3 -d float -o "$in"
+
+# Out-of-gamut pixels: all minus those with every channel in [0, 1] ("within range" of
+# oiiotool's --rangecheck; its "<" and ">" counts may both include the same pixel).
+pixels=$((size * size))
+within=$(oiiotool "$in" --rangecheck 0,0,0 1,1,1 2>&1 | awk '/within range/ { print $1 }' || true)
+outside=""
+if [[ "$within" =~ ^[0-9]+$ ]]; then outside=$((pixels - within)); fi
+
+# Wall-clock seconds of one run of the command.
+seconds() {
+    local start end
+    start=$(date +%s.%N)
+    "$@" > /dev/null
+    end=$(date +%s.%N)
+    awk -v a="$start" -v b="$end" 'BEGIN { printf "%.6f", b - a }'
+}
+# The smaller of two numbers ($2 when $1 is empty).
+smaller() {
+    if [[ -z "$1" ]] || awk -v a="$2" -v b="$1" 'BEGIN { exit !(a < b) }'; then echo "$2"; else echo "$1"; fi
+}
+
+# One untimed run of each to warm the page cache and the binaries.
+oiiotool "$in" -o "$work/out_io.exr" > /dev/null
+"$irid" clip --method smits "$in" "$work/out_clip.exr" > /dev/null
+
+# The two commands alternate, so that a burst of other work on the machine hits both alike.
+io="" clip=""
+for ((i = 0; i < runs; ++i)); do
+    io=$(smaller "$io" "$(seconds oiiotool "$in" -o "$work/out_io.exr")")
+    clip=$(smaller "$clip" "$(seconds "$irid" clip --method smits "$in" "$work/out_clip.exr")")
+done
+
+overhead=$(awk -v io="$io" -v c="$clip" 'BEGIN { printf "%.1f", 100 * (c - io) / io }')
+echo "image:                 ${size}x${size} RGB float EXR, $(du -h "$in" | cut -f1) on disk"
+if [[ -n "$outside" ]]; then
+    echo "out of gamut:          $outside of $pixels pixels" \
+        "($(awk -v o="$outside" -v p="$pixels" 'BEGIN { printf "%.1f", 100 * o / p }') %)"
+fi
+echo "runs:                  best of $runs (wall clock)"
+echo "oiiotool (read+write): ${io} s"
+echo "irid clip --method smits (read+clip+write): ${clip} s"
+echo "clip overhead:         ${overhead} % (requirement: <= 25 %)"
+
+if awk -v o="$overhead" 'BEGIN { exit !(o <= 25) }'; then
+    echo "PASS"
+else
+    echo "FAIL"
+    exit 1
+fi
