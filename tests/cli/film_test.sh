@@ -20,16 +20,10 @@ if [[ $# -ne 2 ]]; then
     exit 2
 fi
 IRID=$1
+# shellcheck source=lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 DATA=$2   # not read: every expectation here is a closed form (kept for the common interface)
 : "$DATA"
-
-TMP=$(mktemp -d) || exit 2
-trap 'rm -rf "$TMP"' EXIT
-
-passed=0
-failed=0
-STATUS=0
-RAN=
 
 # --- running the program ------------------------------------------------------------------
 
@@ -50,44 +44,7 @@ num() {
 
 # --- reporting ----------------------------------------------------------------------------
 
-# show TEXT: TEXT quoted on one line (newlines escaped), cut short when long.
-show() {
-    local s=${1@Q}
-    ((${#s} > 240)) && s="${s:0:240}..."
-    printf '%s' "$s"
-}
-
-# slurp VAR FILE: sets VAR to the exact contents of FILE, trailing newline included.
-slurp() {
-    local s
-    s=$(cat "$2" && printf x)
-    printf -v "$1" '%s' "${s%x}"
-}
-
-pass() { passed=$((passed + 1)); }
-
-# fail EXPECTED GOT: one line naming the command that ran.
-fail() {
-    failed=$((failed + 1))
-    printf 'FAIL: %s | expected: %s | got: %s\n' "$RAN" "$1" "$2"
-}
-
-# What came out, for messages: the status, stdout and (when there is any) stderr.
-outcome() {
-    local out err s
-    slurp out "$TMP/out"
-    slurp err "$TMP/err"
-    s="status $STATUS, stdout $(show "$out")"
-    [[ -n $err ]] && s+=", stderr $(show "$err")"
-    printf '%s' "$s"
-}
-
 # --- checks on the last run ---------------------------------------------------------------
-
-# expect_status N
-expect_status() {
-    if [[ $STATUS -eq $1 ]]; then pass; else fail "exit status $1" "$(outcome)"; fi
-}
 
 # expect_header TEXT: status 0 and the first line of stdout is TEXT.
 expect_header() {
@@ -96,18 +53,6 @@ expect_header() {
     if [[ $STATUS -eq 0 && $first == "$1" ]]; then pass; else fail "status 0, first line $(show "$1")" "$(outcome)"; fi
 }
 
-# expect_empty_stdout: a failed run prints nothing on stdout.
-expect_empty_stdout() {
-    if [[ ! -s $TMP/out ]]; then pass; else fail "empty stdout" "$(outcome)"; fi
-}
-
-# expect_stderr_has TEXT / expect_stdout_has TEXT: a fixed string occurs in the stream.
-expect_stderr_has() {
-    if grep -qF -- "$1" "$TMP/err"; then pass; else fail "stderr containing $(show "$1")" "$(outcome)"; fi
-}
-expect_stdout_has() {
-    if grep -qF -- "$1" "$TMP/out"; then pass; else fail "stdout containing $(show "$1")" "$(outcome)"; fi
-}
 # expect_stdout_lacks TEXT: the fixed string does not occur on stdout.
 expect_stdout_lacks() {
     if ! grep -qF -- "$1" "$TMP/out"; then pass; else fail "stdout without $(show "$1")" "$(outcome)"; fi
