@@ -2,9 +2,10 @@
 //
 // The input is 2^20 fully out-of-gamut colours of linear sRGB: uniform in [-0.5, 1.5]^3
 // (std::mt19937, fixed seed), each colour redrawn until at least one channel lies outside [0, 1].
-// That is 12 MiB of floats in and 12 MiB out, far larger than the L2, so the fast paths are
-// measured against main memory. Both buffers are allocated and written once before the timed
-// loop. One item is one colour (12 bytes read, 12 bytes written); bytes/s count the input bytes.
+// That is 12 MiB of floats in and 12 MiB out, six times the L2, so the fast paths stream from
+// beyond it (the shared L3 or main memory). Both buffers are allocated and written once before
+// the timed loop. One item is one colour (12 bytes read, 12 bytes written); bytes/s count the
+// input bytes.
 //
 // Baseline in the same binary, so that the ratios hold on a noisy machine:
 //   BM_Memcpy  memcpy of the same 12 MiB buffer into the same output buffer: the cost of merely
