@@ -132,6 +132,7 @@ GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut)
     const Vec3 white = m_rgb_to_xyz * Vec3{max, max, max};
     m_white = {white[0], white[1], white[2]};
     m_white_oklab_l = to_oklab({max, max, max}).L;
+    m_white_uv = xyz_to_uv_prime(m_white);
 }
 
 Oklab GamutClipper::to_oklab(const Rgb& c) const noexcept {
@@ -229,7 +230,7 @@ double GamutClipper::luv_chroma_limit(double y, double du, double dv) const noex
     // At luminance y and chromaticity (u', v'): X = 9 y u' / (4 v'), Z = y (12 − 3u' − 20v')/(4v'),
     // so channel i = y N_i / (4 v') with N_i = 9 m_i0 u' + 4 m_i1 v' + m_i2 (12 − 3u' − 20v'),
     // linear in s; channel >= 0 ⇔ N_i >= 0 and channel <= max ⇔ y N_i − 4 max v' <= 0 (v' > 0).
-    const UvPrime n = xyz_to_uv_prime(m_white);
+    const UvPrime& n = m_white_uv;
     const double max = m_gamut.max();
     double limit = 1.0;
     for (int i = 0; i < 3; ++i) {
@@ -256,7 +257,7 @@ Rgb GamutClipper::luv_lightness_hue(const Rgb& c) const noexcept {
     if (!(y < m_white.Y)) return {m_gamut.max(), m_gamut.max(), m_gamut.max()};
     const double d = x[0] + 15.0 * x[1] + 3.0 * x[2];
     if (!(d > 0.0)) return smits(c);  // no chromaticity: fall back to the thesis' clip
-    const UvPrime n = xyz_to_uv_prime(m_white);
+    const UvPrime& n = m_white_uv;
     const UvPrime uv{4.0 * x[0] / d, 9.0 * x[1] / d};
     const double s = luv_chroma_limit(y, uv.u - n.u, uv.v - n.v);
     const double u = n.u + s * (uv.u - n.u), v = n.v + s * (uv.v - n.v);

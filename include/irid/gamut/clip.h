@@ -167,6 +167,7 @@ private:
     Mat3 m_rgb_to_xyz, m_xyz_to_rgb;
     Mat3 m_rgb_to_lms, m_lms_to_rgb;  // Oklab's LMS (before the cube root)
     Xyz m_white;                      // XYZ of (max, max, max)
+    UvPrime m_white_uv;               // its u'v', the neutral point of the CIELUV methods
     double m_white_oklab_l;           // Oklab L of (max, max, max)
 };
 
