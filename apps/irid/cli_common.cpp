@@ -2,11 +2,7 @@
 
 #include <irid/error.h>
 
-#include <filesystem>
-#include <fstream>
 #include <iostream>
-
-#include <unistd.h>
 
 namespace irid::cli {
 
@@ -25,33 +21,6 @@ void append_csv_line(std::string& out, std::span<const double> values) {
 void write_stdout(const std::string& text) {
     std::cout << text << std::flush;
     if (!std::cout) throw Error("cannot write to standard output");
-}
-
-void write_file_atomically(const std::string& path, const std::string& text) {
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    if (fs::is_directory(target)) throw Error(path + ": is a directory; give a file name");
-    fs::path temporary = target;
-    temporary += ".tmp-" + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error(path + ": cannot create " + temporary.string() + " for writing");
-        out << text;
-        out.flush();
-        if (!out) {
-            out.close();
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            throw Error(path + ": writing failed (disk full?)");
-        }
-    }
-    std::error_code ec;
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw Error(path + ": cannot rename the finished file into place: " + ec.message());
-    }
 }
 
 std::string join(const std::vector<std::string>& names) {

@@ -47,10 +47,6 @@ void append_csv_line(std::string& out, std::span<const double> values);
 /// Writes the whole output at once; throws irid::Error when standard output fails.
 void write_stdout(const std::string& text);
 
-/// Writes a file so that it appears only when complete: into a temporary file in the same
-/// folder, then renamed over the destination. Throws irid::Error naming the path on failure.
-void write_file_atomically(const std::string& path, const std::string& text);
-
 /// "a, b, c" for messages.
 [[nodiscard]] std::string join(const std::vector<std::string>& names);
 

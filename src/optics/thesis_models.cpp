@@ -254,21 +254,28 @@ DenseSpectrum wing_spectrum(const MorphoParameters& wing, double theta_rad) {
         [&](double lambda_nm) { return morpho_reflectance(wing, lambda_nm, theta_rad); });
 }
 
-/// The mean of wing_spectrum over the blend's samples, for a validated wing and blend.
+/// The blended wing on the 1 nm grid, for a validated wing and blend.
 DenseSpectrum blended_wing_spectrum(const MorphoParameters& wing, const MorphoBlend& blend,
                                     double theta_rad) {
-    const double step = (blend.max_nm - blend.min_nm) / static_cast<double>(blend.samples - 1);
-    MorphoParameters sample = wing;
-    double& varied = blend.varies == MorphoBlendThickness::d1 ? sample.d1_nm : sample.d2_nm;
-    DenseSpectrum sum;
-    for (int i = 0; i < blend.samples; ++i) {
-        varied = blend.min_nm + step * static_cast<double>(i);
-        sum += wing_spectrum(sample, theta_rad);
-    }
-    return sum * (1.0 / static_cast<double>(blend.samples));
+    return DenseSpectrum::from_function([&](double lambda_nm) {
+        return morpho_blend_reflectance(wing, blend, lambda_nm, theta_rad);
+    });
 }
 
 }  // namespace
+
+double morpho_blend_reflectance(const MorphoParameters& wing, const MorphoBlend& blend,
+                                double lambda_nm, double theta_rad) noexcept {
+    const double step = (blend.max_nm - blend.min_nm) / static_cast<double>(blend.samples - 1);
+    MorphoParameters sample = wing;
+    double& varied = blend.varies == MorphoBlendThickness::d1 ? sample.d1_nm : sample.d2_nm;
+    double sum = 0.0;
+    for (int i = 0; i < blend.samples; ++i) {
+        varied = blend.min_nm + step * static_cast<double>(i);
+        sum += morpho_reflectance(sample, lambda_nm, theta_rad);
+    }
+    return sum * (1.0 / static_cast<double>(blend.samples));
+}
 
 DenseSpectrum morpho_spectrum(const MorphoParameters& wing, double angle_deg) {
     validate_morpho(wing);

@@ -37,8 +37,9 @@ int run_film(const FilmCommand& c) {
     } else {
         const bool exact = film.model == FilmModel::exact;
         out = exact ? "wavelength_nm,R,T\n" : "wavelength_nm,R\n";
+        const auto at = film.spectrum(film.angle_rad);
         for (const double lambda : range.values()) {
-            const Optics o = film.evaluate(lambda, film.angle_rad);
+            const Optics o = at(lambda);
             if (exact) append_csv_line(out, std::array{lambda, o.R, o.T});
             else append_csv_line(out, std::array{lambda, o.R});
         }

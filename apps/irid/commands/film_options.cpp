@@ -268,7 +268,7 @@ double Film::morpho_thickness_nm(double angle_rad_) const {
     return morpho_effective_thickness_nm(morpho, angle_rad_);
 }
 
-Optics Film::evaluate(double lambda_nm, double angle, std::optional<double> thickness_nm) const {
+std::function<Optics(double)> Film::spectrum(double angle, std::optional<double> thickness_nm) const {
     const auto thickness = [&](std::size_t i) {
         return thickness_nm && i == 0 ? *thickness_nm : layers[i].thickness_nm.value_or(0.0);
     };
@@ -278,30 +278,27 @@ Optics Film::evaluate(double lambda_nm, double angle, std::optional<double> thic
             for (std::size_t i = 0; i < layers.size(); ++i) {
                 stack_layers.push_back({layers[i].material, thickness(i)});
             }
-            return FilmStack(ambient, std::move(stack_layers), substrate).evaluate(lambda_nm, angle, polarization);
+            return [stack = FilmStack(ambient, std::move(stack_layers), substrate), angle,
+                    p = polarization](double lambda_nm) { return stack.evaluate(lambda_nm, angle, p); };
         }
-        case FilmModel::thesis: {
-            const SingleFilm film{ambient, layers.front().material, substrate};
-            return {thesis_single_film_reflectance(film, thickness(0), lambda_nm, angle, k, phase_change), 0.0};
-        }
-        case FilmModel::thesis_multilayer: {
-            const double n = real_index(layers.front().material, lambda_nm);
-            const double t_theta = thesis_multilayer_effective_thickness_nm(thickness(0), n, angle);
-            return {thesis_multilayer_reflectance(lambda_nm, t_theta, periods, k), 0.0};
-        }
-        case FilmModel::morpho: {
-            if (!blend) return {morpho_reflectance(morpho, lambda_nm, angle), 0.0};
-            double sum = 0.0;
-            for (int i = 0; i < blend->samples; ++i) {
-                MorphoParameters wing = morpho;
-                const double d = blend->samples == 1
-                                     ? blend->min_nm
-                                     : blend->min_nm + (blend->max_nm - blend->min_nm) * i / (blend->samples - 1);
-                (blend->varies == MorphoBlendThickness::d2 ? wing.d2_nm : wing.d1_nm) = d;
-                sum += morpho_reflectance(wing, lambda_nm, angle);
-            }
-            return {sum / blend->samples, 0.0};
-        }
+        case FilmModel::thesis:
+            return [film = SingleFilm{ambient, layers.front().material, substrate}, t = thickness(0),
+                    angle, k_ = k, phase = phase_change](double lambda_nm) {
+                return Optics{thesis_single_film_reflectance(film, t, lambda_nm, angle, k_, phase), 0.0};
+            };
+        case FilmModel::thesis_multilayer:
+            return [material = layers.front().material, t = thickness(0), angle, l = periods,
+                    k_ = k](double lambda_nm) {
+                const double n = real_index(material, lambda_nm);
+                const double t_theta = thesis_multilayer_effective_thickness_nm(t, n, angle);
+                return Optics{thesis_multilayer_reflectance(lambda_nm, t_theta, l, k_), 0.0};
+            };
+        case FilmModel::morpho:
+            return [wing = morpho, b = blend, angle](double lambda_nm) {
+                return Optics{b ? morpho_blend_reflectance(wing, *b, lambda_nm, angle)
+                                : morpho_reflectance(wing, lambda_nm, angle),
+                              0.0};
+            };
     }
     return {};
 }
@@ -313,7 +310,8 @@ FilmColor Film::color(const Colorimeter& colorimeter, double angle,
         return PreparedFilm(film, angle).color(thickness_nm.value_or(layers.front().thickness_nm.value_or(0.0)),
                                                colorimeter);
     }
-    const Xyz xyz = colorimeter.xyz_of([&](double lambda) { return evaluate(lambda, angle, thickness_nm).R; });
+    const auto at = spectrum(angle, thickness_nm);
+    const Xyz xyz = colorimeter.xyz_of([&](double lambda) { return at(lambda).R; });
     return {xyz, colorimeter.linear_rgb(xyz)};
 }
 

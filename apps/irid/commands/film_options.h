@@ -11,6 +11,7 @@
 #include <irid/optics/multilayer.h>
 #include <irid/optics/thesis_models.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -72,10 +73,11 @@ struct Film {
     MorphoParameters morpho;
     std::optional<MorphoBlend> blend;
 
-    /// Reflectance (and transmittance, exact model only) at a wavelength, for the film with the
-    /// varied thickness (the single layer's, or the multilayer's period) replaced when given.
-    [[nodiscard]] Optics evaluate(double lambda_nm, double angle_rad,
-                                  std::optional<double> thickness_nm = std::nullopt) const;
+    /// Reflectance (and transmittance, exact model only) as a function of wavelength [nm] at an
+    /// angle, for the film with the varied thickness (the single layer's, or the multilayer's
+    /// period) replaced when given. The stack is built once, here, not per wavelength.
+    [[nodiscard]] std::function<Optics(double)> spectrum(
+        double angle_rad, std::optional<double> thickness_nm = std::nullopt) const;
     /// The colour at 1 nm over 360-830 nm.
     [[nodiscard]] FilmColor color(const Colorimeter& colorimeter, double angle_rad,
                                   std::optional<double> thickness_nm = std::nullopt) const;

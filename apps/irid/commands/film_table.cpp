@@ -8,6 +8,7 @@
 #include "film_options.h"
 
 #include <irid/color.h>
+#include <irid/io/atomic_file.h>
 
 #include <array>
 #include <cmath>
@@ -63,7 +64,7 @@ int run_film_table(const FilmTableCommand& c) {
         }
     }
     if (c.output.empty() || c.output == "-") write_stdout(out);
-    else write_file_atomically(c.output, out);
+    else io::write_text_file_atomically(c.output, out);
     return exit_success;
 }
 

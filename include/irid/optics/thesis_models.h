@@ -221,6 +221,11 @@ void validate_morpho_blend(const MorphoBlend& blend);
 /// parameters are valid and 0° ≤ angle_deg < 90°.
 [[nodiscard]] DenseSpectrum morpho_spectrum(const MorphoParameters& wing, double angle_deg = 0.0);
 
+/// The blend's mean reflectance at one wavelength and angle θ [rad] in air, for a wing and blend
+/// that passed validate_morpho and validate_morpho_blend.
+[[nodiscard]] double morpho_blend_reflectance(const MorphoParameters& wing, const MorphoBlend& blend,
+                                              double lambda_nm, double theta_rad) noexcept;
+
 /// The blended spectrum (see MorphoBlend): the mean of morpho_spectrum over the samples of the
 /// varied thickness, whose value in `wing` is not used. Throws irid::Error as morpho_spectrum and
 /// validate_morpho_blend.
