@@ -31,6 +31,9 @@ int main(int argc, char** argv) {
     add_film_error_command(app, runner);
     add_clip_command(app, runner);
     add_clip_report_command(app, runner);
+    add_figure_command(app, runner);
+    add_render_command(app, runner);
+    add_gallery_command(app, runner);
 
     // CLI11 reports an unknown command word as a missing subcommand; name it instead.
     if (argc > 1 && argv[1][0] != '-') {

@@ -277,6 +277,28 @@ double morpho_blend_reflectance(const MorphoParameters& wing, const MorphoBlend&
     return sum * (1.0 / static_cast<double>(blend.samples));
 }
 
+double morpho_blend_reflectance_continuous(const MorphoParameters& wing, const MorphoBlend& blend,
+                                           double lambda_nm, double theta_rad) noexcept {
+    MorphoParameters lo = wing, hi = wing;
+    double& lo_varied = blend.varies == MorphoBlendThickness::d1 ? lo.d1_nm : lo.d2_nm;
+    double& hi_varied = blend.varies == MorphoBlendThickness::d1 ? hi.d1_nm : hi.d2_nm;
+    lo_varied = blend.min_nm;
+    hi_varied = blend.max_nm;
+    const double to_x = 2.0 * std::numbers::pi / lambda_nm;
+    const double xa = to_x * morpho_effective_thickness_nm(lo, theta_rad);
+    const double xb = to_x * morpho_effective_thickness_nm(hi, theta_rad);
+    // A range too narrow to average over (grazing incidence with d₁ varied, or min = max).
+    if (std::abs(xb - xa) < 1e-9) return morpho_reflectance(lo, lambda_nm, theta_rad);
+    const int l = wing.periods;
+    double mean = l + 1.0;
+    for (int k = 1; k <= l; ++k) {
+        const double twice_k = 2.0 * k;
+        mean += 2.0 * (l + 1.0 - k) * (std::sin(twice_k * xb) - std::sin(twice_k * xa)) /
+                (twice_k * (xb - xa));
+    }
+    return 0.5 * wing.K * mean;
+}
+
 DenseSpectrum morpho_spectrum(const MorphoParameters& wing, double angle_deg) {
     validate_morpho(wing);
     require_angle("morpho", angle_deg);

@@ -529,5 +529,39 @@ TEST(ThesisModelsValidation, TableRangesAreChecked) {
         "samples");
 }
 
+// The closed form (Fejér kernel) against a midpoint-rule mean of eq. 25 with many samples, at
+// angles, wavelengths and both varied thicknesses.
+TEST(Morpho, ContinuousBlendEqualsTheMeanOverTheThicknessRange) {
+    for (const auto varies : {MorphoBlendThickness::d1, MorphoBlendThickness::d2}) {
+        const MorphoParameters wing;  // d1 150, d2 50, n 1.56, l 12, K 1
+        const MorphoBlend blend{50.0, 150.0, 2, varies};
+        for (const double theta : {0.0, 0.4, 1.0, 1.45}) {
+            for (const double lambda : {380.0, 456.0, 512.5, 700.0}) {
+                constexpr int n = 200000;
+                MorphoParameters w = wing;
+                double& varied = varies == MorphoBlendThickness::d1 ? w.d1_nm : w.d2_nm;
+                double sum = 0.0;
+                for (int i = 0; i < n; ++i) {
+                    varied = 50.0 + 100.0 * (i + 0.5) / n;
+                    sum += morpho_reflectance(w, lambda, theta);
+                }
+                const double expected = sum / n;
+                EXPECT_NEAR(morpho_blend_reflectance_continuous(wing, blend, lambda, theta),
+                            expected, 1e-6 * (1.0 + expected))
+                    << "theta " << theta << " lambda " << lambda;
+            }
+        }
+    }
+}
+
+TEST(Morpho, ContinuousBlendOfAnEmptyRangeIsTheWingItself) {
+    MorphoParameters wing;
+    wing.d1_nm = 120.0;
+    const MorphoBlend blend{120.0, 120.0, 2, MorphoBlendThickness::d1};
+    for (const double lambda : {400.0, 456.0, 600.0})
+        EXPECT_DOUBLE_EQ(morpho_blend_reflectance_continuous(wing, blend, lambda, 0.3),
+                         morpho_reflectance(wing, lambda, 0.3));
+}
+
 }  // namespace
 }  // namespace irid

@@ -226,6 +226,18 @@ void validate_morpho_blend(const MorphoBlend& blend);
 [[nodiscard]] double morpho_blend_reflectance(const MorphoParameters& wing, const MorphoBlend& blend,
                                               double lambda_nm, double theta_rad) noexcept;
 
+/// The blend's continuous form: the mean of eq. 25 over the varied thickness spread uniformly
+/// over [min_nm, max_nm] (instead of blend.samples equal steps), in closed form. The Fejér
+/// kernel (sin((l+1)x) / sin x)² = (l+1) + 2 Σ_{k=1}^{l} (l+1−k) cos 2kx, with x = 2πt_θ/λ
+/// linear in the varied thickness, averages term by term: cos 2kx over [x_a, x_b] has the mean
+/// (sin 2kx_b − sin 2kx_a) / (2k (x_b − x_a)). O(l) per wavelength, exact to rounding; the
+/// sampled blend converges to it as the samples grow. For a wing and blend that passed
+/// validation.
+[[nodiscard]] double morpho_blend_reflectance_continuous(const MorphoParameters& wing,
+                                                         const MorphoBlend& blend,
+                                                         double lambda_nm,
+                                                         double theta_rad) noexcept;
+
 /// The blended spectrum (see MorphoBlend): the mean of morpho_spectrum over the samples of the
 /// varied thickness, whose value in `wing` is not used. Throws irid::Error as morpho_spectrum and
 /// validate_morpho_blend.

@@ -1,0 +1,323 @@
+// irid gallery: every scene, figure and table of irid on one HTML page, beside the thesis'
+// figure numbers, with the numbers measured while making them.
+//
+//   irid gallery -o DIR [--width W] [--height H] [--spp N] [--figure-width W] [--threads N]
+//                [--quiet]
+//
+// Writes DIR/index.html and the images it shows (PNG) into DIR. The page is plain HTML and CSS
+// and references only files in DIR, so it opens from the file system without a network.
+#include "../cli_common.h"
+
+#include <irid/error.h>
+#include <irid/figures/figures.h>
+#include <irid/gamut/clip.h>
+#include <irid/gamut/report.h>
+#include <irid/io/atomic_file.h>
+#include <irid/io/image.h>
+#include <irid/render/render.h>
+#include <irid/render/scene.h>
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace irid::cli {
+namespace {
+
+struct GalleryOptions {
+    std::string dir;
+    int width = 1024;
+    int height = 768;
+    int spp = 4;
+    int figure_width = 960;
+    int threads = 0;
+    bool quiet = false;
+};
+
+std::string escape(std::string_view s) {
+    std::string out;
+    for (const char c : s) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+struct SceneInfo {
+    const char* name;
+    const char* thesis_figure;
+    const char* title;
+    const char* what;
+};
+
+constexpr SceneInfo scene_infos[] = {
+    {"oil-slick", "Figure 7", "An oil slick on wet pavement",
+     "Mineral oil floating on a water film over asphalt; the thickness is Smits' eq. 28, "
+     "t = t<sub>max</sub> e<sup>−k₁(x² + y² + k₂ turb(x, y))</sup>, and the pavement is bump-mapped "
+     "through dnoise. Expect concentric, irregular rings whose colours change with the view angle."},
+    {"soap-bubbles", "Figure 8", "Soap bubbles",
+     "Water films in air whose thickness grows downwards as the film drains, with turbulence; "
+     "reflection and transmission through each film are both coloured by interference. Expect "
+     "black films at the tops, where they are thinnest, and horizontal bands below."},
+    {"morpho", "Figure 9", "A Morpho butterfly",
+     "Wings coloured by the thesis' multilayer model (eq. 25 with eq. 29: twelve chitin mullions, "
+     "d₁ = 150 nm, d₂ = 50 nm), blended over mullion spacings, indexed by the viewing angle, on "
+     "slightly bumpy wings. Expect blue that shifts towards violet as the angle grows."},
+};
+
+class Page {
+public:
+    void add(const std::string& html) { m_html += html; }
+    [[nodiscard]] const std::string& html() const { return m_html; }
+
+    void image(const std::string& file, int w, int h, const std::string& alt, const std::string& thesis,
+               const std::string& title, const std::string& caption,
+               const std::vector<std::pair<std::string, std::string>>& measurements) {
+        m_html += "<figure>\n";
+        m_html += fmt::format(
+            "<a href=\"{0}\"><img src=\"{0}\" width=\"{1}\" height=\"{2}\" alt=\"{3}\"></a>\n",
+            escape(file), w, h, escape(alt));
+        m_html += "<figcaption><p class=\"title\">";
+        if (!thesis.empty())
+            m_html += fmt::format("<span class=\"thesis\">Thesis {}</span> ", escape(thesis));
+        m_html += escape(title) + "</p>\n<p>" + caption + "</p>\n";
+        if (!measurements.empty()) {
+            m_html += "<table class=\"numbers\">\n";
+            for (const auto& [k, v] : measurements)
+                m_html += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", escape(k), escape(v));
+            m_html += "</table>\n";
+        }
+        m_html += "</figcaption>\n</figure>\n";
+    }
+
+private:
+    std::string m_html;
+};
+
+constexpr const char* style = R"css(
+body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 2em auto; max-width: 1100px;
+       color: #1b1b1b; background: #fafafa; line-height: 1.45; padding: 0 1em; }
+h1 { font-size: 1.7em; margin-bottom: 0.2em; } h2 { margin-top: 2em; border-bottom: 1px solid #ccc; }
+figure { margin: 1.5em 0; } img { max-width: 100%; height: auto; border: 1px solid #ddd; background: #fff; }
+figcaption { font-size: 0.92em; } .title { font-weight: bold; margin-bottom: 0.2em; }
+.thesis { background: #2a4d8f; color: #fff; padding: 0.05em 0.45em; border-radius: 3px; font-weight: normal; }
+table { border-collapse: collapse; margin: 0.6em 0; font-size: 0.9em; }
+th, td { border: 1px solid #ccc; padding: 0.2em 0.6em; text-align: left; }
+table.numbers th { font-weight: normal; color: #555; }
+.pair { display: flex; gap: 1em; flex-wrap: wrap; } .pair figure { flex: 1 1 300px; margin: 0.5em 0; }
+code { background: #eee; padding: 0 0.2em; }
+)css";
+
+/// The body of an HTML file written by a table figure (its <body> contents, or all of it).
+std::string html_fragment(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    std::string s = ss.str();
+    const auto b = s.find("<body");
+    if (b != std::string::npos) {
+        const auto start = s.find('>', b);
+        const auto end = s.find("</body>");
+        if (start != std::string::npos && end != std::string::npos) return s.substr(start + 1, end - start - 1);
+    }
+    return s;
+}
+
+std::string format_number(double v, int digits = 2) { return fmt::format("{:.{}f}", v, digits); }
+
+int run_gallery(const GalleryOptions& o) {
+    namespace fs = std::filesystem;
+    const auto start = std::chrono::steady_clock::now();
+    const fs::path dir(o.dir);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        throw Error(fmt::format("cannot create the folder '{}': {}", o.dir, ec.message()));
+    auto say = [&](const std::string& what) {
+        if (!o.quiet) fmt::print(stderr, "irid gallery: {}\n", what);
+    };
+
+    Page page;
+    page.add(
+        "<h1>irid — the gallery</h1>\n"
+        "<p>What irid computes, figure by figure, beside Brian Smits' 1990 thesis "
+        "<i>Interference Phenomena and an Efficient Solution to the Out of Gamut Colors "
+        "Problem</i>. Every image on this page was made by this run of <code>irid gallery</code>; "
+        "the numbers were measured while making them. Badges give the thesis' figure number "
+        "where the thesis has one.</p>\n");
+
+    // --- The scenes ------------------------------------------------------------------------
+    page.add("<h2>The thesis' scenes</h2>\n");
+    render::RenderOptions ropt;
+    ropt.threads = o.threads;
+    std::vector<std::pair<std::string, std::string>> speed_rows;
+    for (const SceneInfo& info : scene_infos) {
+        const std::vector<std::string> size = {fmt::format("image.width={}", o.width),
+                                               fmt::format("image.height={}", o.height),
+                                               fmt::format("image.spp={}", o.spp)};
+        const render::Scene scene = render::load_scene(info.name, size);
+        say(fmt::format("rendering {} ({}×{}, {} spp)", info.name, o.width, o.height, o.spp));
+        const render::RenderResult r = render::render(scene, ropt);
+        const std::string file = std::string(info.name) + ".png";
+        io::write_image(dir / file, r.display);
+        const auto& s = r.stats;
+        page.image(file, o.width, o.height, info.title, info.thesis_figure, info.title,
+                   std::string(info.what) +
+                       fmt::format(" Rendered with <code>irid render {} --width {} --height {} "
+                                   "--spp {}</code>: {} optics, table path, clip "
+                                   "<code>{}</code> to {}.",
+                                   info.name, o.width, o.height, o.spp,
+                                   scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
+                                   escape(scene.render.clip), escape(scene.render.space)),
+                   {{"time", format_number(s.seconds) + " s"},
+                    {"rays per second", format_number(static_cast<double>(s.rays) / s.seconds * 1e-6) + " M"},
+                    {"pixels out of gamut before the clip",
+                     format_number(100.0 * static_cast<double>(s.out_of_gamut_pixels) /
+                                       (static_cast<double>(o.width) * o.height), 1) + " %"}});
+    }
+
+    // --- Table path against spectral path ------------------------------------------------
+    const int cw = std::max(32, o.width / 4), ch = std::max(24, o.height / 4);
+    page.add(fmt::format(
+        "<h2>The thesis' table path against per-pixel spectra</h2>\n<p>Each scene at {}×{}, "
+        "{} samples per pixel, rendered twice: with the thesis' colour tables (RGB products) "
+        "and with a spectrum per ray (1 nm, products per wavelength), and the CIEDE2000 between "
+        "the two images per pixel.</p>\n<table>\n<tr><th>scene</th><th>table path</th>"
+        "<th>spectral path</th><th>speed-up</th><th>mean ΔE2000</th><th>99th percentile</th></tr>\n",
+        cw, ch, o.spp));
+    for (const SceneInfo& info : scene_infos) {
+        std::vector<std::string> set = {fmt::format("image.width={}", cw),
+                                        fmt::format("image.height={}", ch),
+                                        fmt::format("image.spp={}", o.spp)};
+        const render::RenderResult table = render::render(render::load_scene(info.name, set), ropt);
+        set.push_back("render.path=spectral");
+        say(fmt::format("comparing the colour paths on {}", info.name));
+        const render::RenderResult spectral = render::render(render::load_scene(info.name, set), ropt);
+        const render::ImageDifference d = render::delta_e_2000_images(table.xyz, spectral.xyz);
+        page.add(fmt::format("<tr><td>{}</td><td>{:.3f} s</td><td>{:.3f} s</td><td>{:.1f}×</td>"
+                             "<td>{:.3f}</td><td>{:.3f}</td></tr>\n",
+                             info.name, table.stats.seconds, spectral.stats.seconds,
+                             spectral.stats.seconds / table.stats.seconds, d.mean, d.p99));
+    }
+    page.add("</table>\n");
+
+    // --- Thin-film aliasing ----------------------------------------------------------------
+    {
+        say("showing the thin-film anti-aliasing");
+        const int aw = std::max(32, o.width / 2), ah = std::max(24, o.height / 2);
+        page.add(fmt::format(
+            "<h2>Thin-film aliasing</h2>\n<p>Where the film's thickness changes faster than "
+            "the pixel grid, point samples of the colour table alias into false bands. irid "
+            "averages the colour over the thickness range each sample covers (running integrals "
+            "of the table), here at {}×{} and 1 sample per pixel: left without, right with.</p>\n"
+            "<div class=\"pair\">\n",
+            aw, ah));
+        for (const char* mode : {"none", "footprint"}) {
+            const std::vector<std::string> set = {
+                fmt::format("image.width={}", aw), fmt::format("image.height={}", ah),
+                "image.spp=1", fmt::format("render.antialias={}", mode),
+                "oil.max_thickness_nm=6000"};
+            const render::RenderResult r = render::render(render::load_scene("oil-slick", set), ropt);
+            const std::string file = fmt::format("oil-slick-antialias-{}.png", mode);
+            io::write_image(dir / file, r.display);
+            page.image(file, aw, ah, file, "", fmt::format("antialias = {}", mode),
+                       "oil-slick with a 6 µm maximum thickness, 1 sample per pixel.", {});
+        }
+        page.add("</div>\n");
+    }
+
+    // --- Figures and tables ----------------------------------------------------------------
+    page.add("<h2>Figures</h2>\n");
+    const int fw = o.figure_width, fh = o.figure_width * 5 / 8;
+    std::vector<std::string> tables;
+    for (const figures::FigureInfo& info : figures::figure_catalog()) {
+        const bool is_table = std::find(info.extensions.begin(), info.extensions.end(), ".html") !=
+                              info.extensions.end();
+        say(fmt::format("drawing {}", info.name));
+        figures::FigureRequest req;
+        req.name = info.name;
+        req.width_px = fw;
+        req.height_px = fh;
+        req.output = dir / (info.name + (is_table ? ".html" : ".png"));
+        const figures::FigureResult fr = figures::draw_figure(req);
+        if (is_table) {
+            tables.push_back(fmt::format(
+                "<section>\n<p class=\"title\">{}{}</p>\n{}\n<p>{}</p>\n</section>\n",
+                info.thesis_figure.empty()
+                    ? ""
+                    : fmt::format("<span class=\"thesis\">Thesis {}</span> ", escape(info.thesis_figure)),
+                escape(info.title), html_fragment(req.output), escape(fr.caption)));
+            continue;
+        }
+        page.image(info.name + ".png", fr.width_px, fr.height_px, info.title, info.thesis_figure,
+                   info.title, escape(fr.caption), fr.measurements);
+    }
+    page.add("<h2>Tables</h2>\n");
+    for (const std::string& t : tables) page.add(t);
+
+    // --- The clip report ---------------------------------------------------------------------
+    say("measuring the clip report");
+    page.add("<h2>Gamut clipping: the clip report</h2>\n");
+    for (const ClipReportSet set : {ClipReportSet::spectrum, ClipReportSet::interference}) {
+        const ClipReport rep = measure_clip_report(clip_report_color_set(set, srgb()),
+                                                   Gamut(srgb(), 1.0), ClipReportOptions{0.05});
+        page.add(fmt::format("<p>{} — {} colours, {} outside {} — {}</p>\n<table>\n"
+                             "<tr><th>method</th><th>ΔE2000 mean</th><th>ΔE2000 p95</th>"
+                             "<th>ΔE2000 max</th><th>Oklab hue change mean [°]</th>"
+                             "<th>CIELUV hue change mean [°]</th><th>ΔY mean</th>"
+                             "<th>colours per second</th></tr>\n",
+                             escape(rep.set_name), rep.size, rep.out_of_gamut,
+                             escape(rep.destination), escape(rep.set_description)));
+        for (const MethodClipReport& m : rep.methods) {
+            page.add(fmt::format("<tr><td>{}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td>"
+                                 "<td>{:.2f}</td><td>{:.2f}</td><td>{:.4f}</td><td>{:.3g}</td></tr>\n",
+                                 clip_method_name(m.method), m.delta_e2000.mean, m.delta_e2000.p95,
+                                 m.delta_e2000.max, m.hue_oklab.mean, m.hue_luv.mean,
+                                 m.delta_y.mean, m.colors_per_second));
+        }
+        page.add("</table>\n");
+    }
+
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    page.add(fmt::format("<p><small>Made by irid 0.1.0 in {:.1f} s.</small></p>\n", seconds));
+    const std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+                             "<title>irid — gallery</title>\n<style>" +
+                             std::string(style) + "</style>\n</head>\n<body>\n" + page.html() +
+                             "</body>\n</html>\n";
+    const fs::path index = dir / "index.html";
+    io::write_text_file_atomically(index, html);
+    fmt::print("{}\n", fs::absolute(index).lexically_normal().string());
+    return exit_success;
+}
+
+}  // namespace
+
+void add_gallery_command(CLI::App& app, Runner& runner) {
+    auto o = std::make_shared<GalleryOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "gallery", "Render the scenes, figures and tables into DIR/index.html");
+    cmd->add_option("-o,--output", o->dir, "Folder to write index.html and its images into")
+        ->required();
+    cmd->add_option("--width", o->width, "Scene width in pixels")->check(CLI::Range(32, 4096));
+    cmd->add_option("--height", o->height, "Scene height in pixels")->check(CLI::Range(24, 4096));
+    cmd->add_option("--spp", o->spp, "Samples per pixel of the scenes")->check(CLI::Range(1, 256));
+    cmd->add_option("--figure-width", o->figure_width, "Figure width in pixels (height 5/8 of it)")
+        ->check(CLI::Range(320, 4096));
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
+    cmd->add_flag("-q,--quiet", o->quiet, "No progress messages on stderr");
+    cmd->callback([o, &runner] { runner = [o] { return run_gallery(*o); }; });
+}
+
+}  // namespace irid::cli

@@ -1,0 +1,168 @@
+// irid render: the thesis' scenes (Smits 1990 Figures 7, 8 and 9) as images.
+//
+//   irid render SCENE [-o OUT] [--width W] [--height H] [--spp N] [--threads N] [--seed S]
+//                     [--clip METHOD] [--set key=value ...] [--linear FILE.exr] [--quiet]
+//
+// SCENE is a built-in name (oil-slick, soap-bubbles, morpho) or a JSON file (scenes/*.json show
+// every key). OUT's extension picks PNG, TIFF or EXR (default: SCENE's name + .png); an EXR OUT
+// holds the clipped linear values, --linear the unclipped ones. Exit 0 on success, 1 for a bad
+// scene file or failed I/O, 2 for bad options (including --set values the scene refuses).
+#include "../cli_common.h"
+
+#include <irid/error.h>
+#include <irid/gamut/clip.h>
+#include <irid/io/image.h>
+#include <irid/render/render.h>
+#include <irid/render/scene.h>
+
+#include <fmt/core.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace irid::cli {
+namespace {
+
+struct RenderCliOptions {
+    std::string scene;
+    std::string out;
+    std::string linear;
+    std::optional<int> width, height, spp;
+    int threads = 0;
+    std::optional<std::uint64_t> seed;
+    std::string clip;
+    std::vector<std::string> assignments;
+    bool quiet = false;
+};
+
+std::string default_output(const std::string& scene) {
+    return std::filesystem::path(scene).stem().string() + ".png";
+}
+
+/// A progress bar on stderr: "render [#####.....] 52%".
+class ProgressBar {
+public:
+    void operator()(int done, int total) {
+        std::lock_guard lock(m_mutex);
+        const int percent = static_cast<int>(100.0 * done / total);
+        if (percent == m_last) return;
+        m_last = percent;
+        constexpr int width = 40;
+        const int filled = width * done / total;
+        fmt::print(stderr, "\rrender [{}{}] {:3d}%", std::string(filled, '#'),
+                   std::string(width - filled, '.'), percent);
+        if (done == total) fmt::print(stderr, "\n");
+        std::fflush(stderr);
+    }
+
+private:
+    std::mutex m_mutex;
+    int m_last = -1;
+};
+
+int run_render(const RenderCliOptions& o) {
+    // The file (or built-in scene) alone first: its errors are bad data (exit 1).
+    (void)render::load_scene(o.scene);
+
+    std::vector<std::string> overrides = o.assignments;
+    if (o.width) overrides.push_back(fmt::format("image.width={}", *o.width));
+    if (o.height) overrides.push_back(fmt::format("image.height={}", *o.height));
+    if (o.spp) overrides.push_back(fmt::format("image.spp={}", *o.spp));
+    if (o.seed) overrides.push_back(fmt::format("render.seed={}", *o.seed));
+    if (!o.clip.empty()) {
+        try {
+            (void)parse_clip_method(o.clip);
+        } catch (const Error& e) {
+            throw UsageError(fmt::format("--clip: {}", e.what()));
+        }
+        overrides.push_back("render.clip=\"" + o.clip + "\"");
+    }
+    render::Scene scene;
+    try {
+        scene = render::load_scene(o.scene, overrides);
+    } catch (const Error& e) {
+        throw UsageError(fmt::format("{} (from the command line's options)", e.what()));
+    }
+
+    const std::string out = o.out.empty() ? default_output(o.scene) : o.out;
+    io::ImageFormat format;
+    try {
+        format = io::image_format_for(out);
+    } catch (const Error& e) {
+        throw UsageError(fmt::format("-o: {}", e.what()));
+    }
+    if (!o.linear.empty() && io::image_format_for(o.linear) != io::ImageFormat::exr)
+        throw UsageError(fmt::format("--linear: '{}' must end in .exr", o.linear));
+
+    render::RenderOptions options;
+    options.threads = o.threads;
+    ProgressBar bar;
+    if (!o.quiet && isatty(STDERR_FILENO)) options.progress = [&](int d, int t) { bar(d, t); };
+    const render::RenderResult result = render::render(scene, options);
+
+    io::Image image = result.display;
+    if (format == io::ImageFormat::exr) {  // the clipped values, linear
+        for (std::size_t i = 0; i < image.pixels.size(); ++i)
+            image.pixels[i] = static_cast<float>(
+                find_rgb_space(scene.render.space)->transfer().decode(image.pixels[i]));
+        image.color_space = scene.render.space + "-linear";
+    }
+    image.description = fmt::format("irid render {} ({}×{}, {} spp, {} path, {} optics, clip {})",
+                                     scene.source, scene.image.width, scene.image.height,
+                                     scene.image.spp,
+                                     scene.render.path == render::ColorPath::table ? "table" : "spectral",
+                                     scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
+                                     scene.render.clip);
+    if (!o.linear.empty()) {
+        io::Image linear = result.linear;
+        linear.description = image.description + ", unclipped";
+        io::write_image(o.linear, linear);
+    }
+    io::write_image(out, image);
+    if (!o.quiet) {
+        const auto& s = result.stats;
+        fmt::print(stderr,
+                   "irid render: wrote {} ({}×{}, {} spp) in {:.2f} s: {:.2f} M rays/s, "
+                   "{:.1f} % of pixels out of gamut before the clip\n",
+                   out, scene.image.width, scene.image.height, scene.image.spp, s.seconds,
+                   static_cast<double>(s.rays) / s.seconds * 1e-6,
+                   100.0 * static_cast<double>(s.out_of_gamut_pixels) /
+                       (static_cast<double>(scene.image.width) * scene.image.height));
+    }
+    return exit_success;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, Runner& runner) {
+    auto o = std::make_shared<RenderCliOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Render one of the thesis' scenes (oil-slick, soap-bubbles, morpho) or a JSON scene");
+    cmd->add_option("scene", o->scene,
+                    "oil-slick, soap-bubbles, morpho, or a JSON scene file (see scenes/)")
+        ->required();
+    cmd->add_option("-o,--output", o->out, "Output image: .png, .tif/.tiff or .exr (default: SCENE.png)");
+    cmd->add_option("--width", o->width, "Image width in pixels")
+        ->check(CLI::Range(1, render::max_image_side));
+    cmd->add_option("--height", o->height, "Image height in pixels")
+        ->check(CLI::Range(1, render::max_image_side));
+    cmd->add_option("--spp", o->spp, "Samples per pixel")->check(CLI::Range(1, render::max_spp));
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")
+        ->check(CLI::Range(0, 1024));
+    cmd->add_option("--seed", o->seed, "Seed of the sampling and of the noise textures");
+    cmd->add_option("--clip", o->clip, "Gamut clip method (default: the scene's, smits)");
+    cmd->add_option("--set", o->assignments,
+                    "Override a scene value: key.path=value, e.g. render.path=spectral, "
+                    "oil.k1=1.5, soap.bubbles.0.radius=0.7 (repeatable)");
+    cmd->add_option("--linear", o->linear, "Also write the unclipped linear image (.exr)");
+    cmd->add_flag("-q,--quiet", o->quiet, "No progress bar and no summary on stderr");
+    cmd->callback([o, &runner] { runner = [o] { return run_render(*o); }; });
+}
+
+}  // namespace irid::cli

@@ -1,0 +1,428 @@
+// Scene files: JSON → Scene, every value checked once with its key path and allowed range.
+#include <irid/error.h>
+#include <irid/render/scene.h>
+
+#include "builtin_scenes.h"  // generated from scenes/*.json (cmake/EmbedScenes.cmake)
+
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace irid::render {
+namespace {
+
+using Json = nlohmann::json;
+
+/// Reads one JSON object: refuses keys it does not know, then reads values by name.
+class ObjectReader {
+public:
+    ObjectReader(const Json& object, std::string path, const std::string& source,
+                 std::vector<std::string_view> keys)
+        : m_object(object), m_path(std::move(path)), m_source(source) {
+        if (!object.is_object())
+            fail(m_path.empty() ? "the scene" : m_path, "must be an object ({...})");
+        for (const auto& item : object.items()) {
+            if (std::find(keys.begin(), keys.end(), item.key()) == keys.end()) {
+                throw Error(fmt::format("{}: unknown key '{}'; valid keys{}: {}", m_source,
+                                        key_path(item.key()),
+                                        m_path.empty() ? "" : " in '" + m_path + "'",
+                                        fmt::join(keys, ", ")));
+            }
+        }
+    }
+
+    [[nodiscard]] const Json* find(std::string_view key) const {
+        const auto it = m_object.find(std::string(key));
+        return it == m_object.end() ? nullptr : &*it;
+    }
+
+    void number(std::string_view key, double& out, double lo, double hi) const {
+        const Json* v = find(key);
+        if (!v) return;
+        if (!v->is_number())
+            fail(key_path(key), fmt::format("must be a number in [{}, {}]", lo, hi));
+        const double x = v->get<double>();
+        if (!std::isfinite(x) || x < lo || x > hi)
+            fail(key_path(key), fmt::format("is {}; allowed: [{}, {}]", x, lo, hi));
+        out = x;
+    }
+
+    void positive(std::string_view key, double& out, double hi) const {
+        const double before = out;
+        number(key, out, 0.0, hi);
+        if (out <= 0.0) {
+            out = before;
+            fail(key_path(key), fmt::format("is 0; allowed: (0, {}]", hi));
+        }
+    }
+
+    void integer(std::string_view key, int& out, int lo, int hi) const {
+        const Json* v = find(key);
+        if (!v) return;
+        if (!v->is_number_integer())
+            fail(key_path(key), fmt::format("must be an integer in [{}, {}]", lo, hi));
+        const auto x = v->get<long long>();
+        if (x < lo || x > hi) fail(key_path(key), fmt::format("is {}; allowed: [{}, {}]", x, lo, hi));
+        out = static_cast<int>(x);
+    }
+
+    void boolean(std::string_view key, bool& out) const {
+        const Json* v = find(key);
+        if (!v) return;
+        if (!v->is_boolean()) fail(key_path(key), "must be true or false");
+        out = v->get<bool>();
+    }
+
+    void text(std::string_view key, std::string& out) const {
+        const Json* v = find(key);
+        if (!v) return;
+        if (!v->is_string()) fail(key_path(key), "must be a string");
+        out = v->get<std::string>();
+    }
+
+    template <class Enum>
+    void choice(std::string_view key, Enum& out,
+                std::initializer_list<std::pair<std::string_view, Enum>> options) const {
+        const Json* v = find(key);
+        if (!v) return;
+        std::vector<std::string_view> names;
+        for (const auto& o : options) names.push_back(o.first);
+        if (v->is_string()) {
+            const std::string s = v->get<std::string>();
+            for (const auto& o : options) {
+                if (o.first == s) {
+                    out = o.second;
+                    return;
+                }
+            }
+        }
+        fail(key_path(key), fmt::format("is {}; allowed: {}", v->dump(), fmt::join(names, ", ")));
+    }
+
+    void vec3(std::string_view key, std::array<double, 3>& out, double lo, double hi) const {
+        const Json* v = find(key);
+        if (!v) return;
+        const std::string allowed = fmt::format("an array of 3 numbers in [{}, {}]", lo, hi);
+        if (!v->is_array() || v->size() != 3) fail(key_path(key), "must be " + allowed);
+        for (std::size_t i = 0; i < 3; ++i) {
+            const Json& e = (*v)[i];
+            const double x = e.is_number() ? e.get<double>() : std::nan("");
+            if (!std::isfinite(x) || x < lo || x > hi)
+                fail(key_path(key), fmt::format("is {}; must be {}", v->dump(), allowed));
+            out[i] = x;
+        }
+    }
+
+    [[nodiscard]] std::string key_path(std::string_view key) const {
+        return m_path.empty() ? std::string(key) : m_path + "." + std::string(key);
+    }
+
+    [[noreturn]] void fail(const std::string& key_path, const std::string& what) const {
+        throw Error(fmt::format("{}: '{}' {}", m_source, key_path, what));
+    }
+
+private:
+    const Json& m_object;
+    std::string m_path;
+    const std::string& m_source;
+};
+
+/// Bounds shared by the readers: positions within ±1e4 scene units, colours within [0, 100].
+constexpr double coordinate_limit = 1.0e4;
+constexpr double albedo_max = 1.0;
+constexpr double light_max = 100.0;
+/// Film thicknesses up to 100 µm: far beyond visible interference.
+constexpr double thickness_limit_nm = 1.0e5;
+
+void read_image(const Json& j, const std::string& source, ImageParams& p) {
+    ObjectReader r(j, "image", source, {"width", "height", "spp"});
+    r.integer("width", p.width, 1, max_image_side);
+    r.integer("height", p.height, 1, max_image_side);
+    r.integer("spp", p.spp, 1, max_spp);
+    if (static_cast<long long>(p.width) * p.height > max_pixels)
+        r.fail("image", fmt::format("is {}×{} = {} pixels; at most {} pixels are allowed", p.width,
+                                    p.height, static_cast<long long>(p.width) * p.height,
+                                    max_pixels));
+}
+
+void read_camera(const Json& j, const std::string& source, CameraParams& p) {
+    ObjectReader r(j, "camera", source, {"eye", "look_at", "up", "fov_deg"});
+    r.vec3("eye", p.eye, -coordinate_limit, coordinate_limit);
+    r.vec3("look_at", p.look_at, -coordinate_limit, coordinate_limit);
+    r.vec3("up", p.up, -coordinate_limit, coordinate_limit);
+    r.number("fov_deg", p.fov_deg, 1.0, 170.0);
+    if (p.eye == p.look_at) r.fail("camera.look_at", "must differ from camera.eye");
+}
+
+void read_render(const Json& j, const std::string& source, RenderParams& p) {
+    ObjectReader r(j, "render", source,
+                   {"path", "optics", "antialias", "max_depth", "seed", "space", "clip",
+                    "exposure", "filter_radius", "filter_sigma"});
+    r.choice("path", p.path, {{"table", ColorPath::table}, {"spectral", ColorPath::spectral}});
+    r.choice("optics", p.optics, {{"thesis", OpticsModel::thesis}, {"exact", OpticsModel::exact}});
+    r.choice("antialias", p.antialias,
+             {{"none", FilmAntialias::none}, {"footprint", FilmAntialias::footprint}});
+    r.integer("max_depth", p.max_depth, 1, 32);
+    if (const Json* v = r.find("seed")) {
+        if (!v->is_number_unsigned())
+            r.fail("render.seed", "must be an integer in [0, 18446744073709551615]");
+        p.seed = v->get<std::uint64_t>();
+    }
+    r.text("space", p.space);
+    r.text("clip", p.clip);
+    r.number("exposure", p.exposure, 0.0, 1.0e3);
+    r.number("filter_radius", p.filter_radius, 0.5, 4.0);
+    r.number("filter_sigma", p.filter_sigma, 0.1, 4.0);
+}
+
+void read_light(const Json& j, const std::string& source, LightParams& p) {
+    ObjectReader r(j, "light", source,
+                   {"sun_direction", "sun_intensity", "sun_radius_deg", "sky_zenith",
+                    "sky_horizon", "ground", "environment_image", "environment_intensity"});
+    r.vec3("sun_direction", p.sun_direction, -1.0e3, 1.0e3);
+    const auto& d = p.sun_direction;
+    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < 1e-12)
+        r.fail("light.sun_direction", "must not be the zero vector");
+    r.number("sun_intensity", p.sun_intensity, 0.0, light_max);
+    r.number("sun_radius_deg", p.sun_radius_deg, 0.1, 20.0);
+    r.vec3("sky_zenith", p.sky_zenith, 0.0, light_max);
+    r.vec3("sky_horizon", p.sky_horizon, 0.0, light_max);
+    r.vec3("ground", p.ground, 0.0, light_max);
+    r.text("environment_image", p.environment_image);
+    r.number("environment_intensity", p.environment_intensity, 0.0, light_max);
+}
+
+void read_oil(const Json& j, const std::string& source, OilParams& p) {
+    ObjectReader r(j, "oil", source,
+                   {"center", "radius", "max_thickness_nm", "k1", "k2", "turbulence_scale",
+                    "min_thickness_nm", "film", "substrate", "asphalt_index"});
+    r.vec3("center", p.center, -coordinate_limit, coordinate_limit);
+    r.positive("radius", p.radius, coordinate_limit);
+    r.number("max_thickness_nm", p.max_thickness_nm, 0.0, thickness_limit_nm);
+    r.number("k1", p.k1, 0.0, 100.0);
+    r.number("k2", p.k2, 0.0, 100.0);
+    r.number("turbulence_scale", p.turbulence_scale, 0.0, 1.0e3);
+    r.number("min_thickness_nm", p.min_thickness_nm, 0.0, thickness_limit_nm);
+    r.text("film", p.film);
+    r.choice("substrate", p.substrate, {{"wet", std::string("wet")}, {"dry", std::string("dry")}});
+    r.number("asphalt_index", p.asphalt_index, 1.0, 3.0);
+}
+
+void read_pavement(const Json& j, const std::string& source, PavementParams& p) {
+    ObjectReader r(j, "pavement", source,
+                   {"albedo", "bump_frequency", "bump_height", "fine_frequency", "fine_height",
+                    "albedo_variation"});
+    r.vec3("albedo", p.albedo, 0.0, albedo_max);
+    r.number("bump_frequency", p.bump_frequency, 0.0, 1.0e4);
+    r.number("bump_height", p.bump_height, 0.0, 1.0);
+    r.number("fine_frequency", p.fine_frequency, 0.0, 1.0e5);
+    r.number("fine_height", p.fine_height, 0.0, 1.0);
+    r.number("albedo_variation", p.albedo_variation, 0.0, 1.0);
+}
+
+void read_bubble(const Json& j, const std::string& path, const std::string& source,
+                 BubbleParams& p) {
+    ObjectReader r(j, path, source,
+                   {"center", "radius", "top_thickness_nm", "bottom_thickness_nm",
+                    "profile_exponent", "turbulence_nm", "turbulence_scale"});
+    r.vec3("center", p.center, -coordinate_limit, coordinate_limit);
+    r.positive("radius", p.radius, coordinate_limit);
+    r.number("top_thickness_nm", p.top_thickness_nm, 0.0, thickness_limit_nm);
+    r.number("bottom_thickness_nm", p.bottom_thickness_nm, 0.0, thickness_limit_nm);
+    r.number("profile_exponent", p.profile_exponent, 0.05, 20.0);
+    r.number("turbulence_nm", p.turbulence_nm, 0.0, thickness_limit_nm);
+    r.number("turbulence_scale", p.turbulence_scale, 0.0, 1.0e3);
+}
+
+void read_soap(const Json& j, const std::string& source, SoapParams& p) {
+    ObjectReader r(j, "soap", source,
+                   {"bubbles", "film", "floor_y", "floor_albedo", "floor_albedo_alt",
+                    "floor_checker"});
+    if (const Json* b = r.find("bubbles")) {
+        if (!b->is_array() || b->empty() || b->size() > static_cast<std::size_t>(max_bubbles))
+            r.fail("soap.bubbles",
+                   fmt::format("must be an array of 1 to {} bubble objects", max_bubbles));
+        p.bubbles.assign(b->size(), BubbleParams{});
+        for (std::size_t i = 0; i < b->size(); ++i)
+            read_bubble((*b)[i], fmt::format("soap.bubbles.{}", i), source, p.bubbles[i]);
+    }
+    r.text("film", p.film);
+    r.number("floor_y", p.floor_y, -coordinate_limit, coordinate_limit);
+    r.vec3("floor_albedo", p.floor_albedo, 0.0, albedo_max);
+    r.vec3("floor_albedo_alt", p.floor_albedo_alt, 0.0, albedo_max);
+    r.number("floor_checker", p.floor_checker, 0.0, coordinate_limit);
+}
+
+void read_morpho(const Json& j, const std::string& source, MorphoSceneParams& p) {
+    ObjectReader r(j, "morpho", source,
+                   {"d1_nm", "d2_nm", "n_chitin", "periods", "blend", "blend_min_nm",
+                    "blend_max_nm", "blend_samples", "dihedral_deg", "span", "bump_height",
+                    "bump_frequency", "base_albedo", "margin", "body_albedo",
+                    "background_albedo", "wing_mesh"});
+    r.number("d1_nm", p.d1_nm, 0.0, 1.0e4);
+    r.number("d2_nm", p.d2_nm, 0.0, 1.0e4);
+    r.number("n_chitin", p.n_chitin, 1.0, 4.0);
+    r.integer("periods", p.periods, 1, 1000);
+    r.boolean("blend", p.blend);
+    r.number("blend_min_nm", p.blend_min_nm, 0.0, 1.0e4);
+    r.number("blend_max_nm", p.blend_max_nm, 0.0, 1.0e4);
+    r.integer("blend_samples", p.blend_samples, 2, 1001);
+    if (p.blend_min_nm > p.blend_max_nm)
+        r.fail("morpho.blend_min_nm",
+               fmt::format("is {} nm; it must not exceed morpho.blend_max_nm ({} nm)",
+                           p.blend_min_nm, p.blend_max_nm));
+    r.number("dihedral_deg", p.dihedral_deg, -80.0, 80.0);
+    r.positive("span", p.span, coordinate_limit);
+    r.number("bump_height", p.bump_height, 0.0, 1.0);
+    r.number("bump_frequency", p.bump_frequency, 0.0, 1.0e4);
+    r.vec3("base_albedo", p.base_albedo, 0.0, albedo_max);
+    r.number("margin", p.margin, 0.0, 0.5);
+    r.vec3("body_albedo", p.body_albedo, 0.0, albedo_max);
+    r.vec3("background_albedo", p.background_albedo, 0.0, albedo_max);
+    r.text("wing_mesh", p.wing_mesh);
+}
+
+/// "line L, column C" of a byte offset (nlohmann's parse_error::byte counts from 1 and points
+/// just past the offending character).
+std::string line_column(std::string_view text, std::size_t byte) {
+    const std::size_t end = std::min(text.size(), byte > 0 ? byte - 1 : 0);
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < end; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return fmt::format("line {}, column {}", line, column);
+}
+
+/// Replaces the value at a dotted key path ("soap.bubbles.0.radius").
+void apply_override(Json& root, const std::string& assignment, const std::string& source) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw Error(fmt::format("{}: override '{}' must be key.path=value", source, assignment));
+    const std::string key = assignment.substr(0, eq);
+    const std::string text = assignment.substr(eq + 1);
+    Json value = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (value.is_discarded()) value = text;  // a bare string: render.path=spectral
+
+    Json* node = &root;
+    std::size_t start = 0;
+    while (true) {
+        const auto dot = key.find('.', start);
+        const std::string part = key.substr(start, dot == std::string::npos ? dot : dot - start);
+        if (part.empty())
+            throw Error(fmt::format("{}: override key '{}' has an empty part", source, key));
+        if (node->is_array()) {
+            std::size_t index = 0;
+            const auto [p, ec] = std::from_chars(part.data(), part.data() + part.size(), index);
+            if (ec != std::errc{} || p != part.data() + part.size() || index >= node->size())
+                throw Error(fmt::format("{}: override key '{}': '{}' must be an index below {}",
+                                        source, key, part, node->size()));
+            node = &(*node)[index];
+        } else {
+            if (!node->is_object() && !node->is_null())
+                throw Error(fmt::format("{}: override key '{}': '{}' is not inside an object",
+                                        source, key, part));
+            node = &(*node)[part];
+        }
+        if (dot == std::string::npos) break;
+        start = dot + 1;
+    }
+    *node = std::move(value);
+}
+
+}  // namespace
+
+std::string_view scene_kind_name(SceneKind kind) noexcept {
+    switch (kind) {
+        case SceneKind::oil_slick: return "oil-slick";
+        case SceneKind::soap_bubbles: return "soap-bubbles";
+        case SceneKind::morpho: return "morpho";
+    }
+    return "?";
+}
+
+std::vector<std::string> builtin_scene_names() {
+    std::vector<std::string> names;
+    for (const auto& s : detail::builtin_scenes) names.emplace_back(s.name);
+    return names;
+}
+
+std::optional<std::string_view> builtin_scene_json(std::string_view name) {
+    for (const auto& s : detail::builtin_scenes)
+        if (s.name == name) return s.json;
+    return std::nullopt;
+}
+
+Scene parse_scene(std::string_view json_text, const std::string& source,
+                  const std::filesystem::path& directory,
+                  const std::vector<std::string>& overrides) {
+    Json root;
+    try {
+        root = Json::parse(json_text.begin(), json_text.end(), nullptr, true,
+                           /*ignore_comments=*/true);
+    } catch (const Json::parse_error& e) {
+        // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ...";
+        // keep its explanation after the position, and give the position ourselves.
+        std::string why = e.what();
+        const auto colon = why.find(": ");
+        if (colon != std::string::npos) why = why.substr(colon + 2);
+        throw Error(fmt::format("{}: JSON syntax error at {}: {}", source,
+                                line_column(json_text, e.byte), why));
+    }
+    for (const auto& o : overrides) apply_override(root, o, source);
+
+    Scene scene;
+    scene.source = source;
+    scene.directory = directory;
+    ObjectReader r(root, "", source,
+                   {"scene", "image", "camera", "render", "light", "oil", "pavement", "soap",
+                    "morpho"});
+    if (!r.find("scene"))
+        r.fail("scene", "is missing; allowed: oil-slick, soap-bubbles, morpho");
+    r.choice("scene", scene.kind,
+             {{"oil-slick", SceneKind::oil_slick},
+              {"soap-bubbles", SceneKind::soap_bubbles},
+              {"morpho", SceneKind::morpho}});
+    if (scene.kind == SceneKind::soap_bubbles) scene.soap.bubbles.assign(1, BubbleParams{});
+    if (const Json* v = r.find("image")) read_image(*v, source, scene.image);
+    if (const Json* v = r.find("camera")) read_camera(*v, source, scene.camera);
+    if (const Json* v = r.find("render")) read_render(*v, source, scene.render);
+    if (const Json* v = r.find("light")) read_light(*v, source, scene.light);
+    if (const Json* v = r.find("oil")) read_oil(*v, source, scene.oil);
+    if (const Json* v = r.find("pavement")) read_pavement(*v, source, scene.pavement);
+    if (const Json* v = r.find("soap")) read_soap(*v, source, scene.soap);
+    if (const Json* v = r.find("morpho")) read_morpho(*v, source, scene.morpho);
+    return scene;
+}
+
+Scene load_scene(const std::string& name_or_path, const std::vector<std::string>& overrides) {
+    if (const auto builtin = builtin_scene_json(name_or_path))
+        return parse_scene(*builtin, name_or_path, {}, overrides);
+    const std::filesystem::path path(name_or_path);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw Error(fmt::format("cannot read scene '{}': not a built-in scene ({}) and not a "
+                                "readable file",
+                                name_or_path, fmt::join(builtin_scene_names(), ", ")));
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    constexpr std::size_t max_scene_bytes = 16u << 20;
+    if (text.str().size() > max_scene_bytes)
+        throw Error(fmt::format("{}: scene files are limited to {} bytes", name_or_path,
+                                max_scene_bytes));
+    return parse_scene(text.str(), name_or_path, path.parent_path(), overrides);
+}
+
+}  // namespace irid::render

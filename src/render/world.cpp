@@ -1,0 +1,535 @@
+#include "world.h"
+
+#include <irid/color/illuminant.h>
+#include <irid/error.h>
+#include <irid/io/image.h>
+#include <irid/optics/material.h>
+#include <irid/optics/thesis_models.h>
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+namespace irid::render {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+Vec3 to_vec(const Vec3Param& v) { return {v[0], v[1], v[2]}; }
+
+Camera make_camera(const Scene& s) {
+    try {
+        return Camera(to_vec(s.camera.eye), to_vec(s.camera.look_at), to_vec(s.camera.up),
+                      s.camera.fov_deg,
+                      static_cast<double>(s.image.width) / static_cast<double>(s.image.height));
+    } catch (const Error& e) {
+        throw Error(fmt::format("{}: camera: {}", s.source, e.what()));
+    }
+}
+
+Material material_of(const Scene& s, const std::string& key, const std::string& text) {
+    try {
+        return parse_material(text);
+    } catch (const Error& e) {
+        throw Error(fmt::format("{}: '{}': {}", s.source, key, e.what()));
+    }
+}
+
+/// Stratified point on the hemisphere around +y for the mean sky, with cos θ weights.
+template <class F>
+Rgb3 cosine_weighted_mean(F&& radiance) {
+    constexpr int rings = 24, sectors = 48;
+    Rgb3 sum{0, 0, 0};
+    double weight = 0;
+    for (int i = 0; i < rings; ++i) {
+        const double cos_t = (i + 0.5) / rings;  // uniform in cos θ, weighted by cos θ below
+        const double sin_t = std::sqrt(1 - cos_t * cos_t);
+        for (int j = 0; j < sectors; ++j) {
+            const double phi = 2 * pi * (j + 0.5) / sectors;
+            const Rgb3 l = radiance(Vec3{sin_t * std::cos(phi), cos_t, sin_t * std::sin(phi)});
+            for (int c = 0; c < 3; ++c) sum[c] += cos_t * l[c];
+            weight += cos_t;
+        }
+    }
+    return {sum[0] / weight, sum[1] / weight, sum[2] / weight};
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+World::World(const Scene& scene)
+    : m_scene(scene),
+      m_camera(make_camera(scene)),
+      m_basis(std::make_unique<SpectralBasis>()),
+      m_noise(scene.render.seed),
+      m_noise2(scene.render.seed ^ 0x9e3779b97f4a7c15ULL) {
+    const LightParams& l = scene.light;
+    m_sun = normalize(to_vec(l.sun_direction));
+    m_cos_sun_radius = std::cos(l.sun_radius_deg * pi / 180.0);
+    // The disc's radiance gives the stated irradiance π·E (E as a multiple of the white's
+    // radiance) over its solid angle 2π(1 − cos r).
+    m_sun_radiance = pi * l.sun_intensity / (2 * pi * (1 - m_cos_sun_radius));
+
+    if (!l.environment_image.empty()) {
+        const std::filesystem::path path = scene.directory / l.environment_image;
+        io::Image img = io::read_image(path);
+        if (img.channels < 3)
+            throw Error(fmt::format("{}: light.environment_image '{}' has {} channel(s); RGB is "
+                                    "required",
+                                    scene.source, path.string(), img.channels));
+        if (img.stored_integer) {  // encoded sRGB values: decode to linear
+            for (std::size_t i = 0; i < img.pixel_count(); ++i)
+                for (int c = 0; c < 3; ++c) {
+                    float& v = img.pixels[i * img.channels + c];
+                    v = static_cast<float>(srgb().transfer().decode(v));
+                }
+        }
+        m_environment = std::move(img);
+    }
+    // The sky's mean radiance (without the sun's disc, which diffuse_light adds directly).
+    m_ambient = cosine_weighted_mean([&](Vec3 d) {
+        Rgb3 e = environment(d);
+        if (dot(d, m_sun) >= m_cos_sun_radius)
+            for (double& v : e) v -= m_sun_radiance;
+        return e;
+    });
+
+    switch (scene.kind) {
+        case SceneKind::oil_slick: build_oil_slick(); break;
+        case SceneKind::soap_bubbles: build_soap_bubbles(); break;
+        case SceneKind::morpho: build_morpho(); break;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    build_tables();
+    m_table_seconds = seconds_since(start);
+}
+
+void World::build_oil_slick() {
+    const OilParams& o = m_scene.oil;
+    m_ground.emplace(Vec3{0, o.center[1], 0}, Vec3{0, 1, 0});
+    const Material substrate = o.substrate == "wet"
+                                   ? material_of(m_scene, "oil.substrate", "water")
+                                   : Material::constant("asphalt", o.asphalt_index);
+    m_film = SingleFilm{material_of(m_scene, "air", "air"),
+                        material_of(m_scene, "oil.film", o.film), substrate};
+    m_max_thickness_nm = o.max_thickness_nm;
+    m_epsilon = 1e-7 * std::max(1.0, o.radius);
+}
+
+void World::build_soap_bubbles() {
+    const SoapParams& s = m_scene.soap;
+    double extent = 1;
+    for (const BubbleParams& b : s.bubbles) {
+        m_bubbles.emplace_back(to_vec(b.center), b.radius);
+        m_max_thickness_nm = std::max(m_max_thickness_nm,
+                                      std::max(b.top_thickness_nm, b.bottom_thickness_nm) +
+                                          1.5 * b.turbulence_nm);
+        extent = std::max(extent, b.radius);
+    }
+    m_ground.emplace(Vec3{0, s.floor_y, 0}, Vec3{0, 1, 0});
+    const Material air = material_of(m_scene, "air", "air");
+    m_film = SingleFilm{air, material_of(m_scene, "soap.film", s.film), air};
+    m_epsilon = 1e-7 * extent;
+}
+
+void World::build_morpho() {
+    const MorphoSceneParams& m = m_scene.morpho;
+    m_wing_params = MorphoParameters{m.d1_nm, m.d2_nm, m.n_chitin, m.periods,
+                                     2.0 / ((m.periods + 1.0) * (m.periods + 1.0))};
+    m_wing_blend = MorphoBlend{m.blend_min_nm, m.blend_max_nm, m.blend_samples,
+                               MorphoBlendThickness::d1};
+    const double half = 0.5 * m.span;
+    // The ground under the butterfly.
+    m_ground.emplace(Vec3{0, -0.35 * half, 0}, Vec3{0, 1, 0});
+    if (!m.wing_mesh.empty()) {
+        m_wing_mesh = TriangleMesh::read_obj(m_scene.directory / m.wing_mesh);
+    } else {
+        // Procedural outlines of a Morpho's fore- and hindwing (right side, a outward along
+        // the span, b towards the head), in units of the half span. Drawn after photographs
+        // of Morpho menelaus: a broad forewing with a rounded tip, a hindwing with a scalloped
+        // outer edge. The root edges (the first and last points) are not margin.
+        const std::vector<std::array<double, 2>> fore = {
+            {0.05, 0.12}, {0.35, 0.30}, {0.70, 0.42}, {0.95, 0.45}, {1.00, 0.36},
+            {0.93, 0.12}, {0.80, -0.08}, {0.60, -0.20}, {0.35, -0.22}, {0.08, -0.06}};
+        const std::vector<std::array<double, 2>> hind = {
+            {0.06, -0.04}, {0.40, -0.18}, {0.66, -0.22}, {0.78, -0.38}, {0.74, -0.55},
+            {0.62, -0.72}, {0.45, -0.82}, {0.28, -0.80}, {0.14, -0.62}, {0.04, -0.30}};
+        const double tilt = m.dihedral_deg * pi / 180.0;
+        for (int side = -1; side <= 1; side += 2) {
+            for (const auto* outline : {&fore, &hind}) {
+                Wing w;
+                w.origin = Vec3{side * 0.04 * half, 0, 0};
+                // Tilted up by the dihedral about the body axis (z).
+                w.axis_a = Vec3{side * std::cos(tilt), std::sin(tilt), 0};
+                w.axis_b = Vec3{0, 0, -1};
+                w.normal = normalize(cross(w.axis_b, w.axis_a));
+                if (w.normal.y < 0) w.normal = -w.normal;
+                for (const auto& p : *outline) w.outline.push_back({p[0] * half, p[1] * half});
+                const std::size_t n = w.outline.size();
+                w.outer_edge.assign(n, true);
+                w.outer_edge[n - 1] = false;  // the root edge back to the first point
+                w.length = half;
+                m_wings.push_back(std::move(w));
+            }
+        }
+    }
+    // The body: head, thorax and a tapering abdomen along −z (head) to +z.
+    const double r = 0.05 * half;
+    m_body.emplace_back(Vec3{0, 0.02 * half, -0.30 * half}, 0.9 * r);
+    m_body.emplace_back(Vec3{0, 0.01 * half, -0.12 * half}, 1.5 * r);
+    for (int i = 0; i < 5; ++i)
+        m_body.emplace_back(Vec3{0, 0, (0.08 + 0.12 * i) * half}, r * (1.2 - 0.15 * i));
+    m_epsilon = 1e-7 * half;
+}
+
+void World::build_tables() {
+    const RenderParams& rp = m_scene.render;
+    const Colorimeter& col = m_basis->colorimeter();
+    if (m_film) {
+        m_thesis_k = thesis_matched_k(*m_film);
+        if (rp.path != ColorPath::table) return;
+        const SingleFilm film = *m_film;
+        const double k = m_thesis_k;
+        const bool exact = rp.optics == OpticsModel::exact;
+        // 2 nm × 41 rows of cos θ: the exact table keeps lookups within ΔE2000 0.36 over 0–80°
+        // (docs/OPTICS.md).
+        m_film_table.emplace(
+            std::max(m_max_thickness_nm, 10.0) + 20.0, 2.0, 0.02, 41,
+            [&, film, k, exact](double cos_theta, const std::vector<double>& ts) {
+                std::vector<Rgb3> out(ts.size());
+                const double angle = std::acos(std::clamp(cos_theta, 0.0, 1.0));
+                if (exact) {
+                    const PreparedFilm prepared(film, angle);
+                    for (std::size_t i = 0; i < ts.size(); ++i) {
+                        const Rgb c = prepared.color(ts[i], col).rgb_linear;
+                        out[i] = {c.r, c.g, c.b};
+                    }
+                } else {
+                    for (std::size_t i = 0; i < ts.size(); ++i) {
+                        const Xyz x = col.xyz_of([&](double lambda) {
+                            return thesis_single_film_reflectance(film, ts[i], lambda, angle, k,
+                                                                  std::nullopt);
+                        });
+                        const Rgb c = col.linear_rgb(x);
+                        out[i] = {c.r, c.g, c.b};
+                    }
+                }
+                return out;
+            });
+        return;
+    }
+    if (m_scene.kind != SceneKind::morpho) return;
+    // The wing: the reflectance spectrum at an angle, thesis (eq. 25 with eq. 29, blended) or
+    // exact (the transfer matrix of l chitin layers d₂ separated by air gaps d₁).
+    const MorphoSceneParams& m = m_scene.morpho;
+    const MorphoParameters wing = m_wing_params;
+    const MorphoBlend blend = m_wing_blend;
+    const bool exact = rp.optics == OpticsModel::exact;
+    const Material air = material_of(m_scene, "air", "air");
+    const Material chitin = Material::constant("chitin", m.n_chitin);
+    auto spectrum_at = [=](double theta_deg) {
+        std::array<double, dense_sample_count> s{};
+        const double theta = std::min(theta_deg, 89.9) * pi / 180.0;
+        if (!exact) {
+            for (int i = 0; i < dense_sample_count; ++i) {
+                const double lambda = lambda_min_nm + i;
+                s[i] = m.blend ? morpho_blend_reflectance(wing, blend, lambda, theta)
+                               : morpho_reflectance(wing, lambda, theta);
+            }
+            return s;
+        }
+        const int samples = m.blend ? blend.samples : 1;
+        for (int b = 0; b < samples; ++b) {
+            const double d1 = m.blend ? blend.min_nm + (blend.max_nm - blend.min_nm) * b /
+                                                           (samples - 1.0)
+                                      : wing.d1_nm;
+            std::vector<Layer> layers;
+            for (int p = 0; p < wing.periods; ++p) {
+                layers.push_back({chitin, wing.d2_nm});
+                if (p + 1 < wing.periods) layers.push_back({air, d1});
+            }
+            const FilmStack stack(air, std::move(layers), air);
+            for (int i = 0; i < dense_sample_count; ++i)
+                s[i] += stack.evaluate(lambda_min_nm + i, theta, Polarization::unpolarized).R /
+                        samples;
+        }
+        return s;
+    };
+    if (rp.path == ColorPath::table) {
+        m_wing_rgb = AngleTable<Rgb3>(exact ? 1.0 : 0.5, [&](double theta_deg) {
+            const auto s = spectrum_at(theta_deg);
+            const Rgb c = col.linear_rgb(
+                col.xyz_of([&](double lambda) { return s[static_cast<int>(lambda) - lambda_min_nm]; }));
+            return Rgb3{c.r, c.g, c.b};
+        });
+    } else if (exact) {
+        m_wing_spectra =
+            AngleTable<std::array<double, dense_sample_count>>(exact ? 1.0 : 0.5, spectrum_at);
+    }
+}
+
+void World::wing_spectrum(double theta_deg, SpectralCarrier& out) const noexcept {
+    if (m_scene.render.optics == OpticsModel::exact) {
+        out.v = m_wing_spectra.at(theta_deg);
+        return;
+    }
+    const double theta = std::clamp(theta_deg, 0.0, 90.0) * pi / 180.0;
+    for (int i = 0; i < dense_sample_count; ++i) {
+        const double lambda = lambda_min_nm + i;
+        out.v[i] = m_scene.morpho.blend
+                       ? morpho_blend_reflectance_continuous(m_wing_params, m_wing_blend, lambda, theta)
+                       : morpho_reflectance(m_wing_params, lambda, theta);
+    }
+}
+
+void World::film_spectrum(const ThicknessSample& t, double cos_theta, SpectralCarrier& out) const {
+    const double angle = std::acos(std::clamp(cos_theta, 0.0, 0.9999));
+    // Over the footprint, the mean of up to 8 thicknesses spread evenly across it.
+    const int n = t.footprint_nm > 1.0 ? std::clamp(static_cast<int>(t.footprint_nm / 4.0) + 1, 2, 8) : 1;
+    std::array<double, 8> ts{};
+    for (int k = 0; k < n; ++k)
+        ts[k] = n == 1 ? t.t_nm
+                       : std::max(0.0, t.t_nm + t.footprint_nm * ((k + 0.5) / n - 0.5));
+    out.v.fill(0.0);
+    if (m_scene.render.optics == OpticsModel::exact) {
+        const PreparedFilm prepared(*m_film, angle);
+        for (int i = 0; i < dense_sample_count; ++i) {
+            double sum = 0;
+            for (int k = 0; k < n; ++k) sum += prepared.reflectance(i, ts[k]);
+            out.v[i] = sum / n;
+        }
+    } else {
+        for (int i = 0; i < dense_sample_count; ++i) {
+            double sum = 0;
+            for (int k = 0; k < n; ++k)
+                sum += thesis_single_film_reflectance(*m_film, ts[k], lambda_min_nm + i, angle,
+                                                      m_thesis_k, std::nullopt);
+            out.v[i] = sum / n;
+        }
+    }
+}
+
+// --- Geometry ------------------------------------------------------------------------------
+
+namespace {
+
+/// Crossing-number test and the distance to the outer edges, in the wing's 2-D coordinates.
+bool inside_wing(const Wing& w, double a, double b, double& margin) {
+    bool inside = false;
+    double best = std::numeric_limits<double>::infinity();
+    const std::size_t n = w.outline.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& p = w.outline[i];
+        const auto& q = w.outline[(i + 1) % n];
+        if ((p[1] > b) != (q[1] > b)) {
+            const double x = p[0] + (b - p[1]) * (q[0] - p[0]) / (q[1] - p[1]);
+            if (a < x) inside = !inside;
+        }
+        if (w.outer_edge[i]) {
+            const double ex = q[0] - p[0], ey = q[1] - p[1];
+            const double len2 = ex * ex + ey * ey;
+            const double s = len2 > 0 ? std::clamp(((a - p[0]) * ex + (b - p[1]) * ey) / len2, 0.0, 1.0) : 0.0;
+            const double dx = a - (p[0] + s * ex), dy = b - (p[1] + s * ey);
+            best = std::min(best, std::sqrt(dx * dx + dy * dy));
+        }
+    }
+    margin = best / w.length;
+    return inside;
+}
+
+}  // namespace
+
+bool World::intersect(const Ray& ray, double t_min, double t_max, Hit& hit) const noexcept {
+    bool found = false;
+    SurfaceHit h;
+    if (m_ground && m_ground->intersect(ray, t_min, t_max, h)) {
+        t_max = h.t;
+        hit.surface = h;
+        hit.kind = m_scene.kind == SceneKind::oil_slick
+                       ? SurfaceKind::pavement
+                       : (m_scene.kind == SceneKind::soap_bubbles ? SurfaceKind::floor
+                                                                  : SurfaceKind::background);
+        found = true;
+    }
+    for (std::size_t i = 0; i < m_bubbles.size(); ++i) {
+        if (m_bubbles[i].intersect(ray, t_min, t_max, h)) {
+            t_max = h.t;
+            hit.surface = h;
+            hit.kind = SurfaceKind::bubble;
+            hit.index = static_cast<int>(i);
+            found = true;
+        }
+    }
+    for (std::size_t i = 0; i < m_body.size(); ++i) {
+        if (m_body[i].intersect(ray, t_min, t_max, h)) {
+            t_max = h.t;
+            hit.surface = h;
+            hit.kind = SurfaceKind::body;
+            hit.index = static_cast<int>(i);
+            found = true;
+        }
+    }
+    for (std::size_t i = 0; i < m_wings.size(); ++i) {
+        const Wing& w = m_wings[i];
+        const double denom = dot(ray.direction, w.normal);
+        if (std::abs(denom) < 1e-12) continue;
+        const double t = dot(w.origin - ray.origin, w.normal) / denom;
+        if (!(t > t_min && t < t_max)) continue;
+        const Vec3 p = ray.at(t);
+        const Vec3 d = p - w.origin;
+        double margin = 1;
+        if (!inside_wing(w, dot(d, w.axis_a), dot(d, w.axis_b), margin)) continue;
+        t_max = t;
+        hit.surface = SurfaceHit{};
+        hit.surface.t = t;
+        hit.surface.position = p;
+        hit.surface.normal = w.normal;
+        hit.surface.shading_normal = w.normal;
+        hit.kind = SurfaceKind::wing;
+        hit.index = static_cast<int>(i);
+        hit.margin_distance = margin;
+        found = true;
+    }
+    if (m_wing_mesh && m_wing_mesh->intersect(ray, t_min, t_max, h)) {
+        hit.surface = h;
+        hit.kind = SurfaceKind::wing_mesh;
+        hit.margin_distance = 1;
+        found = true;
+    }
+    return found;
+}
+
+bool World::sun_blocked(Vec3 p) const noexcept {
+    const Ray r{p, m_sun};
+    const double far = std::numeric_limits<double>::infinity();
+    SurfaceHit h;
+    for (const Sphere& s : m_body)
+        if (s.intersect(r, m_epsilon, far, h)) return true;
+    for (const Wing& w : m_wings) {
+        const double denom = dot(r.direction, w.normal);
+        if (std::abs(denom) < 1e-12) continue;
+        const double t = dot(w.origin - r.origin, w.normal) / denom;
+        if (!(t > m_epsilon)) continue;
+        const Vec3 d = r.at(t) - w.origin;
+        double margin = 1;
+        if (inside_wing(w, dot(d, w.axis_a), dot(d, w.axis_b), margin)) return true;
+    }
+    if (m_wing_mesh && m_wing_mesh->occluded(r, m_epsilon, far)) return true;
+    return false;
+}
+
+// --- Light -----------------------------------------------------------------------------------
+
+Rgb3 World::environment(Vec3 d) const noexcept {
+    const LightParams& l = m_scene.light;
+    Rgb3 e;
+    if (m_environment) {
+        const io::Image& img = *m_environment;
+        const double u = std::atan2(d.x, -d.z) / (2 * pi) + 0.5;
+        const double v = std::acos(std::clamp(d.y, -1.0, 1.0)) / pi;
+        const int x = std::clamp(static_cast<int>(u * img.width), 0, img.width - 1);
+        const int y = std::clamp(static_cast<int>(v * img.height), 0, img.height - 1);
+        for (int c = 0; c < 3; ++c) {
+            const double s = img.at(x, y, c);
+            e[c] = std::isfinite(s) ? std::max(0.0, s) : 0.0;
+        }
+    } else if (d.y >= 0) {
+        const double f = std::pow(d.y, 0.45);
+        for (int c = 0; c < 3; ++c) e[c] = l.sky_horizon[c] + f * (l.sky_zenith[c] - l.sky_horizon[c]);
+    } else {
+        e = l.ground;  // the ground below the horizon
+    }
+    for (double& v : e) v *= l.environment_intensity;
+    if (dot(d, m_sun) >= m_cos_sun_radius)
+        for (double& v : e) v += m_sun_radiance;
+    return e;
+}
+
+Rgb3 World::diffuse_light(Vec3 p, Vec3 n) const noexcept {
+    const double cos_sun = dot(n, m_sun);
+    const double sun = cos_sun > 0 && !sun_blocked(p) ? m_scene.light.sun_intensity * cos_sun : 0.0;
+    // The sky seen by a tilted surface: all of it facing up, about half facing sideways.
+    const double sky = 0.5 + 0.5 * std::clamp(n.y, -1.0, 1.0);
+    return {sun + sky * m_ambient[0], sun + sky * m_ambient[1], sun + sky * m_ambient[2]};
+}
+
+// --- Textures --------------------------------------------------------------------------------
+
+void World::pavement(Vec3 p, Vec3& normal, Rgb3& albedo) const noexcept {
+    const PavementParams& v = m_scene.pavement;
+    const double f = v.bump_frequency;
+    // Two noise calls set the bumps' scale and their roughness (Smits 1990 §3.5), then the
+    // bumps themselves and fine bumps on top, all through the gradient dnoise.
+    const double scale = m_noise.noise(p.x * f * 0.21, 0.5, p.z * f * 0.21);
+    const double rough = m_noise2.noise(p.x * f * 0.13, 1.5, p.z * f * 0.13);
+    const double freq = f * (0.5 + std::clamp(scale, 0.0, 1.5));
+    const NoiseGradient g1 = m_noise.dnoise(p.x * freq, 2.5, p.z * freq);
+    const double ff = v.fine_frequency;
+    const NoiseGradient g2 = m_noise2.dnoise(p.x * ff, 7.5, p.z * ff);
+    const double a1 = v.bump_height * std::clamp(rough, 0.0, 1.5);
+    const double sx = a1 * g1.x + v.fine_height * g2.x;
+    const double sz = a1 * g1.z + v.fine_height * g2.z;
+    normal = normalize(Vec3{-sx, 1.0, -sz});
+    const double grain = m_noise.noise(p.x * ff * 0.7, 11.5, p.z * ff * 0.7);
+    const double m = std::clamp(1.0 + v.albedo_variation * (2.0 * grain - 1.0), 0.0, 2.0);
+    albedo = {std::min(1.0, v.albedo[0] * m), std::min(1.0, v.albedo[1] * m),
+              std::min(1.0, v.albedo[2] * m)};
+}
+
+double World::oil_thickness_nm(Vec3 p) const noexcept {
+    const OilParams& o = m_scene.oil;
+    const double x = (p.x - o.center[0]) / o.radius;
+    const double y = (p.z - o.center[2]) / o.radius;
+    const double s = o.turbulence_scale;
+    const double turb = m_noise.turbulence(x * s + 17.25, y * s + 3.5, 0.5);
+    const double t = o.max_thickness_nm * std::exp(-o.k1 * (x * x + y * y + o.k2 * turb));
+    return t >= o.min_thickness_nm ? t : 0.0;
+}
+
+double World::bubble_thickness_nm(int bubble, Vec3 p) const noexcept {
+    const BubbleParams& b = m_scene.soap.bubbles[bubble];
+    const Vec3 local = (p - to_vec(b.center)) / b.radius;
+    const double h = std::clamp(0.5 * (local.y + 1.0), 0.0, 1.0);  // 0 bottom, 1 top
+    const double depth = 1.0 - h;
+    const double base = b.top_thickness_nm +
+                        (b.bottom_thickness_nm - b.top_thickness_nm) * std::pow(depth, b.profile_exponent);
+    const double s = b.turbulence_scale;
+    const double o = 31.7 * (bubble + 1);  // each bubble its own part of the noise
+    // Turbulence (mean about 1) swirls the bands; it fades towards the top, where the film
+    // has drained to the black film.
+    const double turb = m_noise.turbulence(local.x * s + o, local.y * s, local.z * s) - 1.0;
+    const double swirl = b.turbulence_nm * turb * std::min(1.0, 3.0 * depth);
+    return std::max(0.0, base + swirl);
+}
+
+Vec3 World::wing_normal(Vec3 p, Vec3 n) const noexcept {
+    const MorphoSceneParams& m = m_scene.morpho;
+    const double f = m.bump_frequency;
+    const NoiseGradient g = m_noise.dnoise(p.x * f, p.y * f, p.z * f);
+    Vec3 grad{g.x, g.y, g.z};
+    grad = grad - dot(grad, n) * n;
+    return normalize(n - m.bump_height * grad);
+}
+
+Rgb3 World::floor_albedo(Vec3 p) const noexcept {
+    const SoapParams& s = m_scene.soap;
+    if (s.floor_checker <= 0) return s.floor_albedo;
+    const auto cell = static_cast<long long>(std::floor(p.x / s.floor_checker)) +
+                      static_cast<long long>(std::floor(p.z / s.floor_checker));
+    return (cell & 1) ? s.floor_albedo_alt : s.floor_albedo;
+}
+
+Rgb3 World::background_albedo(Vec3 p) const noexcept {
+    const Rgb3& a = m_scene.morpho.background_albedo;
+    const double t = m_noise2.turbulence(p.x * 1.7, 0.3, p.z * 1.7) * 0.5;  // about 0–1
+    const double m = std::clamp(0.55 + 0.9 * (t - 0.5), 0.2, 1.6);
+    return {std::min(1.0, a[0] * m), std::min(1.0, a[1] * m), std::min(1.0, a[2] * m)};
+}
+
+}  // namespace irid::render

@@ -1,0 +1,141 @@
+#pragma once
+
+// The renderer's world: a Scene turned into geometry, textures, lights and colour tables, and
+// the integrator that traces a ray through it. Private to irid_render.
+
+#include "carriers.h"
+#include "film_table.h"
+
+#include <irid/io/image.h>
+#include <irid/optics/film_color.h>
+#include <irid/optics/multilayer.h>
+#include <irid/optics/thesis_models.h>
+#include <irid/render/camera.h>
+#include <irid/render/geometry.h>
+#include <irid/render/scene.h>
+#include <irid/texture/noise.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace irid::render {
+
+/// A flat wing: a polygon in a plane, in the wing's own 2-D coordinates (a along the span, b
+/// along the body), with the edges of the outer margin marked.
+struct Wing {
+    Vec3 origin, axis_a, axis_b, normal;
+    std::vector<std::array<double, 2>> outline;
+    std::vector<bool> outer_edge;  // edge i runs from outline[i] to outline[i + 1]
+    double length = 1;             // the wing's length, for the margin
+};
+
+/// What a ray hit.
+enum class SurfaceKind { none, pavement, bubble, floor, wing, wing_mesh, body, background };
+
+struct Hit {
+    SurfaceHit surface;
+    SurfaceKind kind = SurfaceKind::none;
+    int index = -1;
+    /// For wings: the distance to the outer margin in units of the wing's length.
+    double margin_distance = 1;
+};
+
+/// The neighbouring pixel's rays of a camera ray, for the footprint of a film's thickness.
+struct RayDifferential {
+    Ray dx, dy;
+    /// Fraction of a pixel one sample stands for along each axis (1/√spp).
+    double stratum = 1;
+};
+
+struct ThicknessSample {
+    double t_nm = 0;
+    double footprint_nm = 0;
+};
+
+class World {
+public:
+    explicit World(const Scene& scene);
+
+    [[nodiscard]] const Scene& scene() const noexcept { return m_scene; }
+    [[nodiscard]] const Camera& camera() const noexcept { return m_camera; }
+    [[nodiscard]] const SpectralBasis& basis() const noexcept { return *m_basis; }
+
+    [[nodiscard]] bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit) const noexcept;
+    /// Any opaque surface between the point and the sun? (Bubbles and oil let light through.)
+    [[nodiscard]] bool sun_blocked(Vec3 p) const noexcept;
+
+    /// The environment's radiance towards -direction (the sky or image, plus the sun's disc), as
+    /// linear Rec. 709 RGB relative to D65.
+    [[nodiscard]] Rgb3 environment(Vec3 direction) const noexcept;
+    /// The diffuse lighting a surface with normal n at p receives, as RGB (the sun with its
+    /// shadow, plus the mean sky): albedo × this is the radiance it reflects.
+    [[nodiscard]] Rgb3 diffuse_light(Vec3 p, Vec3 n) const noexcept;
+
+    /// The pavement's bumped normal and albedo at a point of the ground plane.
+    void pavement(Vec3 p, Vec3& normal, Rgb3& albedo) const noexcept;
+    /// The oil's thickness at a point of the pavement (eq. 28), 0 where there is none.
+    [[nodiscard]] double oil_thickness_nm(Vec3 p) const noexcept;
+    /// A bubble's thickness at a point of its surface.
+    [[nodiscard]] double bubble_thickness_nm(int bubble, Vec3 p) const noexcept;
+    [[nodiscard]] Vec3 wing_normal(Vec3 p, Vec3 n) const noexcept;
+    [[nodiscard]] Rgb3 floor_albedo(Vec3 p) const noexcept;
+    [[nodiscard]] Rgb3 background_albedo(Vec3 p) const noexcept;
+
+    // The films' physics for the spectral path and the tables for the table path.
+    [[nodiscard]] const SingleFilm& film() const noexcept { return *m_film; }
+    [[nodiscard]] double thesis_k() const noexcept { return m_thesis_k; }
+    [[nodiscard]] const FilmTable& film_table() const noexcept { return *m_film_table; }
+    [[nodiscard]] const AngleTable<Rgb3>& wing_table() const noexcept { return m_wing_rgb; }
+    /// The wing's reflectance spectrum at θ [deg] for the spectral path: the thesis' model
+    /// evaluated per call (the blend in closed form, morpho_blend_reflectance_continuous), the
+    /// exact stack interpolated from a table of spectra every degree (101 transfer matrices
+    /// per angle are too slow per ray).
+    void wing_spectrum(double theta_deg, SpectralCarrier& out) const noexcept;
+    /// The film's reflectance spectrum at a thickness (mean over the footprint) and angle.
+    void film_spectrum(const ThicknessSample& t, double cos_theta, SpectralCarrier& out) const;
+
+    [[nodiscard]] double epsilon() const noexcept { return m_epsilon; }
+    [[nodiscard]] double table_seconds() const noexcept { return m_table_seconds; }
+
+private:
+    void build_tables();
+    void build_oil_slick();
+    void build_soap_bubbles();
+    void build_morpho();
+
+    const Scene& m_scene;
+    Camera m_camera;
+    std::unique_ptr<SpectralBasis> m_basis;
+    ValueNoise m_noise;
+    ValueNoise m_noise2;
+
+    // Geometry.
+    std::optional<Plane> m_ground;
+    std::vector<Sphere> m_bubbles;
+    std::vector<Sphere> m_body;
+    std::vector<Wing> m_wings;
+    std::optional<TriangleMesh> m_wing_mesh;
+
+    // Light.
+    Vec3 m_sun;
+    double m_cos_sun_radius = 1;
+    double m_sun_radiance = 0;
+    Rgb3 m_ambient{};
+    std::optional<io::Image> m_environment;
+
+    // Films.
+    std::optional<SingleFilm> m_film;
+    double m_thesis_k = 1;
+    std::optional<FilmTable> m_film_table;
+    double m_max_thickness_nm = 0;
+    MorphoParameters m_wing_params;
+    MorphoBlend m_wing_blend;
+    AngleTable<Rgb3> m_wing_rgb;
+    AngleTable<std::array<double, dense_sample_count>> m_wing_spectra;
+
+    double m_epsilon = 1e-6;
+    double m_table_seconds = 0;
+};
+
+}  // namespace irid::render

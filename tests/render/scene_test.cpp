@@ -1,0 +1,139 @@
+// Scene files: the built-in scenes, every kind of bad value, and overrides.
+#include <irid/error.h>
+#include <irid/render/scene.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <string>
+
+namespace irid::render {
+namespace {
+
+/// The message of the irid::Error thrown by f, or "" when it throws none.
+template <class F>
+std::string error_of(F&& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+#define EXPECT_CONTAINS(text, part) \
+    EXPECT_NE(std::string(text).find(part), std::string::npos) << "message: " << (text)
+
+TEST(Scene, BuiltinScenesAreTheThreeOfTheThesis) {
+    const auto names = builtin_scene_names();
+    ASSERT_EQ(names.size(), 3u);
+    EXPECT_EQ(load_scene("morpho").kind, SceneKind::morpho);
+    EXPECT_EQ(load_scene("oil-slick").kind, SceneKind::oil_slick);
+    EXPECT_EQ(load_scene("soap-bubbles").kind, SceneKind::soap_bubbles);
+}
+
+// The compiled-in scenes are the files under scenes/, read here independently of irid.
+TEST(Scene, BuiltinScenesCarryTheValuesOfTheirFiles) {
+    for (const std::string name : {"oil-slick", "soap-bubbles", "morpho"}) {
+        std::ifstream in(std::string(IRID_SCENES_DIR) + "/" + name + ".json");
+        ASSERT_TRUE(in) << name;
+        const nlohmann::json j = nlohmann::json::parse(in);
+        const Scene s = load_scene(name);
+        EXPECT_EQ(s.image.width, j["image"]["width"].get<int>());
+        EXPECT_EQ(s.image.spp, j["image"]["spp"].get<int>());
+        EXPECT_DOUBLE_EQ(s.camera.fov_deg, j["camera"]["fov_deg"].get<double>());
+        EXPECT_DOUBLE_EQ(s.light.sun_intensity, j["light"]["sun_intensity"].get<double>());
+        EXPECT_EQ(s.render.clip, j["render"]["clip"].get<std::string>());
+        if (name == "oil-slick") {
+            EXPECT_DOUBLE_EQ(s.oil.max_thickness_nm, j["oil"]["max_thickness_nm"].get<double>());
+        }
+        if (name == "soap-bubbles") {
+            ASSERT_EQ(s.soap.bubbles.size(), j["soap"]["bubbles"].size());
+            EXPECT_DOUBLE_EQ(s.soap.bubbles[1].radius,
+                             j["soap"]["bubbles"][1]["radius"].get<double>());
+        }
+        if (name == "morpho") {
+            EXPECT_EQ(s.morpho.periods, j["morpho"]["periods"].get<int>());
+        }
+    }
+}
+
+TEST(Scene, JsonSyntaxErrorsNameTheSourceLineAndColumn) {
+    const std::string text = "{\n  \"scene\": \"morpho\",\n  \"image\": { \"width\": 10,, }\n}\n";
+    const std::string m = error_of([&] { (void)parse_scene(text, "bad.json"); });
+    EXPECT_CONTAINS(m, "bad.json");
+    EXPECT_CONTAINS(m, "line 3, column 26");
+    EXPECT_CONTAINS(m, "syntax error");
+}
+
+TEST(Scene, UnknownKeysAreErrorsListingTheValidOnes) {
+    const std::string m =
+        error_of([] { (void)parse_scene(R"({"scene": "morpho", "morpho": {"d3_nm": 1}})", "s"); });
+    EXPECT_CONTAINS(m, "unknown key 'morpho.d3_nm'");
+    EXPECT_CONTAINS(m, "d1_nm");
+    EXPECT_CONTAINS(error_of([] { (void)parse_scene(R"({"scene": "morpho", "colour": 1})", "s"); }),
+                    "unknown key 'colour'");
+}
+
+TEST(Scene, ValuesOutOfRangeNameTheKeyPathAndTheRange) {
+    EXPECT_CONTAINS(error_of([] {
+                        (void)parse_scene(R"({"scene": "morpho", "image": {"width": 0}})", "s");
+                    }),
+                    "'image.width' is 0; allowed: [1, 16384]");
+    EXPECT_CONTAINS(error_of([] {
+                        (void)parse_scene(R"({"scene": "oil-slick", "oil": {"k1": -1}})", "s");
+                    }),
+                    "'oil.k1' is -1; allowed: [0, 100]");
+    EXPECT_CONTAINS(error_of([] {
+                        (void)parse_scene(
+                            R"({"scene": "soap-bubbles", "soap": {"bubbles": [{"radius": 0}]}})",
+                            "s");
+                    }),
+                    "'soap.bubbles.0.radius' is 0");
+    EXPECT_CONTAINS(error_of([] {
+                        (void)parse_scene(R"({"scene": "morpho", "camera": {"eye": "x"}})", "s");
+                    }),
+                    "'camera.eye' must be an array of 3 numbers");
+    EXPECT_CONTAINS(error_of([] {
+                        (void)parse_scene(R"({"scene": "morpho", "render": {"path": "rgb"}})", "s");
+                    }),
+                    "allowed: table, spectral");
+    EXPECT_CONTAINS(error_of([] { (void)parse_scene(R"({"image": {}})", "s"); }),
+                    "'scene' is missing");
+}
+
+TEST(Scene, ImagesBeyondThePixelLimitAreRefused) {
+    const std::string m = error_of([] {
+        (void)parse_scene(R"({"scene": "morpho", "image": {"width": 16384, "height": 16384}})",
+                          "s");
+    });
+    EXPECT_CONTAINS(m, "268435456 pixels");
+    EXPECT_CONTAINS(m, "at most 67108864");
+}
+
+TEST(Scene, OverridesReplaceValuesAtTheirKeyPaths) {
+    const Scene s = load_scene("soap-bubbles", {"soap.bubbles.1.radius=0.5", "render.path=spectral",
+                                                "camera.eye=[1, 2, 3]", "image.spp=9"});
+    EXPECT_DOUBLE_EQ(s.soap.bubbles[1].radius, 0.5);
+    EXPECT_EQ(s.render.path, ColorPath::spectral);
+    EXPECT_EQ(s.camera.eye, (Vec3Param{1, 2, 3}));
+    EXPECT_EQ(s.image.spp, 9);
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("soap-bubbles", {"soap.bubbles.7.radius=1"}); }),
+                    "must be an index below 3");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"morpho.colour=1"}); }),
+                    "unknown key 'morpho.colour'");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"image.width"}); }),
+                    "must be key.path=value");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"image.width=big"}); }),
+                    "'image.width' must be an integer");
+}
+
+TEST(Scene, UnknownScenesListTheBuiltinOnes) {
+    const std::string m = error_of([] { (void)load_scene("no-such-scene.json"); });
+    EXPECT_CONTAINS(m, "no-such-scene.json");
+    EXPECT_CONTAINS(m, "morpho, oil-slick, soap-bubbles");
+}
+
+}  // namespace
+}  // namespace irid::render
