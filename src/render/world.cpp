@@ -175,6 +175,13 @@ void World::build_morpho() {
                 w.outer_edge.assign(n, true);
                 w.outer_edge[n - 1] = false;  // the root edge back to the first point
                 w.length = half;
+                w.bounds = {w.outline[0][0], w.outline[0][0], w.outline[0][1], w.outline[0][1]};
+                for (const auto& p : w.outline) {
+                    w.bounds[0] = std::min(w.bounds[0], p[0]);
+                    w.bounds[1] = std::max(w.bounds[1], p[0]);
+                    w.bounds[2] = std::min(w.bounds[2], p[1]);
+                    w.bounds[3] = std::max(w.bounds[3], p[1]);
+                }
                 m_wings.push_back(std::move(w));
             }
         }
@@ -262,7 +269,7 @@ void World::build_tables() {
         return s;
     };
     if (rp.path == ColorPath::table) {
-        m_wing_rgb = AngleTable<Rgb3>(exact ? 1.0 : 0.5, [&](double theta_deg) {
+        m_wing_rgb = AngleTable<Rgb3>(1.0, [&](double theta_deg) {
             const auto s = spectrum_at(theta_deg);
             const Rgb c = col.linear_rgb(
                 col.xyz_of([&](double lambda) { return s[static_cast<int>(lambda) - lambda_min_nm]; }));
@@ -270,7 +277,7 @@ void World::build_tables() {
         });
     } else if (exact) {
         m_wing_spectra =
-            AngleTable<std::array<double, dense_sample_count>>(exact ? 1.0 : 0.5, spectrum_at);
+            AngleTable<std::array<double, dense_sample_count>>(1.0, spectrum_at);
     }
 }
 
@@ -321,6 +328,7 @@ namespace {
 
 /// Crossing-number test and the distance to the outer edges, in the wing's 2-D coordinates.
 bool inside_wing(const Wing& w, double a, double b, double& margin) {
+    if (a < w.bounds[0] || a > w.bounds[1] || b < w.bounds[2] || b > w.bounds[3]) return false;
     bool inside = false;
     double best = std::numeric_limits<double>::infinity();
     const std::size_t n = w.outline.size();
@@ -331,6 +339,11 @@ bool inside_wing(const Wing& w, double a, double b, double& margin) {
             const double x = p[0] + (b - p[1]) * (q[0] - p[0]) / (q[1] - p[1]);
             if (a < x) inside = !inside;
         }
+    }
+    if (!inside) return false;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& p = w.outline[i];
+        const auto& q = w.outline[(i + 1) % n];
         if (w.outer_edge[i]) {
             const double ex = q[0] - p[0], ey = q[1] - p[1];
             const double len2 = ex * ex + ey * ey;
@@ -340,7 +353,7 @@ bool inside_wing(const Wing& w, double a, double b, double& margin) {
         }
     }
     margin = best / w.length;
-    return inside;
+    return true;
 }
 
 }  // namespace

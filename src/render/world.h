@@ -28,6 +28,7 @@ struct Wing {
     std::vector<std::array<double, 2>> outline;
     std::vector<bool> outer_edge;  // edge i runs from outline[i] to outline[i + 1]
     double length = 1;             // the wing's length, for the margin
+    std::array<double, 4> bounds{};  // a_min, a_max, b_min, b_max of the outline
 };
 
 /// What a ray hit.
