@@ -56,15 +56,15 @@ std::span<const CatalogEntry> catalog_entries() {
           "methods=LIST of clip methods (default clamp,smits,luv-hue, then all others); "
           "luminance=Y in [0.01, 0.99] (default 0.2)"},
          draw_spectrum_clip},
+        {{"table1", "Table 1", "Operations per colour of the RGB clip, ours beside the thesis'",
+          table_extensions, "html=page|fragment (for .html; default page)"},
+         draw_table1},
         {{"film-spectra", "", "Reflectance spectra of single thin films, exact and thesis",
           image_extensions,
           "films=LIST of thickness_nm[@material] (default 100,300,500,1000); film=MATERIAL "
           "(default soap-film); substrate=MATERIAL (default air); ambient=MATERIAL (default "
           "air); angle=degrees 0-89 (default 0); model=exact|thesis|both (default exact)"},
          draw_film_spectra},
-        {{"table1", "Table 1", "Operations per colour of the RGB clip, ours beside the thesis'",
-          table_extensions, "html=page|fragment (for .html; default page)"},
-         draw_table1},
         {{"newton", "", "Newton's colour scale: film colour against thickness, thesis and exact",
           image_extensions,
           "brightness=strip|off|each (default strip); reference=NM, the wavelength of the order "

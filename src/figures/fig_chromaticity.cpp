@@ -127,6 +127,9 @@ FigureResult draw_chromaticity(const FigureRequest& request) {
     const std::vector<Point> locus = spectral_locus(diagram);
     const double locus_area = polygon_area(locus);
 
+    std::vector<std::string> legend_labels{"spectral locus 360–830 nm", "purple line",
+                                           "white point"};
+    for (const RgbSpace* sp : spaces) legend_labels.push_back(sp->name());
     Canvas canvas(image_format_for(request.output), request.width_px, request.height_px);
     const double s = canvas.scale();
     // x from below 0 so that the labels of the locus' left side (490–510 nm) stay inside.
@@ -137,7 +140,8 @@ FigureResult draw_chromaticity(const FigureRequest& request) {
     Plot plot(canvas, page_area(canvas), x_axis, y_axis,
               diagram == Diagram::xy ? "CIE 1931 xy chromaticity diagram"
                                      : "CIE 1976 u′v′ chromaticity diagram",
-              {.equal_aspect = true, .right_reserve = 190.0 * s});
+              {.equal_aspect = true,
+               .right_reserve = Plot::outside_legend_width(canvas, legend_labels)});
     const Rect frame = plot.frame();
 
     std::vector<Point> locus_canvas;

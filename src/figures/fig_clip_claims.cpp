@@ -85,19 +85,6 @@ std::string markdown_table(const Table& t) {
     return s;
 }
 
-std::string html_escape(const std::string& s) {
-    std::string out;
-    for (const char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string html_table(const Table& t) {
     std::string s = "<table>\n";

@@ -271,8 +271,11 @@ FigureResult draw_clip_geometry(const FigureRequest& request) {
         "The geometry of gamut clipping, after Smits 1990 Figure 10, drawn in the CIE 1931 xy "
         "plane: the slice of the " + space.name() + " RGB cube at luminance Y = " +
         shortest(input.Y) + " (a plane of constant luminance meets the cube in a polygon, and a "
-        "constant-Y plane maps to xy projectively, so its edges stay straight), filled with its "
-        "own colours; the colour x, y = " + fixed(input.x, 4) + ", " + fixed(input.y, 4) +
+        "constant-Y plane maps to xy projectively, so its edges stay straight), " +
+        (&space == &srgb() ? std::string("filled with its own colours (all inside sRGB, shown "
+                                         "exactly, no clip)")
+                           : std::string("filled grey")) +
+        "; the colour x, y = " + fixed(input.x, 4) + ", " + fixed(input.y, 4) +
         (default_color ? " (the spectral colour at 520 nm)" : "") +
         (in_gamut ? ", which is inside the gamut (every method leaves it unchanged)"
                   : ", outside the gamut") +

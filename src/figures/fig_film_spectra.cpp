@@ -101,7 +101,16 @@ FigureResult draw_film_spectra(const FigureRequest& request) {
                          "a comma-separated list of thickness_nm[@material], thickness in "
                          "[0, 10000], material " + material_allowed);
         }
-        const Material m = spec.material.empty() ? film_material : material("films", spec.material);
+        Material m = film_material;
+        if (!spec.material.empty()) {
+            try {
+                m = parse_material(spec.material);
+            } catch (const Error&) {
+                options.fail("films", films_text,
+                             "unknown material \"" + spec.material + "\" in \"" + item + "\"",
+                             material_allowed);
+            }
+        }
         films.push_back({ambient, m, substrate});
         specs.push_back(std::move(spec));
     }
@@ -164,6 +173,9 @@ FigureResult draw_film_spectra(const FigureRequest& request) {
         swatches.emplace_back(c.series.label, shown);
     }
 
+    std::vector<std::string> legend_labels;
+    for (const Curve& c : curves) legend_labels.push_back(c.series.label);
+    for (const auto& sw : swatches) legend_labels.push_back("colour, " + sw.first);
     Canvas canvas(image_format_for(request.output), request.width_px, request.height_px);
     const double sc = canvas.scale();
     Plot plot(canvas, page_area(canvas), {.min = lo_nm, .max = hi_nm, .title = "wavelength λ (nm)"},
@@ -175,7 +187,7 @@ FigureResult draw_film_spectra(const FigureRequest& request) {
                                                       : " on " + substrate.name() + " in " +
                                                             ambient.name()) +
                   ", " + shortest(angle_deg) + "° incidence",
-              {.right_reserve = 170.0 * sc});
+              {.right_reserve = Plot::outside_legend_width(canvas, legend_labels)});
     for (const Curve& c : curves) {
         plot.line(c.series.x, c.series.y,
                   {c.color, 2.0 * sc, c.thesis ? Dash::dashed : Dash::solid}, c.series.label);

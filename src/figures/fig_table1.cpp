@@ -79,19 +79,6 @@ std::vector<std::string> notes(const Table1& t) {
     return out;
 }
 
-std::string escape_html(const std::string& s) {
-    std::string out;
-    for (const char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 }  // namespace
 
@@ -123,20 +110,20 @@ std::string table1_html(const Table1& t, bool page) {
         "<th>multiplications</th><th>divisions</th></tr></thead>\n<tbody>\n";
     for (const Row& r : rows_of(t)) {
         const bool clipped = r.counts != &t.in_gamut;
-        body += "<tr><td>" + escape_html(r.name) + "</td><td>" +
-                escape_html(cell(r.counts->comparisons, thesis_comparisons, clipped)) +
-                "</td><td>" + escape_html(cell(r.counts->additions, thesis_additions, clipped)) +
+        body += "<tr><td>" + html_escape(r.name) + "</td><td>" +
+                html_escape(cell(r.counts->comparisons, thesis_comparisons, clipped)) +
+                "</td><td>" + html_escape(cell(r.counts->additions, thesis_additions, clipped)) +
                 "</td><td>" +
-                escape_html(cell(r.counts->multiplications, thesis_multiplications, clipped)) +
-                "</td><td>" + escape_html(cell(r.counts->divisions, thesis_divisions, clipped)) +
+                html_escape(cell(r.counts->multiplications, thesis_multiplications, clipped)) +
+                "</td><td>" + html_escape(cell(r.counts->divisions, thesis_divisions, clipped)) +
                 "</td></tr>\n";
     }
     body += "<tr class=\"thesis\"><td>thesis, Table 1 (per clipped colour)</td><td>" +
-            escape_html(range_text(thesis_comparisons)) + "</td><td>" +
-            escape_html(range_text(thesis_additions)) + "</td><td>" +
-            escape_html(range_text(thesis_multiplications)) + "</td><td>" +
-            escape_html(range_text(thesis_divisions)) + "</td></tr>\n</tbody>\n</table>\n<ul>\n";
-    for (const std::string& n : notes(t)) body += "<li>" + escape_html(n) + "</li>\n";
+            html_escape(range_text(thesis_comparisons)) + "</td><td>" +
+            html_escape(range_text(thesis_additions)) + "</td><td>" +
+            html_escape(range_text(thesis_multiplications)) + "</td><td>" +
+            html_escape(range_text(thesis_divisions)) + "</td></tr>\n</tbody>\n</table>\n<ul>\n";
+    for (const std::string& n : notes(t)) body += "<li>" + html_escape(n) + "</li>\n";
     body += "</ul>\n</section>\n";
     if (!page) return body;
     return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"

@@ -815,6 +815,25 @@ void Plot::finish(LegendPosition legend) {
     draw_legend(legend);
 }
 
+namespace {
+
+/// The legend box's width for labels at most `widest` wide: padding, key, gap, text, padding.
+double legend_box_width(double widest, double fs) {
+    return 0.6 * fs + 2.2 * fs + 0.5 * fs + widest + 0.6 * fs;
+}
+
+}  // namespace
+
+double Plot::outside_legend_width(Canvas& canvas, const std::vector<std::string>& labels,
+                                  double font_size) {
+    const double fs = font_size > 0.0 ? font_size : 12.0 * canvas.scale();
+    const TextStyle label{.size = fs, .valign = VAlign::middle};
+    double widest = 0.0;
+    for (const std::string& l : labels) widest = std::max(widest, canvas.measure_text(l, label).width);
+    // The inset between frame and box, the box, and a margin after it.
+    return 0.6 * fs + legend_box_width(widest, fs) + 0.3 * fs;
+}
+
 void Plot::draw_legend(LegendPosition position) {
     if (position == LegendPosition::none || m_legend.empty()) return;
     Canvas& canvas = *m_canvas;
@@ -827,7 +846,7 @@ void Plot::draw_legend(LegendPosition position) {
     const double pad = 0.6 * fs;
     const double row = 1.5 * fs;
     const double key = 2.2 * fs;
-    const double w = pad + key + 0.5 * fs + widest + pad;
+    const double w = legend_box_width(widest, fs);
     const double h = pad + row * static_cast<double>(m_legend.size()) + pad - 0.5 * fs;
     const double inset = 0.6 * fs;
     Rect box{0.0, 0.0, w, h};

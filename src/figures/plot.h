@@ -293,6 +293,11 @@ public:
 
     /// Draws frame, ticks, tick labels, axis titles, title and legend. Call once, last.
     void finish(LegendPosition legend = LegendPosition::top_right);
+    /// The room (points) an outside_right legend with these labels needs right of the frame:
+    /// for PlotOptions::right_reserve. font_size 0 → 12 × canvas.scale(), as Plot's default.
+    [[nodiscard]] static double outside_legend_width(Canvas& canvas,
+                                                     const std::vector<std::string>& labels,
+                                                     double font_size = 0.0);
     /// Where finish() drew the legend (canvas coordinates); empty (0 × 0) when it drew none.
     [[nodiscard]] const Rect& legend_box() const noexcept { return m_legend_box; }
 

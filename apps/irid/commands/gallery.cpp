@@ -40,19 +40,6 @@ struct GalleryOptions {
     bool quiet = false;
 };
 
-std::string escape(std::string_view s) {
-    std::string out;
-    for (const char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 struct SceneInfo {
     const char* name;
@@ -87,15 +74,15 @@ public:
         m_html += "<figure>\n";
         m_html += fmt::format(
             "<a href=\"{0}\"><img src=\"{0}\" width=\"{1}\" height=\"{2}\" alt=\"{3}\"></a>\n",
-            escape(file), w, h, escape(alt));
+            figures::html_escape(file), w, h, figures::html_escape(alt));
         m_html += "<figcaption><p class=\"title\">";
         if (!thesis.empty())
-            m_html += fmt::format("<span class=\"thesis\">Thesis {}</span> ", escape(thesis));
-        m_html += escape(title) + "</p>\n<p>" + caption + "</p>\n";
+            m_html += fmt::format("<span class=\"thesis\">Thesis {}</span> ", figures::html_escape(thesis));
+        m_html += figures::html_escape(title) + "</p>\n<p>" + caption + "</p>\n";
         if (!measurements.empty()) {
             m_html += "<table class=\"numbers\">\n";
             for (const auto& [k, v] : measurements)
-                m_html += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", escape(k), escape(v));
+                m_html += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", figures::html_escape(k), figures::html_escape(v));
             m_html += "</table>\n";
         }
         m_html += "</figcaption>\n</figure>\n";
@@ -134,6 +121,12 @@ std::string html_fragment(const std::filesystem::path& file) {
     return s;
 }
 
+/// --set values for the image's size.
+std::vector<std::string> size_overrides(int width, int height, int spp) {
+    return {fmt::format("image.width={}", width), fmt::format("image.height={}", height),
+            fmt::format("image.spp={}", spp)};
+}
+
 std::string format_number(double v, int digits = 2) { return fmt::format("{:.{}f}", v, digits); }
 
 int run_gallery(const GalleryOptions& o) {
@@ -163,10 +156,8 @@ int run_gallery(const GalleryOptions& o) {
     ropt.threads = o.threads;
     std::vector<std::pair<std::string, std::string>> speed_rows;
     for (const SceneInfo& info : scene_infos) {
-        const std::vector<std::string> size = {fmt::format("image.width={}", o.width),
-                                               fmt::format("image.height={}", o.height),
-                                               fmt::format("image.spp={}", o.spp)};
-        const render::Scene scene = render::load_scene(info.name, size);
+        const render::Scene scene =
+            render::load_scene(info.name, size_overrides(o.width, o.height, o.spp));
         say(fmt::format("rendering {} ({}×{}, {} spp)", info.name, o.width, o.height, o.spp));
         const render::RenderResult r = render::render(scene, ropt);
         const std::string file = std::string(info.name) + ".png";
@@ -179,7 +170,7 @@ int run_gallery(const GalleryOptions& o) {
                                    "<code>{}</code> to {}.",
                                    info.name, o.width, o.height, o.spp,
                                    scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
-                                   escape(scene.render.clip), escape(scene.render.space)),
+                                   figures::html_escape(scene.render.clip), figures::html_escape(scene.render.space)),
                    {{"time", format_number(s.seconds) + " s"},
                     {"rays per second", format_number(static_cast<double>(s.rays) / s.seconds * 1e-6) + " M"},
                     {"pixels out of gamut before the clip",
@@ -197,9 +188,7 @@ int run_gallery(const GalleryOptions& o) {
         "<th>spectral path</th><th>speed-up</th><th>mean ΔE2000</th><th>99th percentile</th></tr>\n",
         cw, ch, o.spp));
     for (const SceneInfo& info : scene_infos) {
-        std::vector<std::string> set = {fmt::format("image.width={}", cw),
-                                        fmt::format("image.height={}", ch),
-                                        fmt::format("image.spp={}", o.spp)};
+        std::vector<std::string> set = size_overrides(cw, ch, o.spp);
         const render::RenderResult table = render::render(render::load_scene(info.name, set), ropt);
         set.push_back("render.path=spectral");
         say(fmt::format("comparing the colour paths on {}", info.name));
@@ -224,10 +213,9 @@ int run_gallery(const GalleryOptions& o) {
             "<div class=\"pair\">\n",
             aw, ah));
         for (const char* mode : {"none", "footprint"}) {
-            const std::vector<std::string> set = {
-                fmt::format("image.width={}", aw), fmt::format("image.height={}", ah),
-                "image.spp=1", fmt::format("render.antialias={}", mode),
-                "oil.max_thickness_nm=6000"};
+            std::vector<std::string> set = size_overrides(aw, ah, 1);
+            set.push_back(fmt::format("render.antialias={}", mode));
+            set.push_back("oil.max_thickness_nm=6000");
             const render::RenderResult r = render::render(render::load_scene("oil-slick", set), ropt);
             const std::string file = fmt::format("oil-slick-antialias-{}.png", mode);
             io::write_image(dir / file, r.display);
@@ -256,12 +244,12 @@ int run_gallery(const GalleryOptions& o) {
                 "<section>\n<p class=\"title\">{}{}</p>\n{}\n<p>{}</p>\n</section>\n",
                 info.thesis_figure.empty()
                     ? ""
-                    : fmt::format("<span class=\"thesis\">Thesis {}</span> ", escape(info.thesis_figure)),
-                escape(info.title), html_fragment(req.output), escape(fr.caption)));
+                    : fmt::format("<span class=\"thesis\">Thesis {}</span> ", figures::html_escape(info.thesis_figure)),
+                figures::html_escape(info.title), html_fragment(req.output), figures::html_escape(fr.caption)));
             continue;
         }
         page.image(info.name + ".png", fr.width_px, fr.height_px, info.title, info.thesis_figure,
-                   info.title, escape(fr.caption), fr.measurements);
+                   info.title, figures::html_escape(fr.caption), fr.measurements);
     }
     page.add("<h2>Tables</h2>\n");
     for (const std::string& t : tables) page.add(t);
@@ -277,8 +265,8 @@ int run_gallery(const GalleryOptions& o) {
                              "<th>ΔE2000 max</th><th>Oklab hue change mean [°]</th>"
                              "<th>CIELUV hue change mean [°]</th><th>ΔY mean</th>"
                              "<th>colours per second</th></tr>\n",
-                             escape(rep.set_name), rep.size, rep.out_of_gamut,
-                             escape(rep.destination), escape(rep.set_description)));
+                             figures::html_escape(rep.set_name), rep.size, rep.out_of_gamut,
+                             figures::html_escape(rep.destination), figures::html_escape(rep.set_description)));
         for (const MethodClipReport& m : rep.methods) {
             page.add(fmt::format("<tr><td>{}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td>"
                                  "<td>{:.2f}</td><td>{:.2f}</td><td>{:.4f}</td><td>{:.3g}</td></tr>\n",

@@ -80,4 +80,7 @@ struct FigureInfo {
 /// irid::Error for a failed write (naming the file). Nothing is left at `output` then.
 FigureResult draw_figure(const FigureRequest& request);
 
+/// Text made safe for HTML element content and attribute values: & < > " become entities.
+[[nodiscard]] std::string html_escape(std::string_view text);
+
 }  // namespace irid::figures
