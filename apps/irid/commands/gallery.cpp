@@ -127,6 +127,16 @@ std::vector<std::string> size_overrides(int width, int height, int spp) {
             fmt::format("image.spp={}", spp)};
 }
 
+/// The image enlarged k times by repeating pixels, so that single pixels can be seen.
+io::Image magnify(const io::Image& in, int k) {
+    io::Image out = io::Image::blank(in.width * k, in.height * k, in.channels);
+    out.color_space = in.color_space;
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x)
+            for (int c = 0; c < in.channels; ++c) out.at(x, y, c) = in.at(x / k, y / k, c);
+    return out;
+}
+
 std::string format_number(double v, int digits = 2) { return fmt::format("{:.{}f}", v, digits); }
 
 int run_gallery(const GalleryOptions& o) {
@@ -204,23 +214,49 @@ int run_gallery(const GalleryOptions& o) {
     // --- Thin-film aliasing ----------------------------------------------------------------
     {
         say("showing the thin-film anti-aliasing");
-        const int aw = std::max(32, o.width / 2), ah = std::max(24, o.height / 2);
-        page.add(fmt::format(
-            "<h2>Thin-film aliasing</h2>\n<p>Where the film's thickness changes faster than "
-            "the pixel grid, point samples of the colour table alias into false bands. irid "
-            "averages the colour over the thickness range each sample covers (running integrals "
-            "of the table), here at {}×{} and 1 sample per pixel: left without, right with.</p>\n"
-            "<div class=\"pair\">\n",
-            aw, ah));
-        for (const char* mode : {"none", "footprint"}) {
-            std::vector<std::string> set = size_overrides(aw, ah, 1);
+        const int aw = std::max(32, o.width / 8), ah = std::max(24, o.height / 8);
+        constexpr int zoom = 4;
+        // A thicker slick than the scene's, so that its bands crowd below the pixel size, on a
+        // flat pavement, so that what differs between the images is the film.
+        const std::vector<std::string> slick = {"oil.max_thickness_nm=6000", "pavement.bump_height=0",
+                                                "pavement.fine_height=0",
+                                                "pavement.albedo_variation=0"};
+        auto render_slick = [&](int spp, const char* mode) {
+            std::vector<std::string> set = size_overrides(aw, ah, spp);
+            set.insert(set.end(), slick.begin(), slick.end());
             set.push_back(fmt::format("render.antialias={}", mode));
-            set.push_back("oil.max_thickness_nm=6000");
-            const render::RenderResult r = render::render(render::load_scene("oil-slick", set), ropt);
-            const std::string file = fmt::format("oil-slick-antialias-{}.png", mode);
-            io::write_image(dir / file, r.display);
-            page.image(file, aw, ah, file, "", fmt::format("antialias = {}", mode),
-                       "oil-slick with a 6 µm maximum thickness, 1 sample per pixel.", {});
+            return render::render(render::load_scene("oil-slick", set), ropt);
+        };
+        const render::RenderResult reference = render_slick(64, "none");
+        page.add(fmt::format(
+            "<h2>Thin-film aliasing</h2>\n<p>Where a film's thickness changes faster than the "
+            "pixel grid, point samples of its colour alias into false bands and speckle. irid "
+            "averages the colour over the thickness range each sample covers (running integrals "
+            "of the colour table). The oil slick with a 6 µm maximum thickness on a flat, uniform "
+            "pavement, {}×{} pixels "
+            "shown at {}× (nearest neighbour): 1 sample per pixel without and with the "
+            "footprint filter, and 64 point samples per pixel as the reference. ΔE2000 is the "
+            "mean difference to the reference.</p>\n<div class=\"pair\">\n",
+            aw, ah, zoom));
+        struct Variant {
+            const char* file;
+            const char* title;
+            const render::RenderResult* result;
+        };
+        const render::RenderResult none = render_slick(1, "none");
+        const render::RenderResult footprint = render_slick(1, "footprint");
+        for (const Variant& v :
+             {Variant{"oil-slick-antialias-none.png", "1 sample per pixel, no filtering", &none},
+              Variant{"oil-slick-antialias-footprint.png", "1 sample per pixel, footprint filter",
+                      &footprint},
+              Variant{"oil-slick-antialias-reference.png", "64 samples per pixel (reference)",
+                      &reference}}) {
+            io::write_image(dir / v.file, magnify(v.result->display, zoom));
+            const double de = render::delta_e_2000_images(v.result->xyz, reference.xyz).mean;
+            page.image(v.file, aw * zoom, ah * zoom, v.title, "", v.title,
+                       "oil.max_thickness_nm = 6000, pavement bumps and albedo variation 0; the rest as "
+                       "the oil-slick scene.",
+                       {{"mean ΔE2000 to the reference", format_number(de, 3)}});
         }
         page.add("</div>\n");
     }
