@@ -289,10 +289,17 @@ void read_morpho(const Json& j, const std::string& source, MorphoSceneParams& p)
     r.text("wing_mesh", p.wing_mesh);
 }
 
-/// "line L, column C" of a byte offset (nlohmann's parse_error::byte counts from 1 and points
-/// just past the offending character).
+/// "line L, column C" of a parse error. nlohmann's parse_error::byte is one past the last
+/// character read; when that character closes a string (the parser wanted something else, as a
+/// comma before the next key), the column given is the string's opening quote, where editors
+/// and other JSON tools put it.
 std::string line_column(std::string_view text, std::size_t byte) {
-    const std::size_t end = std::min(text.size(), byte > 0 ? byte - 1 : 0);
+    std::size_t end = std::min(text.size(), byte > 0 ? byte - 1 : 0);
+    if (end < text.size() && end > 0 && text[end] == '"') {
+        std::size_t i = end;
+        while (i > 0 && !(text[i - 1] == '"' && (i < 2 || text[i - 2] != '\\'))) --i;
+        if (i > 0) end = i - 1;
+    }
     std::size_t line = 1, column = 1;
     for (std::size_t i = 0; i < end; ++i) {
         if (text[i] == '\n') {
@@ -410,8 +417,10 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
     if (const auto builtin = builtin_scene_json(name_or_path))
         return parse_scene(*builtin, name_or_path, {}, overrides);
     const std::filesystem::path path(name_or_path);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    std::error_code ec;
+    std::ifstream in;
+    if (std::filesystem::is_regular_file(path, ec)) in.open(path, std::ios::binary);
+    if (!in.is_open() || !in) {
         throw Error(fmt::format("cannot read scene '{}': not a built-in scene ({}) and not a "
                                 "readable file",
                                 name_or_path, fmt::join(builtin_scene_names(), ", ")));

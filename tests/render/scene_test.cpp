@@ -67,6 +67,16 @@ TEST(Scene, JsonSyntaxErrorsNameTheSourceLineAndColumn) {
     EXPECT_CONTAINS(m, "syntax error");
 }
 
+// The column is where the offending token starts (here the string "height", which a comma
+// should have preceded), as other JSON tools report it, not the token's last character.
+TEST(Scene, JsonSyntaxErrorsPointAtTheStartOfTheOffendingToken) {
+    const std::string text = R"({"scene": "morpho", "image": {"width": 16 "height": 12}})";
+    EXPECT_CONTAINS(error_of([&] { (void)parse_scene(text, "s.json"); }), "line 1, column 43");
+    const std::string number = "{\n  \"scene\": \"morpho\",\n  \"image\": {\"width\": 1x6}\n}";
+    // In 1x6 the x (column 23) is the first character that cannot continue the number.
+    EXPECT_CONTAINS(error_of([&] { (void)parse_scene(number, "n.json"); }), "line 3, column 23");
+}
+
 TEST(Scene, UnknownKeysAreErrorsListingTheValidOnes) {
     const std::string m =
         error_of([] { (void)parse_scene(R"({"scene": "morpho", "morpho": {"d3_nm": 1}})", "s"); });

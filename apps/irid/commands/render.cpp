@@ -5,12 +5,15 @@
 //
 // SCENE is a built-in name (oil-slick, soap-bubbles, morpho) or a JSON file (scenes/*.json show
 // every key). OUT's extension picks PNG, TIFF or EXR (default: SCENE's name + .png); an EXR OUT
-// holds the clipped linear values, --linear the unclipped ones. Exit 0 on success, 1 for a bad
-// scene file or failed I/O, 2 for bad options (including --set values the scene refuses).
+// holds the clipped linear values, --linear the unclipped ones. The files appear only when
+// complete, both or neither; a failed run leaves existing files as they were. Exit 0 on success,
+// 1 for a bad scene file or failed I/O, 2 for bad options (including --set values the scene
+// refuses).
 #include "../cli_common.h"
 
 #include <irid/error.h>
 #include <irid/gamut/clip.h>
+#include <irid/io/atomic_file.h>
 #include <irid/io/image.h>
 #include <irid/render/render.h>
 #include <irid/render/scene.h>
@@ -19,8 +22,11 @@
 
 #include <unistd.h>
 
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -31,8 +37,8 @@ namespace {
 
 struct RenderCliOptions {
     std::string scene;
-    std::string out;
-    std::string linear;
+    std::optional<std::string> out;     // given but empty is an error, not the default name
+    std::optional<std::string> linear;
     std::optional<int> width, height, spp;
     int threads = 0;
     std::optional<std::uint64_t> seed;
@@ -90,15 +96,28 @@ int run_render(const RenderCliOptions& o) {
         throw UsageError(fmt::format("{} (from the command line's options)", e.what()));
     }
 
-    const std::string out = o.out.empty() ? default_output(o.scene) : o.out;
+    namespace fs = std::filesystem;
+    const std::string out = o.out ? *o.out : default_output(o.scene);
     io::ImageFormat format;
     try {
         format = io::image_format_for(out);
     } catch (const Error& e) {
         throw UsageError(fmt::format("-o: {}", e.what()));
     }
-    if (!o.linear.empty() && io::image_format_for(o.linear) != io::ImageFormat::exr)
-        throw UsageError(fmt::format("--linear: '{}' must end in .exr", o.linear));
+    if (o.linear) {
+        bool exr = false;
+        try {
+            exr = io::image_format_for(*o.linear) == io::ImageFormat::exr;
+        } catch (const Error&) {  // any other extension: the same message
+        }
+        if (!exr) throw UsageError(fmt::format("--linear: '{}' must end in .exr", *o.linear));
+        if (fs::absolute(*o.linear).lexically_normal() == fs::absolute(out).lexically_normal())
+            throw UsageError(fmt::format("--linear: '{}' is also the output image (-o)", *o.linear));
+    }
+    // A missing folder (or a folder named as the file) fails now, not after the render; an
+    // AtomicFile checks the target and creates nothing until written.
+    (void)io::AtomicFile(out);
+    if (o.linear) (void)io::AtomicFile(*o.linear);
 
     render::RenderOptions options;
     options.threads = o.threads;
@@ -119,12 +138,30 @@ int run_render(const RenderCliOptions& o) {
                                      scene.render.path == render::ColorPath::table ? "table" : "spectral",
                                      scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
                                      scene.render.clip);
-    if (!o.linear.empty()) {
+    if (o.linear) {
         io::Image linear = result.linear;
         linear.description = image.description + ", unclipped";
-        io::write_image(o.linear, linear);
+        // Both files or neither: the unclipped image waits under a temporary name beside its
+        // target until the main output is written, so a failure leaves both targets as they were.
+        fs::path staged(*o.linear);
+        staged += fmt::format(".tmp-{}.exr", getpid());
+        io::write_image(staged, linear);
+        std::error_code ec;
+        try {
+            io::write_image(out, image);
+        } catch (const Error&) {
+            fs::remove(staged, ec);
+            throw;
+        }
+        fs::rename(staged, *o.linear, ec);
+        if (ec) {
+            fs::remove(staged, ec);
+            throw Error(fmt::format("{}: cannot move the finished file into place: {}", *o.linear,
+                                    ec.message()));
+        }
+    } else {
+        io::write_image(out, image);
     }
-    io::write_image(out, image);
     if (!o.quiet) {
         const auto& s = result.stats;
         fmt::print(stderr,
@@ -155,7 +192,19 @@ void add_render_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--spp", o->spp, "Samples per pixel")->check(CLI::Range(1, render::max_spp));
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")
         ->check(CLI::Range(0, 1024));
-    cmd->add_option("--seed", o->seed, "Seed of the sampling and of the noise textures");
+    // CLI11 2.1 reads "-1" as 2^64 - 1 and saturates numbers beyond 2^64 - 1: check the text.
+    cmd->add_option("--seed", o->seed, "Seed of the sampling and of the noise textures")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                std::uint64_t value = 0;
+                const char* end = text.data() + text.size();
+                const auto [p, ec] = std::from_chars(text.data(), end, value);
+                if (text.empty() || ec != std::errc{} || p != end)
+                    return fmt::format("'{}' is not an integer in [0, {}]", text,
+                                       std::numeric_limits<std::uint64_t>::max());
+                return {};
+            },
+            "UINT64"));
     cmd->add_option("--clip", o->clip, "Gamut clip method (default: the scene's, smits)");
     cmd->add_option("--set", o->assignments,
                     "Override a scene value: key.path=value, e.g. render.path=spectral, "
