@@ -12,7 +12,6 @@
 #include <irid/render/render.h>
 
 #include <fmt/core.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -29,6 +28,10 @@ namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 /// Paths whose weight falls below this stop at the environment instead of branching on.
 constexpr double min_path_weight = 2e-3;
+/// Rays one camera ray may spawn: films split every ray in two, and nested bubbles seen near
+/// grazing incidence (R ≈ T) would otherwise branch 2^depth times. Beyond the budget a branch
+/// ends at the environment; the order of traversal is fixed, so the cut is deterministic.
+constexpr int max_rays_per_camera_ray = 512;
 
 // --- Random numbers: a hash of (seed, pixel, sample, dimension) --------------------------------
 
@@ -103,8 +106,16 @@ public:
 
     std::uint64_t rays = 0;
 
+    /// A camera ray and everything it spawns.
+    C trace_camera_ray(const Ray& ray, const RayDifferential* diff) {
+        m_budget = max_rays_per_camera_ray;
+        return trace(ray, 0, 1.0, diff);
+    }
+
+private:
     C trace(const Ray& ray, int depth, double weight, const RayDifferential* diff) {
         ++rays;
+        --m_budget;
         Hit hit;
         if (!m_world.intersect(ray, m_eps, infinity, hit))
             return m_ops.rgb(m_world.environment(ray.direction));
@@ -128,7 +139,6 @@ public:
         return C::constant(0.0);
     }
 
-private:
     /// The thickness range a sample covers: the thickness at the neighbouring pixels' rays
     /// where they meet the surface's tangent plane, times the sample's share of the pixel.
     template <class F>
@@ -161,8 +171,10 @@ private:
             const ThicknessSample ts{
                 t, footprint(diff, p, n, t, [&](Vec3 q) { return m_world.oil_thickness_nm(q); })};
             const C R = m_ops.film(ts, cos_theta);
-            // Light the film does not reflect reaches the pavement and comes back through it.
-            return R * env + R.complement() * diffuse;
+            // Light the film does not reflect crosses it to the pavement and crosses it again on
+            // the way back.
+            const C T = R.complement();
+            return R * env + T * T * diffuse;
         }
         const double F = fresnel_dielectric(
             cos_theta, m_scene.oil.substrate == "wet" ? water_index : m_scene.oil.asphalt_index);
@@ -182,14 +194,14 @@ private:
         const double wr = weight * R.max_value();
         const double wt = weight * T.max_value();
         C reflected, transmitted;
-        if (depth + 1 < m_scene.render.max_depth && wr > min_path_weight) {
+        if (depth + 1 < m_scene.render.max_depth && wr > min_path_weight && m_budget > 0) {
             reflected = trace(Ray{p + m_eps * n, r}, depth + 1, wr, nullptr);
         } else {
             ++rays;
             reflected = m_ops.rgb(m_world.environment(r));
         }
         // The film is thin: the transmitted ray goes on in the same direction.
-        if (depth + 1 < m_scene.render.max_depth && wt > min_path_weight) {
+        if (depth + 1 < m_scene.render.max_depth && wt > min_path_weight && m_budget > 0) {
             transmitted = trace(Ray{p - m_eps * n, d}, depth + 1, wt, nullptr);
         } else {
             ++rays;
@@ -218,6 +230,7 @@ private:
     Ops m_ops;
     const Scene& m_scene;
     double m_eps;
+    int m_budget = max_rays_per_camera_ray;
 };
 
 // --- Sampling and reconstruction -------------------------------------------------------------
@@ -263,7 +276,7 @@ std::uint64_t trace_tile(const World& world, Ops ops, int x0, int y0, int x1, in
                 RayDifferential diff{world.camera().ray(sx + 1.0 / W, sy),
                                      world.camera().ray(sx, sy + 1.0 / H),
                                      1.0 / std::sqrt(static_cast<double>(spp))};
-                const auto c = integrator.trace(world.camera().ray(sx, sy), 0, 1.0, &diff);
+                const auto c = integrator.trace_camera_ray(world.camera().ray(sx, sy), &diff);
                 Xyz xyz = ops.xyz(c);
                 if (!std::isfinite(xyz.X) || !std::isfinite(xyz.Y) || !std::isfinite(xyz.Z))
                     xyz = {};
@@ -297,8 +310,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         throw Error(fmt::format("{}: 'render.clip': {}", scene.source, e.what()));
     }
 
-    const int threads = options.threads == 0 ? tbb::this_task_arena::max_concurrency()
-                                             : options.threads;
+    // More threads than the machine has only queue (and make oneTBB warn).
+    const int available = tbb::this_task_arena::max_concurrency();
+    const int threads = options.threads == 0 ? available : std::min(options.threads, available);
     tbb::task_arena arena(threads);
     RenderResult result;
     const World world = arena.execute([&] { return World(scene); });

@@ -1,5 +1,8 @@
 // Scene files: JSON → Scene, every value checked once with its key path and allowed range.
+#include <irid/color/rgb.h>
 #include <irid/error.h>
+#include <irid/gamut/clip.h>
+#include <irid/optics/material.h>
 #include <irid/render/scene.h>
 
 #include "builtin_scenes.h"  // generated from scenes/*.json (cmake/EmbedScenes.cmake)
@@ -55,12 +58,12 @@ public:
     }
 
     void positive(std::string_view key, double& out, double hi) const {
-        const double before = out;
-        number(key, out, 0.0, hi);
-        if (out <= 0.0) {
-            out = before;
-            fail(key_path(key), fmt::format("is 0; allowed: (0, {}]", hi));
-        }
+        const Json* v = find(key);
+        if (!v) return;
+        const double x = v->is_number() ? v->get<double>() : std::nan("");
+        if (!std::isfinite(x) || x <= 0.0 || x > hi)
+            fail(key_path(key), fmt::format("is {}; allowed: (0, {}]", v->dump(), hi));
+        out = x;
     }
 
     void integer(std::string_view key, int& out, int lo, int hi) const {
@@ -68,8 +71,10 @@ public:
         if (!v) return;
         if (!v->is_number_integer())
             fail(key_path(key), fmt::format("must be an integer in [{}, {}]", lo, hi));
-        const auto x = v->get<long long>();
-        if (x < lo || x > hi) fail(key_path(key), fmt::format("is {}; allowed: [{}, {}]", x, lo, hi));
+        const bool too_big = v->is_number_unsigned() && v->get<std::uint64_t>() > static_cast<std::uint64_t>(hi);
+        const auto x = too_big ? static_cast<long long>(hi) + 1 : v->get<long long>();
+        if (x < lo || x > hi)
+            fail(key_path(key), fmt::format("is {}; allowed: [{}, {}]", v->dump(), lo, hi));
         out = static_cast<int>(x);
     }
 
@@ -134,6 +139,27 @@ private:
     const std::string& m_source;
 };
 
+/// A film's material: a name or an index ("1.45"); it must be lossless, because the renderer
+/// takes the film's transmittance as 1 − R.
+void read_film(const ObjectReader& r, std::string_view key, std::string& out) {
+    if (const Json* v = r.find(key); v && v->is_number()) {
+        out = v->dump();
+    } else {
+        r.text(key, out);
+    }
+    Material m = Material::constant("air", 1.0);
+    try {
+        m = parse_material(out);
+    } catch (const Error& e) {
+        r.fail(r.key_path(key), e.what());
+    }
+    if (!m.is_lossless())
+        r.fail(r.key_path(key), fmt::format("is \"{}\", an absorbing material; a film must be "
+                                            "lossless (k = 0), because its transmittance is "
+                                            "taken as 1 − R",
+                                            out));
+}
+
 /// Bounds shared by the readers: positions within ±1e4 scene units, colours within [0, 100].
 constexpr double coordinate_limit = 1.0e4;
 constexpr double albedo_max = 1.0;
@@ -146,6 +172,11 @@ void read_image(const Json& j, const std::string& source, ImageParams& p) {
     r.integer("width", p.width, 1, max_image_side);
     r.integer("height", p.height, 1, max_image_side);
     r.integer("spp", p.spp, 1, max_spp);
+    const long long samples = static_cast<long long>(p.width) * p.height * p.spp;
+    if (samples > max_samples && static_cast<long long>(p.width) * p.height <= max_pixels)
+        r.fail("image.spp", fmt::format("is {}: {}×{}×{} = {} samples; at most {} are allowed (the "
+                                        "renderer keeps every sample until it filters them)",
+                                        p.spp, p.width, p.height, p.spp, samples, max_samples));
     if (static_cast<long long>(p.width) * p.height > max_pixels)
         r.fail("image", fmt::format("is {}×{} = {} pixels; at most {} pixels are allowed", p.width,
                                     p.height, static_cast<long long>(p.width) * p.height,
@@ -176,7 +207,17 @@ void read_render(const Json& j, const std::string& source, RenderParams& p) {
         p.seed = v->get<std::uint64_t>();
     }
     r.text("space", p.space);
+    if (!find_rgb_space(p.space)) {
+        std::vector<std::string> names;
+        for (const RgbSpace* s : builtin_rgb_spaces()) names.push_back(s->name());
+        r.fail("render.space", fmt::format("is \"{}\"; allowed: {}", p.space, fmt::join(names, ", ")));
+    }
     r.text("clip", p.clip);
+    try {
+        (void)parse_clip_method(p.clip);
+    } catch (const Error& e) {
+        r.fail("render.clip", e.what());
+    }
     r.number("exposure", p.exposure, 0.0, 1.0e3);
     r.number("filter_radius", p.filter_radius, 0.5, 4.0);
     r.number("filter_sigma", p.filter_sigma, 0.1, 4.0);
@@ -210,7 +251,7 @@ void read_oil(const Json& j, const std::string& source, OilParams& p) {
     r.number("k2", p.k2, 0.0, 100.0);
     r.number("turbulence_scale", p.turbulence_scale, 0.0, 1.0e3);
     r.number("min_thickness_nm", p.min_thickness_nm, 0.0, thickness_limit_nm);
-    r.text("film", p.film);
+    read_film(r, "film", p.film);
     r.choice("substrate", p.substrate, {{"wet", std::string("wet")}, {"dry", std::string("dry")}});
     r.number("asphalt_index", p.asphalt_index, 1.0, 3.0);
 }
@@ -253,7 +294,7 @@ void read_soap(const Json& j, const std::string& source, SoapParams& p) {
         for (std::size_t i = 0; i < b->size(); ++i)
             read_bubble((*b)[i], fmt::format("soap.bubbles.{}", i), source, p.bubbles[i]);
     }
-    r.text("film", p.film);
+    read_film(r, "film", p.film);
     r.number("floor_y", p.floor_y, -coordinate_limit, coordinate_limit);
     r.vec3("floor_albedo", p.floor_albedo, 0.0, albedo_max);
     r.vec3("floor_albedo_alt", p.floor_albedo_alt, 0.0, albedo_max);
@@ -269,11 +310,11 @@ void read_morpho(const Json& j, const std::string& source, MorphoSceneParams& p)
     r.number("d1_nm", p.d1_nm, 0.0, 1.0e4);
     r.number("d2_nm", p.d2_nm, 0.0, 1.0e4);
     r.number("n_chitin", p.n_chitin, 1.0, 4.0);
-    r.integer("periods", p.periods, 1, 1000);
+    r.integer("periods", p.periods, 1, 100);
     r.boolean("blend", p.blend);
     r.number("blend_min_nm", p.blend_min_nm, 0.0, 1.0e4);
     r.number("blend_max_nm", p.blend_max_nm, 0.0, 1.0e4);
-    r.integer("blend_samples", p.blend_samples, 2, 1001);
+    r.integer("blend_samples", p.blend_samples, 2, 201);
     if (p.blend_min_nm > p.blend_max_nm)
         r.fail("morpho.blend_min_nm",
                fmt::format("is {} nm; it must not exceed morpho.blend_max_nm ({} nm)",

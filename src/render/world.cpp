@@ -296,7 +296,8 @@ void World::wing_spectrum(double theta_deg, SpectralCarrier& out) const noexcept
 }
 
 void World::film_spectrum(const ThicknessSample& t, double cos_theta, SpectralCarrier& out) const {
-    const double angle = std::acos(std::clamp(cos_theta, 0.0, 0.9999));
+    // Grazing incidence itself (cos θ = 0) carries no light into the film; stay just short of it.
+    const double angle = std::acos(std::clamp(cos_theta, 1e-6, 1.0));
     // Over the footprint, the mean of up to 8 thicknesses spread evenly across it.
     const int n = t.footprint_nm > 1.0 ? std::clamp(static_cast<int>(t.footprint_nm / 4.0) + 1, 2, 8) : 1;
     std::array<double, 8> ts{};
@@ -533,9 +534,9 @@ Vec3 World::wing_normal(Vec3 p, Vec3 n) const noexcept {
 Rgb3 World::floor_albedo(Vec3 p) const noexcept {
     const SoapParams& s = m_scene.soap;
     if (s.floor_checker <= 0) return s.floor_albedo;
-    const auto cell = static_cast<long long>(std::floor(p.x / s.floor_checker)) +
-                      static_cast<long long>(std::floor(p.z / s.floor_checker));
-    return (cell & 1) ? s.floor_albedo_alt : s.floor_albedo;
+    // The parity of the cell, in doubles: far hits would overflow an integer cell index.
+    const double cell = std::floor(p.x / s.floor_checker) + std::floor(p.z / s.floor_checker);
+    return std::fmod(std::abs(cell), 2.0) == 1.0 ? s.floor_albedo_alt : s.floor_albedo;
 }
 
 Rgb3 World::background_albedo(Vec3 p) const noexcept {

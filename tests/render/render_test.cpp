@@ -165,6 +165,19 @@ TEST(Render, ImagesAreBitIdenticalForAnyThreadCount) {
     }
 }
 
+// Nested bubbles seen near grazing incidence split every ray in two at each film; the budget
+// per camera ray keeps the work bounded whatever render.max_depth allows.
+TEST(Render, RaysPerCameraRayAreBounded) {
+    const RenderResult r = render_with(
+        "soap-bubbles",
+        small(16, 12, 1) + std::vector<std::string>{
+                               "render.max_depth=32",
+                               R"(soap.bubbles=[{"radius": 1.2}, {"radius": 1.0}, {"radius": 0.8},
+                                               {"radius": 0.6}, {"radius": 0.4}])"});
+    EXPECT_GT(r.stats.rays, 4 * r.stats.camera_rays);
+    EXPECT_LE(r.stats.rays, 513 * r.stats.camera_rays);
+}
+
 TEST(Render, TheSeedChangesTheSamplesAndTheTextures) {
     const RenderResult a = render_with("oil-slick", small(24, 18, 2));
     const RenderResult b = render_with("oil-slick", small(24, 18, 2) + std::vector<std::string>{"render.seed=2"});

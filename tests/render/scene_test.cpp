@@ -113,6 +113,32 @@ TEST(Scene, ValuesOutOfRangeNameTheKeyPathAndTheRange) {
                     "'scene' is missing");
 }
 
+TEST(Scene, ValuesTheRendererCannotUseAreRefusedWhenTheSceneIsRead) {
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("soap-bubbles", {"soap.film=gold"}); }),
+                    "'soap.film' is \"gold\", an absorbing material");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("oil-slick", {"oil.film=unobtainium"}); }),
+                    "'oil.film'");
+    EXPECT_EQ(load_scene("oil-slick", {"oil.film=1.45"}).oil.film, "1.45");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"render.space=cmyk"}); }),
+                    "'render.space' is \"cmyk\"; allowed: srgb");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"render.clip=nearest"}); }),
+                    "'render.clip'");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"soap.floor_checker=-1"}); }),
+                    "'soap.floor_checker' is -1");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("soap-bubbles", {"soap.bubbles.0.radius=-2"}); }),
+                    "is -2; allowed: (0, 10000]");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"image.width=18446744073709551615"}); }),
+                    "is 18446744073709551615; allowed: [1, 16384]");
+}
+
+TEST(Scene, SampleCountsBeyondTheBufferLimitAreRefused) {
+    const std::string m = error_of([] {
+        (void)load_scene("morpho", {"image.width=4096", "image.height=4096", "image.spp=16"});
+    });
+    EXPECT_CONTAINS(m, "'image.spp' is 16");
+    EXPECT_CONTAINS(m, "268435456 samples; at most 134217728");
+}
+
 TEST(Scene, ImagesBeyondThePixelLimitAreRefused) {
     const std::string m = error_of([] {
         (void)parse_scene(R"({"scene": "morpho", "image": {"width": 16384, "height": 16384}})",

@@ -54,7 +54,7 @@ constexpr SceneInfo scene_infos[] = {
      "t = t<sub>max</sub> e<sup>−k₁(x² + y² + k₂ turb(x, y))</sup>, and the pavement is bump-mapped "
      "through dnoise. Expect concentric, irregular rings whose colours change with the view angle."},
     {"soap-bubbles", "Figure 8", "Soap bubbles",
-     "Water films in air whose thickness grows downwards as the film drains, with turbulence; "
+     "Soap films (water) in air whose thickness grows downwards as the film drains, with turbulence; "
      "reflection and transmission through each film are both coloured by interference. Expect "
      "black films at the tops, where they are thinnest, and horizontal bands below."},
     {"morpho", "Figure 9", "A Morpho butterfly",

@@ -57,7 +57,7 @@ public:
     void operator()(int done, int total) {
         std::lock_guard lock(m_mutex);
         const int percent = static_cast<int>(100.0 * done / total);
-        if (percent == m_last) return;
+        if (percent <= m_last) return;  // a slower thread may report an older count
         m_last = percent;
         constexpr int width = 40;
         const int filled = width * done / total;

@@ -216,10 +216,13 @@ struct Scene {
 [[nodiscard]] Scene load_scene(const std::string& name_or_path,
                                const std::vector<std::string>& overrides = {});
 
-/// Limits: images up to max_image_side pixels a side and max_pixels in all, up to max_spp.
+/// Limits: images up to max_image_side pixels a side and max_pixels in all, up to max_spp
+/// samples per pixel and max_samples in all.
 inline constexpr int max_image_side = 16384;
 inline constexpr long long max_pixels = 64LL * 1024 * 1024;
 inline constexpr int max_spp = 1024;
+/// width × height × spp: the renderer keeps every sample (20 bytes) until the filter has read it.
+inline constexpr long long max_samples = 1LL << 27;
 inline constexpr int max_bubbles = 64;
 
 [[nodiscard]] std::string_view scene_kind_name(SceneKind kind) noexcept;
