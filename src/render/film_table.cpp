@@ -10,6 +10,15 @@
 
 namespace irid::render {
 
+namespace {
+template <class Value>
+Value lerp(const Value& a, const Value& b, double f) noexcept {
+    Value r = a;
+    for (std::size_t i = 0; i < r.size(); ++i) r[i] = a[i] + f * (b[i] - a[i]);
+    return r;
+}
+}  // namespace
+
 FilmTable::FilmTable(double max_nm, double step_nm, double cos_min, int cos_count,
                      const std::function<std::vector<Rgb3>(double, const std::vector<double>&)>&
                          row_of)
@@ -42,9 +51,8 @@ Rgb3 FilmTable::point(int row, double t) const noexcept {
     const double x = std::clamp(t, 0.0, m_max) / m_step;
     const int i = std::min(static_cast<int>(x), m_count - 2);
     const double f = x - i;
-    const Rgb3& a = m_colors[static_cast<std::size_t>(row) * m_count + i];
-    const Rgb3& b = m_colors[static_cast<std::size_t>(row) * m_count + i + 1];
-    return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
+    const std::size_t k = static_cast<std::size_t>(row) * m_count + i;
+    return lerp(m_colors[k], m_colors[k + 1], f);
 }
 
 Rgb3 FilmTable::integral(int row, double t) const noexcept {
@@ -85,7 +93,7 @@ Rgb3 FilmTable::at(double t_nm, double footprint_nm, double cos_theta) const noe
         lo = point(j, t_nm);
         hi = point(j + 1, t_nm);
     }
-    return {lo[0] + g * (hi[0] - lo[0]), lo[1] + g * (hi[1] - lo[1]), lo[2] + g * (hi[2] - lo[2])};
+    return lerp(lo, hi, g);
 }
 
 template <class Value>
@@ -95,15 +103,6 @@ AngleTable<Value>::AngleTable(double step_deg, const std::function<Value(double)
     m_values.resize(n);
     tbb::parallel_for(0, n, [&](int i) { m_values[i] = value_of(std::min(90.0, m_step * i)); });
 }
-
-namespace {
-template <class Value>
-Value lerp(const Value& a, const Value& b, double f) noexcept {
-    Value r = a;
-    for (std::size_t i = 0; i < r.size(); ++i) r[i] = a[i] + f * (b[i] - a[i]);
-    return r;
-}
-}  // namespace
 
 template <class Value>
 Value AngleTable<Value>::at(double theta_deg) const noexcept {
