@@ -9,7 +9,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <string>
 
 namespace irid {
@@ -18,8 +17,6 @@ namespace {
 constexpr std::array<ClipMethod, 8> all_methods{
     ClipMethod::clamp,   ClipMethod::smits, ClipMethod::smits_xyz, ClipMethod::luv_lightness_hue,
     ClipMethod::luv_hue, ClipMethod::css,   ClipMethod::oklab,     ClipMethod::smits_corrected};
-
-constexpr double degrees_per_radian = 180.0 / std::numbers::pi;
 
 Vec3 v3(const Rgb& c) noexcept { return {c.r, c.g, c.b}; }
 Rgb rgb(const Vec3& v) noexcept { return {v[0], v[1], v[2]}; }
@@ -36,10 +33,13 @@ double hue_difference(double a, double b) noexcept {
     return d;
 }
 
-/// Real roots in [0, 1] of c0 + c1 s + c2 s² + c3 s³, smallest first, by splitting [0, 1] at the
-/// derivative's roots into monotonic pieces and bisecting each piece that changes sign (to the
-/// resolution of a double: the result is exact to rounding).
-double smallest_root_in_unit_interval(const std::array<double, 4>& c) noexcept {
+/// The roots in [0, 1] of c0 + c1 s + c2 s² + c3 s³ where it changes sign, in increasing order
+/// (at most three; returns how many were written to `roots`): [0, 1] is cut at the derivative's
+/// roots into monotonic pieces, and every piece whose ends have opposite signs is bisected to the
+/// resolution of a double (the root is exact to rounding). A root where the cubic only touches 0
+/// without crossing it changes nothing about which side of a face a point is on and is skipped.
+int sign_changes_in_unit_interval(const std::array<double, 4>& c,
+                                  std::array<double, 3>& roots) noexcept {
     const auto f = [&](double s) { return c[0] + s * (c[1] + s * (c[2] + s * c[3])); };
     std::array<double, 4> cuts{0.0, 1.0, 1.0, 1.0};
     int n = 1;
@@ -60,25 +60,23 @@ double smallest_root_in_unit_interval(const std::array<double, 4>& c) noexcept {
     }
     if (n == 3 && cuts[2] < cuts[1]) std::swap(cuts[1], cuts[2]);  // at most two interior cuts
     cuts[n] = 1.0;
+    int found = 0;
     for (int k = 0; k < n; ++k) {
         double lo = cuts[k], hi = cuts[k + 1];
-        double flo = f(lo), fhi = f(hi);
-        if (flo == 0.0 && lo > 0.0) return lo;
-        if ((flo < 0.0) == (fhi < 0.0) && fhi != 0.0) continue;
-        for (int it = 0; it < 200 && hi - lo > 0.0; ++it) {
+        const bool negative_at_lo = f(lo) < 0.0;
+        if (negative_at_lo == (f(hi) < 0.0)) continue;
+        for (int it = 0; it < 200; ++it) {
             const double mid = 0.5 * (lo + hi);
             if (mid <= lo || mid >= hi) break;
-            const double fm = f(mid);
-            if ((fm < 0.0) == (flo < 0.0) && fm != 0.0) {
+            if ((f(mid) < 0.0) == negative_at_lo) {
                 lo = mid;
-                flo = fm;
             } else {
                 hi = mid;
             }
         }
-        return hi;
+        roots[static_cast<std::size_t>(found++)] = hi;
     }
-    return 2.0;  // no root in [0, 1]
+    return found;
 }
 
 }  // namespace
@@ -374,24 +372,73 @@ Rgb GamutClipper::oklab(const Rgb& c) const noexcept {
     const Oklab lab = to_oklab(c);
     if (!(lab.L > 0.0)) return {0.0, 0.0, 0.0};
     if (!(lab.L < m_white_oklab_l)) return {max, max, max};
+    // Within rounding of the cube, the colour is on it (clip.h): the line of its lightness and
+    // hue may meet the cube only at the colour itself (sRGB blue's leaves through r = 0 at 85 %
+    // of its chroma and comes back only at the vertex), so no search along it could stay close.
+    const double tol = oklab_rounding_tolerance * max;
+    if (c.r >= -tol && c.g >= -tol && c.b >= -tol && c.r <= max + tol && c.g <= max + tol &&
+        c.b <= max + tol) {
+        return clamp(c);
+    }
     // Along (L, s a, s b) the cube roots of LMS are linear in s, so each channel is a cubic in s:
-    // channel_i(s) = Σ_j M_ij (p_j + s q_j)³. Find the smallest s in [0, 1] where a channel
-    // reaches 0 or max.
+    // channel_i(s) = Σ_j M_ij (p_j + s q_j)³.
     const Vec3 p = oklab_m2_inverse * Vec3{lab.L, 0.0, 0.0};
     const Vec3 q = oklab_m2_inverse * Vec3{0.0, lab.a, lab.b};
-    double s = 1.0;
+    std::array<std::array<double, 4>, 3> channel{};
     for (int i = 0; i < 3; ++i) {
-        std::array<double, 4> poly{};
         for (int j = 0; j < 3; ++j) {
             const double m = m_lms_to_rgb[i][j];
-            poly[0] += m * p[j] * p[j] * p[j];
-            poly[1] += m * 3.0 * p[j] * p[j] * q[j];
-            poly[2] += m * 3.0 * p[j] * q[j] * q[j];
-            poly[3] += m * q[j] * q[j] * q[j];
+            channel[i][0] += m * p[j] * p[j] * p[j];
+            channel[i][1] += m * 3.0 * p[j] * p[j] * q[j];
+            channel[i][2] += m * 3.0 * p[j] * q[j] * q[j];
+            channel[i][3] += m * q[j] * q[j] * q[j];
         }
-        s = std::min(s, smallest_root_in_unit_interval(poly));
-        poly[0] -= max;
-        s = std::min(s, smallest_root_in_unit_interval(poly));
+    }
+    // How far the point at s is outside the cube (0 inside): the largest excess of a channel.
+    const auto outside = [&](double s) {
+        double e = 0.0;
+        for (const auto& k : channel) {
+            const double v = k[0] + s * (k[1] + s * (k[2] + s * k[3]));
+            e = std::max({e, -v, v - max});
+        }
+        return e;
+    };
+    // The line enters or leaves the cube only where a channel crosses 0 or max: between two
+    // consecutive such s (and 0, 1) it is inside throughout or outside throughout. It may start
+    // outside (just below the white's lightness, see below), and leave and come back (the cube
+    // is not convex in Oklab), so the boundary nearest the colour is the upper end of the last
+    // piece inside, not the first crossing from the grey.
+    std::array<double, 20> cuts{};  // 0, 1 and up to 3 crossings of 0 and of max per channel
+    std::size_t n = 0;
+    cuts[n++] = 0.0;
+    cuts[n++] = 1.0;
+    for (const auto& k : channel) {
+        for (const double bound : {0.0, max}) {
+            std::array<double, 3> roots{};
+            const int found =
+                sign_changes_in_unit_interval({k[0] - bound, k[1], k[2], k[3]}, roots);
+            for (int r = 0; r < found; ++r) cuts[n++] = roots[static_cast<std::size_t>(r)];
+        }
+    }
+    std::sort(cuts.begin(), cuts.begin() + static_cast<std::ptrdiff_t>(n));
+    double s = -1.0;
+    for (std::size_t k = n - 1; k >= 1 && s < 0.0; --k) {
+        if (cuts[k] > cuts[k - 1] && outside(0.5 * (cuts[k - 1] + cuts[k])) == 0.0) s = cuts[k];
+    }
+    if (s < 0.0) {
+        // No chroma of this lightness and hue is inside: only within about 1.4e-4 of the white's
+        // lightness, where Oklab's neutral axis itself leaves the cube (the published matrices
+        // give the white a chroma of about 1e-4). The crossing (or end) nearest the cube, which
+        // clip clamps: L moves by a third of at most the neutral's 4.2e-4 excess (the first
+        // crossing of a bound, taken before, moved L by up to 0.32).
+        double nearest = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < n; ++k) {
+            const double e = outside(cuts[k]);
+            if (e < nearest) {
+                nearest = e;
+                s = cuts[k];
+            }
+        }
     }
     return from_oklab({lab.L, s * lab.a, s * lab.b});
 }
@@ -407,6 +454,10 @@ Rgb GamutClipper::smits_corrected(const Rgb& c) const noexcept {
     const double tol = 1e-12 * max;
     Rgb best = p;
     double best_error = std::abs(hue_difference(now.h, target.h));
+    // The step is no longer than smits' own move (clip.h): the hue error it corrects came from
+    // that move, and where the face runs nearly along the hue the linear step would be far longer
+    // (a colour 1e-9 outside sRGB moved by 6e-5).
+    const double reach = std::hypot(c.r - p.r, c.g - p.g, c.b - p.b);
     // On each face the point lies on, the direction that keeps both the face (its channel) and
     // the luminance: d = e_k × (A, B, C). One Newton step on the Oklab hue along it.
     for (int k = 0; k < 3; ++k) {
@@ -423,7 +474,8 @@ Rgb GamutClipper::smits_corrected(const Rgb& c) const noexcept {
         const double slope = hue_difference(oklab_to_oklch(to_oklab(backward)).h,
                                             oklab_to_oklch(to_oklab(forward)).h) / (2.0 * h);
         if (!(std::abs(slope) > 0.0) || !std::isfinite(slope)) continue;
-        const double tau = hue_difference(now.h, target.h) / slope;
+        const double longest = reach / norm;
+        const double tau = std::clamp(hue_difference(now.h, target.h) / slope, -longest, longest);
         Rgb moved{p.r + tau * d[0], p.g + tau * d[1], p.b + tau * d[2]};
         // Leaving the face's edge: bring it back along constant luminance (the thesis' clip).
         if (!m_gamut.contains(moved)) moved = smits(moved);

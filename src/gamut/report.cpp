@@ -1,27 +1,20 @@
 #include <irid/color/adaptation.h>
 #include <irid/color/difference.h>
-#include <irid/color/illuminant.h>
 #include <irid/color/numeric_table.h>
 #include <irid/color/observer.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/gamut/report.h>
-#include <irid/optics/film_color.h>
-#include <irid/optics/material.h>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 
 namespace irid {
 namespace {
-
-constexpr std::array<ClipReportSet, 3> all_sets{ClipReportSet::spectrum, ClipReportSet::interference,
-                                                ClipReportSet::rec2020};
 
 constexpr Xy d65_xy{0.3127, 0.3290};
 
@@ -127,27 +120,6 @@ std::string format_rate(double per_second) {
 
 }  // namespace
 
-std::span<const ClipReportSet> clip_report_sets() noexcept { return all_sets; }
-
-std::string_view clip_report_set_name(ClipReportSet set) noexcept {
-    switch (set) {
-        case ClipReportSet::spectrum: return "spectrum";
-        case ClipReportSet::interference: return "interference";
-        case ClipReportSet::rec2020: return "rec2020";
-    }
-    return "";
-}
-
-std::vector<ClipReportSet> parse_clip_report_sets(std::string_view name) {
-    if (name == "all") return {all_sets.begin(), all_sets.end()};
-    std::string names;
-    for (const ClipReportSet s : all_sets) {
-        if (clip_report_set_name(s) == name) return {s};
-        names += std::string(clip_report_set_name(s)) + ", ";
-    }
-    throw Error("unknown set '" + std::string(name) + "'; valid: " + names + "all");
-}
-
 ColorSet spectrum_color_set() {
     ColorSet set;
     set.name = "spectrum";
@@ -157,32 +129,6 @@ ColorSet spectrum_color_set() {
         const Xyz m = monochromatic_xyz(nm);
         const double k = spectrum_set_luminance / m.Y;
         set.colors.push_back({m.X * k, spectrum_set_luminance, m.Z * k});
-    }
-    return set;
-}
-
-ColorSet interference_color_set(const RgbSpace& destination) {
-    ColorSet set;
-    set.name = "interference";
-    set.description = "Exact thin-film reflections (D65, CIE 1931 2°): soap film air|water|air and "
-                      "mineral oil on water, 0-1500 nm every 5 nm at 0°, 30°, 60°, XYZ × " +
-                      format_shortest(interference_set_exposure);
-    // The colorimeter adapts from the illuminant's white to the destination's; its linear RGB is
-    // then XYZ relative to the destination's white.
-    const Colorimeter colorimeter(illuminant_d65(), Observer::cie1931_2deg, destination,
-                                  ChromaticAdaptation::bradford);
-    const Material air = *find_material("air");
-    const Material water = *find_material("water");
-    const SingleFilm films[] = {{air, water, air}, {air, *find_material("mineral-oil"), water}};
-    for (const SingleFilm& film : films) {
-        for (const double angle_deg : {0.0, 30.0, 60.0}) {
-            const double angle = angle_deg * std::numbers::pi / 180.0;
-            for (int t = 0; t <= 1500; t += 5) {
-                const Rgb c = exact_film_color(film, t, angle, colorimeter).rgb_linear;
-                const double e = interference_set_exposure;
-                set.colors.push_back(destination.to_xyz({c.r * e, c.g * e, c.b * e}));
-            }
-        }
     }
     return set;
 }
@@ -204,15 +150,6 @@ ColorSet rec2020_color_set(const RgbSpace& destination, int steps) {
         }
     }
     return set;
-}
-
-ColorSet clip_report_color_set(ClipReportSet set, const RgbSpace& destination) {
-    switch (set) {
-        case ClipReportSet::spectrum: return spectrum_color_set();
-        case ClipReportSet::interference: return interference_color_set(destination);
-        case ClipReportSet::rec2020: return rec2020_color_set(destination);
-    }
-    return {};
 }
 
 ColorSet union_color_set(std::span<const ColorSet> sets, std::string name) {

@@ -447,6 +447,36 @@ run_image clip --method smits "$IMG/odd.exr" "$IMG/keep.png"
 expect_status 1
 if cmp -s "$IMG/out.png" "$IMG/keep.png"; then pass; else fail "keep.png unchanged" "changed"; fi
 
+# --- a colour within rounding of the gamut comes back within rounding of itself -------------
+# The defect: sRGB blue one ulp above 1 came back from oklab as 0,0.0303,0.786 (21 % of its chroma
+# lost), because Oklab's line of constant lightness and hue through blue leaves the cube and
+# meets it again only at the vertex. Expected: the colour itself, 0,0,1, to rounding; for every
+# method (the ones that move toward a grey move it by about 1e-16 here).
+run $'0,0,1.0000000000000002\n' clip --method oklab
+expect_close "0,0,1" 1e-12
+for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+    # Blue and red a hair outside, and a colour 1e-9 below the face g = 0 next to the blue edge.
+    run $'0,0,1.0000000000000002\n1.0000000000000002,0,0\n0,-1e-9,0.75\n' clip --method "$method"
+    expect_close $'0,0,1\n1,0,0\n0,0,0.75' 1e-7
+done
+# The image path (float batches): an EXR of blue one float ulp above 1 (1.0000001 is read as
+# 1 + 2^-23) stays blue to float precision.
+EDGE=$TMP/edge
+mkdir -p "$EDGE"
+oiiotool --pattern constant:color=0,0,1.0000001 2x2 3 -d float -o "$EDGE/blue.exr"
+run_image clip --method oklab "$EDGE/blue.exr" "$EDGE/blue-clipped.exr"
+expect_status 0
+expect_pixels "$EDGE/blue-clipped.exr" 4 'abs($1) < 1e-6 && abs($2) < 1e-6 && abs($3 - 1) < 1e-6' \
+    "blue kept: 0, 0, 1 to float precision"
+# The clip report on a set inside its own gamut: no colour is out of it, and so no method may
+# move any colour: every ΔE2000 (mean, 95th percentile, maximum) prints as 0.00. oklab printed a
+# maximum of 5.83, from colours a rounding error outside the cube after the conversions.
+run '' clip-report --set rec2020 --to rec2020
+expect_stdout_has "729 colours, 0 out of the rec2020 gamut"
+for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+    expect_stdout_has "| $method | 0.00 | 0.00 | 0.00 |"
+done
+
 # ===========================================================================================
 
 echo "$passed passed, $failed failed"

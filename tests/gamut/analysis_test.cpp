@@ -2,6 +2,7 @@
 #include <irid/color/rgb.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
+#include <irid/figures/clip_sets.h>
 #include <irid/gamut/analysis.h>
 #include <irid/gamut/clip.h>
 #include <irid/gamut/report.h>
@@ -19,9 +20,11 @@ namespace {
 
 constexpr double degrees_per_radian = 180.0 / std::numbers::pi;
 
-/// The three sets of the clip report on sRGB.
+/// The three sets of the clip report on sRGB. The interference set is made where films are
+/// known (irid_figures, as for `irid clip-report`); here it is only data for the analysis.
 const std::vector<ColorSet>& report_sets() {
-    static const std::vector<ColorSet> sets{spectrum_color_set(), interference_color_set(srgb()),
+    static const std::vector<ColorSet> sets{spectrum_color_set(),
+                                            figures::interference_color_set(srgb()),
                                             rec2020_color_set(srgb())};
     return sets;
 }

@@ -226,6 +226,39 @@ TEST(Oklab, KeepsOklabLightnessAndHueWithMaximalChroma) {
     EXPECT_GT(checked, 200);
 }
 
+TEST(Oklab, JustBelowTheWhitesLightnessKeepsTheLightness) {
+    // Oklab's neutral axis (a = b = 0) is not exactly the spaces' grey: the published matrices
+    // give the D65 white a chroma of about 1e-4, and at the white's lightness the neutral is
+    // sRGB (1.0004, 1.0000, 0.9992). So within about 1.4e-4 of the white's L no chroma of the
+    // colour's lightness and hue is inside the cube. The line's point nearest the cube is then
+    // at most that 4.2e-4 outside, and clamping it changes Y by no more, L (about Y^(1/3)) by a
+    // third of it: 1e-3 leaves room. (The first crossing of a bound, taken before, moved L by up
+    // to 0.32 here.) Colours scaled to a lightness in the last 3e-4 below the white's.
+    for (const RgbSpace* space : {&srgb(), &display_p3(), &rec2020(), &adobe_rgb()}) {
+        SCOPED_TRACE(space->name());
+        const Gamut gamut(*space);
+        const GamutClipper clipper(ClipMethod::oklab, gamut);
+        const double white_l = xyz_to_oklab(space->to_xyz({1.0, 1.0, 1.0})).L;
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        int checked = 0;
+        for (int k = 0; k < 2000; ++k) {
+            const Rgb c{u(rng), u(rng), u(rng)};
+            // Oklab L of k c is k^(1/3) L(c): scale to the target lightness.
+            const double target = white_l * (1.0 - 3e-4 * u(rng));
+            const double scale = std::pow(target / xyz_to_oklab(space->to_xyz(c)).L, 3.0);
+            const Rgb in{c.r * scale, c.g * scale, c.b * scale};
+            if (gamut.contains(in)) continue;
+            const Rgb out = clipper.clip(in);
+            EXPECT_TRUE(gamut.contains(out));
+            EXPECT_NEAR(xyz_to_oklab(space->to_xyz(out)).L, target, 1e-3)
+                << in.r << "," << in.g << "," << in.b;
+            ++checked;
+        }
+        EXPECT_GT(checked, 1000);
+    }
+}
+
 TEST(Css, FollowsTheSpecificationsBinarySearch) {
     // The result is in gamut and within the JND of the colour at the chroma it settled on: its
     // Oklab lightness is within 0.02 of the input's, and L ≥ 1 / L ≤ 0 give white / black.

@@ -36,24 +36,6 @@ bool outside(const RgbSpace& space, const Xyz& c) {
     return r.r < -tol || r.g < -tol || r.b < -tol || r.r > 1 + tol || r.g > 1 + tol || r.b > 1 + tol;
 }
 
-TEST(ClipReportSets, NamesAndAll) {
-    for (const ClipReportSet s : clip_report_sets()) {
-        const auto parsed = parse_clip_report_sets(clip_report_set_name(s));
-        ASSERT_EQ(parsed.size(), 1u);
-        EXPECT_EQ(parsed[0], s);
-    }
-    EXPECT_EQ(parse_clip_report_sets("all").size(), 3u);
-    try {
-        (void)parse_clip_report_sets("gamut");
-        FAIL();
-    } catch (const Error& e) {
-        const std::string message = e.what();
-        for (const char* name : {"spectrum", "interference", "rec2020", "all"}) {
-            EXPECT_NE(message.find(name), std::string::npos) << name;
-        }
-    }
-}
-
 TEST(ClipReportSets, SpectrumIsTheLocusAtOneLuminanceAndAlmostAllOutsideSrgb) {
     const ColorSet set = spectrum_color_set();
     ASSERT_EQ(set.colors.size(), 401u);  // 380..780 nm at 1 nm
@@ -67,27 +49,6 @@ TEST(ClipReportSets, SpectrumIsTheLocusAtOneLuminanceAndAlmostAllOutsideSrgb) {
     EXPECT_GE(out, 395);
     EXPECT_EQ(spectrum_report().size, 401u);
     EXPECT_EQ(static_cast<int>(spectrum_report().out_of_gamut), out);
-}
-
-TEST(ClipReportSets, InterferenceIsTwoFilmsThreeAnglesAndAThicknessGrid) {
-    const ColorSet set = interference_color_set(srgb());
-    ASSERT_EQ(set.colors.size(), 2u * 3u * 301u);
-    // Zero thickness: air | air (no reflection) for the soap film, so black at every angle.
-    for (int angle = 0; angle < 3; ++angle) {
-        EXPECT_NEAR(set.colors[static_cast<std::size_t>(angle) * 301].Y, 0.0, 1e-12);
-    }
-    std::size_t out = 0, above = 0;
-    for (const Xyz& c : set.colors) {
-        // The exposure keeps every film below the white's luminance (a reflectance < 1 / 5).
-        EXPECT_GE(c.Y, -1e-12);
-        EXPECT_LT(c.Y, 1.0);
-        out += outside(srgb(), c) ? 1 : 0;
-        const Rgb r = srgb().from_xyz(c);
-        above += (r.r > 1.0 || r.g > 1.0 || r.b > 1.0) ? 1 : 0;
-    }
-    EXPECT_GT(out, 0u);
-    EXPECT_GT(above, 0u);  // bright enough to cross the upper faces too
-    EXPECT_LT(out, set.colors.size());
 }
 
 TEST(ClipReportSets, Rec2020GridIsInsideRec2020AndPartlyOutsideSrgb) {

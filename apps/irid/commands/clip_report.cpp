@@ -4,10 +4,13 @@
 // kept and colours per second measured in this run, as Markdown tables (one per set, and for
 // --set all one more over the union). The definitions are in include/irid/gamut/report.h and
 // docs/GAMUT.md. SPACE is an RGB space, encoded or linear (the gamut is its linear cube [0, 1]³).
+// The sets are built here and given to the report: the interference set needs the film optics,
+// which the gamut library does not know, so they come from irid_figures (clip_sets.h).
 #include "../cli_common.h"
 
 #include <irid/color/rgb.h>
 #include <irid/error.h>
+#include <irid/figures/clip_sets.h>
 #include <irid/gamut/clip.h>
 #include <irid/gamut/report.h>
 
@@ -40,9 +43,9 @@ const RgbSpace& parse_destination(const std::string& name) {
 }
 
 int run_clip_report(const ClipReportCommand& c) {
-    std::vector<ClipReportSet> kinds;
+    std::vector<figures::ClipReportSet> kinds;
     try {
-        kinds = parse_clip_report_sets(c.set);
+        kinds = figures::parse_clip_report_sets(c.set);
     } catch (const Error& e) {
         throw UsageError(std::string("--set: ") + e.what());
     }
@@ -50,7 +53,9 @@ int run_clip_report(const ClipReportCommand& c) {
     const Gamut gamut(destination);
 
     std::vector<ColorSet> sets;
-    for (const ClipReportSet k : kinds) sets.push_back(clip_report_color_set(k, destination));
+    for (const figures::ClipReportSet k : kinds) {
+        sets.push_back(figures::clip_report_color_set(k, destination));
+    }
     if (sets.size() > 1) sets.push_back(union_color_set(sets, c.set));
 
     std::string out;

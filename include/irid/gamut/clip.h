@@ -18,6 +18,20 @@
 //   the D65 spaces' white to 1e-6, cbrt(max) at an HDR peak — white), as CSS Color 4 does.
 //   With an HDR peak, CIELUV's L* is relative to the peak's white.
 // - A colour exactly on a face (a channel equal to 0 or to max) is in the gamut and unchanged.
+// - A colour within rounding outside the cube comes back within rounding of itself, whatever the
+//   method (tests/gamut/boundary_test.cpp: moved by at most 100 times its distance d to the cube,
+//   plus rounding). The methods that move toward a grey are continuous and need no rule (they
+//   move it by up to d (1 − l)/l, l the smallest luminance weight over their sum: 13 d for
+//   sRGB); two needed one:
+//   oklab keeps lightness and hue exactly, and the line of a colour's lightness and hue can meet
+//   the cube only at the colour: sRGB blue's leaves it through r = 0 at 85 % of blue's chroma and
+//   comes back only at the vertex, and so do those of the blue–black edge, of the blue end of
+//   the blue–cyan edge and of a strip of the face r = 0 beside them (Rec.2020 alike); just below
+//   the white's lightness Oklab's neutral axis itself leaves the cube (Display P3, Adobe RGB). A
+//   colour a hair outside there has no colour of its lightness and hue near it, so a colour
+//   within oklab_rounding_tolerance × max of the cube (every channel in [−tol, max + tol]) is
+//   taken as on it and clamped (moved by at most that much);
+//   smits_corrected's hue step is at most as long as smits' own move.
 // - The destination's maximum may differ from 1 (an HDR peak): the cube is [0, max]³.
 
 #include <irid/color/matrix.h>
@@ -32,6 +46,12 @@
 #include <vector>
 
 namespace irid {
+
+/// oklab: a colour no farther than this × max outside the cube is on it to within rounding and
+/// is clamped (see above). Above float's rounding (an ulp of max is 2^-23 max ≈ 1.2e-7 max: an
+/// image stored as float sits up to half of that off a face it was on), far below what shows
+/// (a 16-bit code is 1.5e-5 of the range).
+inline constexpr double oklab_rounding_tolerance = 1e-6;
 
 /// The clipping methods, in the order of the reports.
 enum class ClipMethod {
@@ -48,10 +68,13 @@ enum class ClipMethod {
     luv_hue,
     /// CSS Color Module Level 4 gamut mapping (binary search on OKLCh chroma, ΔEOK < JND 0.02).
     css,
-    /// Constant Oklab lightness and hue, chroma reduced exactly to the boundary.
+    /// Constant Oklab lightness and hue, chroma reduced exactly to the boundary: to the nearest
+    /// chroma at or below the colour's that is inside the cube. Within about 1.4e-4 of the
+    /// white's L, where Oklab's neutral axis leaves the cube and no chroma is inside, the point
+    /// of the chroma line nearest the cube, clamped.
     oklab,
     /// smits followed by one Newton step along the gamut face toward the input's Oklab hue, at
-    /// constant luminance.
+    /// constant luminance, no longer than smits' own move.
     smits_corrected,
 };
 

@@ -4,25 +4,21 @@
 // show, measured against the input colour, and how fast it does it (`irid clip-report`; the
 // results and their reading are in docs/GAMUT.md).
 //
-// Sets. Each is a list of XYZ colours relative to the destination's white (white Y = 1); some
-// are out of the destination's gamut, some not:
+// Sets. The report measures the sets its caller gives it (ColorSet: a name, a description and
+// XYZ colours relative to the destination's white, white Y = 1; some out of the destination's
+// gamut, some not). Clipping knows no physics: this library builds only the sets that need
+// nothing but colour science. The interference set of `irid clip-report` (thin-film colours,
+// which need the film physics) is made in irid_figures (include/irid/figures/clip_sets.h, with
+// the report's catalogue of sets by name), and its callers pass it in. The sets built here:
 // - spectrum: the monochromatic stimuli 380, 381, ..., 780 nm (CIE 1931 2°, monochromatic_xyz),
 //   401 colours, each scaled to Y = 0.3. The thesis (Smits 1990, §4.3.4) clips the spectrum
 //   scaled to a constant luminance; 0.3 is a mid luminance whose grey lies inside every gamut
 //   (the grey of Y = 0.3 is RGB (0.3, 0.3, 0.3) in any space whose white has Y = 1), so no
 //   method is forced to white or black and the luminance-keeping methods can keep it.
-// - interference: thin-film colours from the exact optics (exact_film_color, unpolarised, D65,
-//   CIE 1931 2°): a soap film air | water | air and mineral oil on water (air | mineral-oil |
-//   water), thickness 0, 5, ..., 1500 nm at 0°, 30° and 60°, 1806 colours, XYZ multiplied by a
-//   fixed exposure of 5 (interference_set_exposure). Films reflect at most about 19 % (Y), so
-//   unexposed they sit in the dark third of the gamut and leave it only through its lower faces
-//   (a channel below 0: 119 colours on sRGB at any exposure up to 4). × 5 is the largest round
-//   exposure that keeps every colour below the white's luminance (max Y = 0.96), so every colour
-//   still has a grey of its luminance inside the gamut, while the brightest also cross the upper
-//   faces (158 out of sRGB).
 // - rec2020: linear Rec.2020 on a 9 × 9 × 9 grid over [0, 1]³ (surface and interior, 729
 //   colours), to XYZ: the everyday Rec.2020 → sRGB case.
-// - all: the union (2936 colours), reported per set and over the whole.
+// - a union of sets (`irid clip-report --set all`: spectrum, interference and rec2020, 2936
+//   colours), reported per set and over the whole.
 // XYZ from a space with another white is adapted to the destination's white by Bradford.
 //
 // Measurements, per method (every one of clip_methods()), on a Gamut (a destination space's
@@ -58,25 +54,12 @@
 #include <cstddef>
 #include <span>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace irid {
 
-/// The sets of colours of the report.
-enum class ClipReportSet { spectrum, interference, rec2020 };
-
-/// Every set, in the order of the report.
-[[nodiscard]] std::span<const ClipReportSet> clip_report_sets() noexcept;
-/// "spectrum", "interference", "rec2020".
-[[nodiscard]] std::string_view clip_report_set_name(ClipReportSet set) noexcept;
-/// One set by name, or every set for "all". Throws irid::Error listing the valid names.
-[[nodiscard]] std::vector<ClipReportSet> parse_clip_report_sets(std::string_view name);
-
 /// The luminance every colour of the spectrum set is scaled to.
 inline constexpr double spectrum_set_luminance = 0.3;
-/// The factor every interference colour's XYZ is multiplied by.
-inline constexpr double interference_set_exposure = 5.0;
 /// Grid points per axis of the rec2020 set.
 inline constexpr int rec2020_set_steps = 9;
 /// Rounds of the speed measurement (the median is reported).
@@ -96,12 +79,8 @@ struct ColorSet {
 
 /// The spectrum set (it does not depend on the destination: monochromatic light has no white).
 [[nodiscard]] ColorSet spectrum_color_set();
-/// The interference set, relative to the destination's white.
-[[nodiscard]] ColorSet interference_color_set(const RgbSpace& destination);
 /// The rec2020 set on a steps³ grid (steps >= 2), relative to the destination's white.
 [[nodiscard]] ColorSet rec2020_color_set(const RgbSpace& destination, int steps = rec2020_set_steps);
-/// One of the above by its enumerator.
-[[nodiscard]] ColorSet clip_report_color_set(ClipReportSet set, const RgbSpace& destination);
 /// The concatenation of sets, in order.
 [[nodiscard]] ColorSet union_color_set(std::span<const ColorSet> sets, std::string name = "all");
 
