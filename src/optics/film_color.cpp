@@ -29,6 +29,19 @@ FilmColor color_of(const Colorimeter& colorimeter, const Xyz& xyz) {
     return {xyz, colorimeter.linear_rgb(xyz)};
 }
 
+/// A count for messages, its digits grouped in threes by spaces ("2 123 142"); beyond 10¹⁸ in
+/// the shortest exponent form.
+std::string format_count(double count) {
+    if (!(count >= 0.0 && count < 1e18)) return format_shortest(count);
+    const std::string digits = std::to_string(static_cast<unsigned long long>(std::floor(count)));
+    std::string grouped;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) grouped += ' ';
+        grouped += digits[i];
+    }
+    return grouped;
+}
+
 double percentile(std::vector<double> values, double p) {
     if (values.empty()) return 0.0;
     const auto k = static_cast<std::size_t>(std::round(p * static_cast<double>(values.size() - 1)));
@@ -213,6 +226,20 @@ double thesis_matched_k(const SingleFilm& film, double lambda_nm) noexcept {
     const double n2 = film.substrate.index(lambda_nm).real();
     // Normal-incidence Fresnel amplitudes (n_i − n_t)/(n_i + n_t).
     return std::abs((n0 - n1) / (n0 + n1)) + std::abs((n1 - n2) / (n1 + n2));
+}
+
+void check_thesis_material(const Material& material, std::string_view role) {
+    if (!material.is_lossless()) {
+        throw Error("the thesis' closed forms cannot model the absorbing " + std::string(role) +
+                    " '" + material.name() +
+                    "' (k > 0): they assume a non-absorbing film and substrate (beams of real "
+                    "amplitude, phase changes of 0 or π) and would drop the absorption");
+    }
+}
+
+void check_thesis_single_film(const SingleFilm& film) {
+    check_thesis_material(film.film, "film");
+    check_thesis_material(film.substrate, "substrate");
 }
 
 // --- tables ---------------------------------------------------------------------------------
@@ -412,12 +439,37 @@ double choose_exact_table_step(const SingleFilm& film, double angle_rad, double 
 
 // --- the error study ------------------------------------------------------------------------
 
+double error_study_thickness_count(const ErrorStudyOptions& o) noexcept {
+    return std::floor(o.max_thickness_nm / o.thickness_step_nm + 1e-9) + 1.0;
+}
+
+double error_study_angle_count(const ErrorStudyOptions& o) noexcept {
+    return std::floor(o.max_angle_deg / o.angle_step_deg + 1e-9) + 1.0;
+}
+
+void validate_error_study(const ErrorStudyOptions& o, double films, std::string_view thickness_name,
+                          std::string_view angles_name, std::string_view films_name) {
+    const auto finite = [](double v) { return std::isfinite(v); };
+    if (!(finite(o.thickness_step_nm) && o.thickness_step_nm > 0.0 && finite(o.max_thickness_nm) &&
+          o.max_thickness_nm >= 0.0 && finite(o.angle_step_deg) && o.angle_step_deg > 0.0 &&
+          o.max_angle_deg >= 0.0 && o.max_angle_deg < 90.0)) {
+        throw Error(
+            "error study: steps must be finite and > 0, thickness finite and >= 0 and "
+            "angles in [0, 90)");
+    }
+    if (o.k && !(std::isfinite(*o.k) && *o.k >= 0.0)) {
+        throw Error("error study: K " + format_shortest(*o.k) + " must be finite and >= 0");
+    }
+    std::vector<WorkFactor> spectra{{std::string(thickness_name), error_study_thickness_count(o)},
+                                    {std::string(angles_name), error_study_angle_count(o)}};
+    if (films != 1.0) spectra.push_back({std::string(films_name), films, "films"});
+    spectra.push_back({"the thesis' and the exact model", 2.0, "spectra per sample"});
+    check_color_work(spectra);
+}
+
 ErrorStudyResult thesis_error_study(const std::string& name, const SingleFilm& film,
                                     const Colorimeter& colorimeter, const ErrorStudyOptions& o) {
-    if (!(o.thickness_step_nm > 0.0 && o.max_thickness_nm >= 0.0 && o.angle_step_deg > 0.0 &&
-          o.max_angle_deg >= 0.0 && o.max_angle_deg < 90.0)) {
-        throw Error("error study: steps must be > 0, thickness >= 0 and angles in [0, 90)");
-    }
+    validate_error_study(o);
     ErrorStudyResult r;
     r.name = name;
     r.k = o.k.value_or(thesis_matched_k(film));
@@ -463,6 +515,64 @@ ErrorStudyResult thesis_error_study(const std::string& name, const SingleFilm& f
     r.median = percentile(all, 0.5);
     r.p95 = percentile(all, 0.95);
     return r;
+}
+
+// --- limits on the work of one request -----------------------------------------------------
+
+void check_work_limit(std::span<const WorkFactor> factors, double cost_each, double limit,
+                      std::string_view unit, std::string_view advice, std::string_view limit_note) {
+    double total = 1.0;
+    for (const WorkFactor& f : factors) {
+        if (!(std::isfinite(f.count) && f.count >= 0.0)) {
+            throw Error(f.name + ": the count " + format_shortest(f.count) +
+                        " must be finite and >= 0");
+        }
+        total *= f.count;
+    }
+    if (!(cost_each > 0.0 && std::isfinite(cost_each))) {
+        throw Error("work limit: the cost of each " + std::string(unit) + " " +
+                    format_shortest(cost_each) + " must be finite and > 0");
+    }
+    if (total * cost_each <= limit) return;
+    std::string asked;
+    for (const WorkFactor& f : factors) {
+        if (!asked.empty()) asked += " × ";
+        asked += f.name + " (" + format_count(f.count) + " " + f.noun + ")";
+    }
+    throw Error(asked + " asks for " + format_count(total) + " " + std::string(unit) +
+                "; the limit is " + format_count(std::floor(limit / cost_each)) +
+                std::string(limit_note) + " (" + std::string(advice) + ")");
+}
+
+void check_color_work(std::span<const WorkFactor> spectra,
+                      const std::optional<WorkFactor>& per_wavelength) {
+    if (!per_wavelength) {
+        check_work_limit(spectra, dense_sample_count, max_film_evaluations, "spectra",
+                         "use coarser steps");
+        return;
+    }
+    if (!(std::isfinite(per_wavelength->count) && per_wavelength->count >= 1.0)) {
+        throw Error(per_wavelength->name + ": the count " + format_shortest(per_wavelength->count) +
+                    " must be finite and >= 1");
+    }
+    check_work_limit(spectra, dense_sample_count * per_wavelength->count, max_film_evaluations,
+                     "spectra", "use coarser steps",
+                     " with " + per_wavelength->name + " (" + format_count(per_wavelength->count) +
+                         " " + per_wavelength->noun + " per wavelength)");
+}
+
+void check_spectrum_work(std::span<const WorkFactor> factors) {
+    check_work_limit(factors, 1.0, max_film_evaluations, "film evaluations",
+                     "use a coarser wavelength step");
+}
+
+void check_stack_work(std::span<const WorkFactor> factors) {
+    check_work_limit(factors, 1.0, max_stack_layer_evaluations, "layer evaluations",
+                     "use a coarser wavelength step or fewer layers");
+}
+
+void check_output_rows(std::span<const WorkFactor> factors) {
+    check_work_limit(factors, 1.0, max_output_rows, "lines of output", "use coarser steps");
 }
 
 }  // namespace irid

@@ -200,6 +200,11 @@ double thesis_multilayer_reflectance(double lambda_nm, double effective_thicknes
     return 0.5 * K * ratio * ratio;
 }
 
+double thesis_unit_peak_k(int periods) noexcept {
+    const double beams = static_cast<double>(periods) + 1.0;
+    return 2.0 / (beams * beams);
+}
+
 double thesis_multilayer_effective_thickness_nm(double thickness_nm, double n,
                                                 double theta_rad) noexcept {
     return thickness_nm * cos_term(n, theta_rad);

@@ -192,25 +192,27 @@ for m in air water soap-film mineral-oil chitin fused-silica silver gold; do
 done
 
 # === 2. The thesis' single film (eq. 21/22 with eq. 24) ===================================
+# Sections 2-5 pass --K 1, the thesis' equations as written; the default K (the physical one)
+# is checked in section 9.
 
 # Soap in air: the reflection ambient -> film goes up, film -> air down: a phase change, eq. 21.
-run film --model thesis --layer 1.33:350
+run film --model thesis --layer 1.33:350 --K 1
 expect_header "wavelength_nm,R"
 expect_rows 'w[1] = 380 + 5 * (i - 1); w[2] = sin(2 * pi * 350 * 1.33 / $1) ^ 2' 1e-12 81
-run film --model thesis --layer 1.33:350 --no-phase-change
+run film --model thesis --layer 1.33:350 --no-phase-change --K 1
 expect_rows 'w[2] = cos(2 * pi * 350 * 1.33 / $1) ^ 2' 1e-12 81
 run film --model thesis --layer 1.33:350 --K 0.5
 expect_rows 'w[2] = 0.25 * sin(2 * pi * 350 * 1.33 / $1) ^ 2' 1e-12 81
 # At 30 degrees (ambient 1): t' = t n cos(theta1), sin(theta1) = sin(30 degrees) / n.
-run film --model thesis --ambient 1 --layer 1.33:350 --angle 30
+run film --model thesis --ambient 1 --layer 1.33:350 --angle 30 --K 1
 expect_rows 'c1 = sqrt(1 - (0.5 / 1.33) ^ 2); w[2] = sin(2 * pi * 350 * 1.33 * c1 / $1) ^ 2' 1e-12 81
 # 1 -> 1.38 -> 1.52 goes up twice: no phase change, eq. 22; forced back with --phase-change.
-run film --model thesis --ambient 1 --layer 1.38:350 --substrate 1.52
+run film --model thesis --ambient 1 --layer 1.38:350 --substrate 1.52 --K 1
 expect_rows 'w[2] = cos(2 * pi * 350 * 1.38 / $1) ^ 2' 1e-12 81
-run film --model thesis --ambient 1 --layer 1.38:350 --substrate 1.52 --phase-change
+run film --model thesis --ambient 1 --layer 1.38:350 --substrate 1.52 --phase-change --K 1
 expect_rows 'w[2] = sin(2 * pi * 350 * 1.38 / $1) ^ 2' 1e-12 81
 # 1.5 -> 1.33 -> 1 goes down twice: no phase change either.
-run film --model thesis --ambient 1.5 --layer 1.33:350 --substrate 1
+run film --model thesis --ambient 1.5 --layer 1.33:350 --substrate 1 --K 1
 expect_rows 'w[2] = cos(2 * pi * 350 * 1.33 / $1) ^ 2' 1e-12 81
 
 # === 3. The thesis' multilayer (eq. 25/26) ================================================
@@ -236,22 +238,22 @@ expect_eq25() {
 }
 
 # t = 100 nm of n = 1.56 at normal incidence: t_theta = 156 nm, a pole at 312 nm: 13^2 / 2.
-run film --model thesis-multilayer --layer 1.56:100 --periods 12 --wavelengths 312:312:1
+run film --model thesis-multilayer --layer 1.56:100 --periods 12 --wavelengths 312:312:1 --K 1
 expect_header "wavelength_nm,R"
 expect_rows 'w[1] = 312; w[2] = 84.5' 1e-9 1
-run film --model thesis-multilayer --layer 1.56:100 --periods 12
+run film --model thesis-multilayer --layer 1.56:100 --periods 12 --K 1
 expect_eq25 '100 * 1.56' 12 1 1e-9 81
 run film --model thesis-multilayer --layer 1.56:100 --periods 5 --K 0.5 --wavelengths 300:800:7
 expect_eq25 '100 * 1.56' 5 0.5 1e-9 72
 # At 30 degrees: t_theta = t (n^2 - sin^2 theta)^(1/2).
-run film --model thesis-multilayer --layer 1.56:100 --periods 12 --angle 30
+run film --model thesis-multilayer --layer 1.56:100 --periods 12 --angle 30 --K 1
 expect_eq25 '100 * sqrt(1.56 ^ 2 - 0.25)' 12 1 1e-9 81
 # ... and its pole: 2 t_theta / lambda = 1.
 POLE=$(num '2 * 100 * sqrt(1.56 ^ 2 - 0.25)')
-run film --model thesis-multilayer --layer 1.56:100 --periods 12 --angle 30 --wavelengths "$POLE:$POLE:1"
+run film --model thesis-multilayer --layer 1.56:100 --periods 12 --angle 30 --wavelengths "$POLE:$POLE:1" --K 1
 expect_rows 'w[2] = 84.5' 1e-9 1 rel
 # No period beyond the first film: K / 2 everywhere.
-run film --model thesis-multilayer --layer 1.56:100 --periods 0
+run film --model thesis-multilayer --layer 1.56:100 --periods 0 --K 1
 expect_rows 'w[2] = 0.5' 1e-12 81
 run film --model thesis-multilayer --layer 1.56:100 --periods 0 --K 0.5
 expect_rows 'w[2] = 0.25' 1e-12 81
@@ -259,18 +261,18 @@ expect_rows 'w[2] = 0.25' 1e-12 81
 # === 4. Morpho (eq. 25 with eq. 29) ========================================================
 
 # Normal incidence: t_theta = d1 + d2 n = 150 + 50 * 1.56 = 228 nm, a pole at 456 nm.
-run film --model morpho --wavelengths 456:456:1
+run film --model morpho --wavelengths 456:456:1 --K 1
 expect_header "wavelength_nm,R"
 expect_rows 'w[1] = 456; w[2] = 84.5' 1e-9 1
-run film --model morpho
+run film --model morpho --K 1
 expect_eq25 '150 + 50 * 1.56' 12 1 1e-9 81
 # 30 degrees: t_theta = d1 cos(theta) + d2 (n^2 - sin^2 theta)^(1/2); the pole moves with it.
 POLE=$(num '2 * (150 * cos(pi / 6) + 50 * sqrt(1.56 ^ 2 - 0.25))')
-run film --model morpho --angle 30 --wavelengths "$POLE:$POLE:1"
+run film --model morpho --angle 30 --wavelengths "$POLE:$POLE:1" --K 1
 expect_rows 'w[2] = 84.5' 1e-9 1 rel
-run film --model morpho --angle 30
+run film --model morpho --angle 30 --K 1
 expect_eq25 '150 * cos(pi / 6) + 50 * sqrt(1.56 ^ 2 - 0.25)' 12 1 1e-9 81
-run film --model morpho --d1 100 --d2 60 --n 1.5 --periods 5 --angle 45
+run film --model morpho --d1 100 --d2 60 --n 1.5 --periods 5 --angle 45 --K 1
 expect_eq25 '100 * cos(pi / 4) + 60 * sqrt(1.5 ^ 2 - 0.5)' 5 1 1e-9 81
 
 # === 5. --color ============================================================================
@@ -284,18 +286,18 @@ expect_rows 'w[1] = 0; w[2] = 0; w[3] = 0; w[6] = 0; w[9] = 0; w[10] = 0; w[11] 
 # L = 100, a = b = 0, and linear sRGB 1, 1, 1.
 D65_X=$(num '0.3127 / 0.3290')
 D65_Z=$(num '(1 - 0.3127 - 0.3290) / 0.3290')
-run film --model thesis --layer 1.33:0 --no-phase-change --color
+run film --model thesis --layer 1.33:0 --no-phase-change --color --K 1
 expect_header "$COLOR_HEADER"
 expect_rows "w[1] = $D65_X; w[3] = $D65_Z; w[4] = 0.3127; w[5] = 0.3290" 1e-3 1
 expect_rows 'w[2] = 1; w[6] = 100; w[7] = 0; w[8] = 0; w[9] = 1; w[10] = 1; w[11] = 1' 1e-9 1
 # Under illuminant A (x, y = 0.44757, 0.40745, CIE 015:2018) the white is still RGB 1, 1, 1
 # (adapted white), as it is in Rec. 2020 and with the 1964 observer (x, y = 0.31382, 0.33100).
-run film --model thesis --layer 1.33:0 --no-phase-change --color --illuminant A
+run film --model thesis --layer 1.33:0 --no-phase-change --color --illuminant A --K 1
 expect_rows 'w[4] = 0.44757; w[5] = 0.40745' 2e-4 1
 expect_rows 'w[2] = 1; w[6] = 100; w[9] = 1; w[10] = 1; w[11] = 1' 1e-9 1
-run film --model thesis --layer 1.33:0 --no-phase-change --color --rgb rec2020
+run film --model thesis --layer 1.33:0 --no-phase-change --color --rgb rec2020 --K 1
 expect_rows 'w[2] = 1; w[9] = 1; w[10] = 1; w[11] = 1' 1e-9 1
-run film --model thesis --layer 1.33:0 --no-phase-change --color --observer cie1964
+run film --model thesis --layer 1.33:0 --no-phase-change --color --observer cie1964 --K 1
 expect_rows 'w[4] = 0.31382; w[5] = 0.33100' 2e-4 1
 # x, y agree with X, Y, Z on the same line, and every model prints one colour line.
 for model_args in "--layer water:350" "--layer 1.38:100 --layer 2.35:60 --substrate 1.52 --angle 20" \
@@ -441,6 +443,125 @@ run film --model morpho --n 0.5
 expect_usage_error "--n" ">= 1"
 run film --model morpho --periods -1
 expect_usage_error "--periods" "0..1000000"
+
+# ===========================================================================================
+
+# === 9. The thesis' K defaults to the physical values =====================================
+
+# expect_field_at_most FIELD MAX: status 0 and field FIELD of every data line is <= MAX.
+expect_field_at_most() {
+    local verdict
+    verdict=$(awk -F, -v f="$1" -v max="$2" 'NR > 1 && !($f <= max + 0) { printf "line %d: field %d is %s", NR - 1, f, $f; exit }
+                                            END { if (NR < 2) print "no data lines" }' "$TMP/out")
+    if [[ $STATUS -eq 0 && -z $verdict ]]; then pass; else fail "field $1 <= $2 on every line" "$verdict; $(outcome)"; fi
+}
+
+# Eq. 25 with K = 2 / (l + 1)^2 peaks at 1 (the pole at 2 t_theta = lambda): 1/2 K (l+1)^2 = 1,
+# where K = 1 gives 84.5 for the Morpho's twelve mullions.
+run film --model morpho --wavelengths 456:456:1
+expect_rows 'w[1] = 456; w[2] = 1' 1e-9 1
+run film --model morpho
+expect_eq25 '150 + 50 * 1.56' 12 "$(num '2 / 13 ^ 2')" 1e-9 81
+run film --model morpho --periods 5 --angle 30
+expect_eq25 '150 * cos(pi / 6) + 50 * sqrt(1.56 ^ 2 - 0.25)' 5 "$(num '2 / 6 ^ 2')" 1e-9 81
+run film --model thesis-multilayer --layer 1.56:100 --periods 12 --wavelengths 312:312:1
+expect_rows 'w[2] = 1' 1e-9 1
+# So the wing's colour is a reflectance colour: Y <= 1, L* <= 100 (with K = 1: L* = 146).
+run film --model morpho --color
+expect_field_at_most 2 1
+expect_field_at_most 6 100
+run film --model morpho --blend --color
+expect_field_at_most 2 1
+run film-table --model morpho --angles 0:80:10
+expect_field_at_most 5 1
+# The single film's K is matched to its faces: K = |r01| + |r12| at normal incidence (Fresnel,
+# r = (n_i - n_t) / (n_i + n_t)), so R = K^2 sin^2(2 pi t n / lambda) peaks at (|r01| + |r12|)^2.
+run film --model thesis --ambient 1 --layer 1.33:350 --substrate 1
+expect_rows 'K = 2 * 0.33 / 2.33; w[2] = K ^ 2 * sin(2 * pi * 350 * 1.33 / $1) ^ 2' 1e-12 81
+run film --model thesis --ambient 1 --layer 1.47:300 --substrate 1.33
+expect_rows 'K = 0.47 / 2.47 + 0.14 / 2.8; w[2] = K ^ 2 * sin(2 * pi * 300 * 1.47 / $1) ^ 2' 1e-12 81
+run film --model thesis --ambient 1 --layer 1.38:200 --substrate 1.52 --color
+expect_field_at_most 2 "$(num '(0.38 / 2.38 + 0.14 / 2.9) ^ 2')"
+# --help says what the default is and where it comes from.
+run film --help
+expect_stdout_has "|r01| + |r12|"
+expect_stdout_has "2/(l+1)^2"
+expect_stdout_has "--K 1 is the thesis as written"
+
+# === 10. The thesis' models refuse absorbing films ========================================
+
+# Eq. 19-22 and 25 add beams of real amplitude with phase changes of 0 or pi: an absorbing film
+# (or substrate) cannot be modelled and is refused, not its k dropped.
+run film --model thesis --layer 1.5+0.5i:300
+expect_usage_error "--layer 1 '1.5+0.5i:300'" "absorbing" "--model exact"
+run film --model thesis --layer silver:300
+expect_usage_error "--layer 1 'silver:300'" "absorbing" "--model exact"
+run film --model thesis --layer 1.33:300 --substrate gold
+expect_usage_error "--substrate 'gold'" "absorbing" "--model exact"
+run film --model thesis --layer silver:300 --color
+expect_usage_error "--layer" "absorbing"
+run film --model thesis-multilayer --periods 3 --layer silver:100
+expect_usage_error "--layer 1 'silver:100'" "absorbing" "--model exact"
+run film-table --model thesis --layer 1.5+0.01i --thickness 0:100:10
+expect_usage_error "--layer" "absorbing"
+# The exact model takes them.
+run film --layer silver:30 --substrate gold --wavelengths 400:700:100
+expect_rows 'w[1] = 300 + 100 * i' 1e-9 4
+
+# === 11. The work of a whole run is bounded ===============================================
+
+# run_bounded ARGS...: like run, but stopped after 60 s (status 124), so that a run that ignores
+# the limits fails here instead of hanging the suite.
+run_bounded() {
+    local args
+    timeout 60 "$IRID" "$@" </dev/null >"$TMP/out" 2>"$TMP/err"
+    STATUS=$?
+    printf -v args ' %q' "$@"
+    RAN="irid${args}"
+}
+
+# Each range is within its own limit; their product is not. 100 000 thicknesses x 8 901 angles
+# x 2 films x 2 spectra = 3 560 400 000 spectra, against 10^9 film evaluations / 471 wavelengths
+# = 2 123 142 spectra.
+run_bounded film-error --thickness 0:99999:1 --angles 0:89:0.01
+expect_usage_error "--thickness 0:99999:1 (100 000 values)" "--angles 0:89:0.01 (8 901 values)" \
+    "asks for 3 560 400 000 spectra" "the limit is 2 123 142"
+run_bounded film-error --film soap --thickness 0:99999:1 --angles 0:89:0.01
+expect_usage_error "asks for 1 780 200 000 spectra" "the limit is 2 123 142"
+# 1 000 001 thicknesses x 9 angles = 9 000 009 lines (2.2 GB), against 10^6 lines; no file.
+rm -rf "$TMP/dir" && mkdir "$TMP/dir"
+run_bounded film-table --layer water --thickness 0:1e6:1 --angles 0:8:1 -o "$TMP/dir/big.csv"
+expect_usage_error "--thickness 0:1e6:1 (1 000 001 values)" "--angles 0:8:1 (9 values)" \
+    "asks for 9 000 009 lines of output" "the limit is 1 000 000"
+RAN="ls -A (the -o folder after the refused run)"
+listing=$(ls -A "$TMP/dir")
+if [[ -z $listing ]]; then pass; else fail "an empty folder" "$(show "$listing")"; fi
+# The Morpho blend costs 101 evaluations per wavelength: 10^9 / (471 x 101) = 21 021 spectra.
+run_bounded film-table --model morpho --blend --angles 0:89:0.001
+expect_usage_error "--angles 0:89:0.001 (89 001 values)" "asks for 89 001 spectra" \
+    "the limit is 21 021 with --blend (101 samples per wavelength)"
+# Wavelengths x layers of the transfer matrix: 200 001 x 1 000 = 200 001 000 > 2 x 10^8.
+layers=()
+for _ in $(seq 1000); do layers+=(--layer 1.5:100); done
+run_bounded film "${layers[@]}" --wavelengths 200:2000:0.009
+RAN="irid film --layer 1.5:100 (1000 times) --wavelengths 200:2000:0.009"
+expect_usage_error "--wavelengths 200:2000:0.009 (200 001 values)" "--layer (1 000 layers)" \
+    "asks for 200 001 000 layer evaluations" "the limit is 200 000 000"
+# ... while the same stack at 1 801 wavelengths (1 801 000 evaluations) runs.
+run_bounded film "${layers[@]}" --wavelengths 200:2000:1
+RAN="irid film --layer 1.5:100 (1000 times) --wavelengths 200:2000:1"
+expect_rows 'w[1] = 199 + i' 1e-9 1801
+# The commands of the README, docs/OPTICS.md and scripts/demo stay within the limits.
+run_bounded film-table --layer water --thickness 0:1500:4 --angles 0:80:10
+expect_rows 'w[3] = cos($2 * pi / 180)' 1e-12 3384
+run_bounded film-table --layer mineral-oil --substrate water --thickness 0:1500:2 --angles 0:80:2
+expect_rows 'w[3] = cos($2 * pi / 180)' 1e-12 30791
+run_bounded film-table --model morpho --K 0.0118 --angles 0:75:15
+expect_rows 'w[2] = 15 * (i - 1)' 1e-12 6
+run_bounded film-error --thickness 0:1500:10 --angles 0:80:20
+expect_stdout_matches '^samples 755 '
+run_bounded film-error --film soap --K 1 --angles 0:80:10
+expect_stdout_matches '^samples 2709 '
 
 # ===========================================================================================
 

@@ -2,10 +2,14 @@
 //
 //   irid film --layer water:350 [--ambient air] [--substrate air] [--angle 30]
 //             [--polarization s|p|unpolarized] [--wavelengths 380:780:5]       → wavelength_nm,R,T
-//   irid film --model thesis --layer 1.33:350 [--phase-change|--no-phase-change] [--K 1]
-//   irid film --model thesis-multilayer --layer 1.56:100 --periods 12 [--K 1]  → wavelength_nm,R
-//   irid film --model morpho [--d1 150] [--d2 50] [--n 1.56] [--periods 12] [--blend]
+//   irid film --model thesis --layer 1.33:350 [--phase-change|--no-phase-change] [--K K]
+//   irid film --model thesis-multilayer --layer 1.56:100 --periods 12 [--K K]  → wavelength_nm,R
+//   irid film --model morpho [--d1 150] [--d2 50] [--n 1.56] [--periods 12] [--blend] [--K K]
 //   ... --color [--illuminant D65] [--observer cie1931] [--rgb srgb]            → one colour line
+//
+// K defaults to the physical values the renderer uses (the matched |r01| + |r12| for the single
+// film, 2/(l+1)² for eq. 25); --K 1 is the thesis as written. The work of a run (wavelengths ×
+// layers, the lines written) is checked against the library's limits before anything is computed.
 #include "film_options.h"
 
 #include <irid/color.h>
@@ -26,6 +30,18 @@ int run_film(const FilmCommand& c) {
     const Colorimeter colorimeter = parse_colorimeter(c.args);
     // The dispersion fits (water, silica) and the metal tables hold over about 200-2000 nm.
     const Range range = parse_range(c.args.wavelengths, "--wavelengths", 200.0, 2000.0, 1000000);
+    if (c.color) {
+        film.check_work({}, false);
+    } else {
+        const std::vector<WorkFactor> lines{
+            {"--wavelengths " + c.args.wavelengths, static_cast<double>(range.count())}};
+        try {
+            check_output_rows(lines);
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
+        film.check_work(lines, true);
+    }
     std::string out;
     if (c.color) {
         const FilmColor fc = film.color(colorimeter, film.angle_rad);

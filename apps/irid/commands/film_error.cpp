@@ -67,6 +67,14 @@ int run_film_error(const FilmErrorCommand& c) {
     if (c.film != "all" && c.film != "soap" && c.film != "oil-on-water") {
         throw UsageError("--film '" + c.film + "' is unknown; valid: soap, oil-on-water, all");
     }
+    // The grid is the product of --thickness and --angles (and both films for --film all): its
+    // total work is checked before any study runs.
+    try {
+        validate_error_study(options, c.film == "all" ? 2.0 : 1.0, "--thickness " + c.thickness,
+                             "--angles " + c.angles, "--film all");
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
     std::string out;
     for (const auto& [name, film] : films) {
         if (c.film != "all" && c.film != name) continue;

@@ -66,11 +66,15 @@ double real_index(const Material& m, double lambda_nm) { return m.index(lambda_n
 
 }  // namespace
 
+std::size_t Range::count() const {
+    return static_cast<std::size_t>(std::floor((end - start) / step + 1e-9)) + 1;
+}
+
 std::vector<double> Range::values() const {
     std::vector<double> v;
-    const auto count = static_cast<std::size_t>(std::floor((end - start) / step + 1e-9)) + 1;
-    v.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) v.push_back(start + step * static_cast<double>(i));
+    const std::size_t n = count();
+    v.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) v.push_back(start + step * static_cast<double>(i));
     return v;
 }
 
@@ -117,7 +121,13 @@ void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) 
         ->capture_default_str();
     cmd.add_flag("--phase-change", a.phase_change, "Thesis model: force eq. 21 (a π phase change)");
     cmd.add_flag("--no-phase-change", a.no_phase_change, "Thesis model: force eq. 22");
-    cmd.add_option("--K", a.k, "The thesis' amplitude factor K (> 0)")->capture_default_str();
+    cmd.add_option("--K", a.k,
+                   "The thesis' amplitude factor K (> 0); --K 1 is the thesis as written. Default: "
+                   "the physical K the renderer and film-error use: for --model thesis the matched "
+                   "K = |r01| + |r12| (normal-incidence Fresnel amplitudes of the film's two faces "
+                   "at 555 nm; 0.286 for water in air), so eq. 21/22 peak where the exact film "
+                   "does; for thesis-multilayer and morpho K = 2/(l+1)^2, l = --periods (0.0118 "
+                   "for 12), so eq. 25 peaks at 1");
     cmd.add_option("--periods", a.periods, "Number of films l in eq. 25 (thesis-multilayer; morpho default 12)");
     cmd.add_option("--d1", a.d1_nm, "Morpho: path in air per period d1 [nm]")->capture_default_str();
     cmd.add_option("--d2", a.d2_nm, "Morpho: chitin mullion thickness d2 [nm]")->capture_default_str();
@@ -158,11 +168,25 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
     }
     if (a.phase_change) f.phase_change = true;
     if (a.no_phase_change) f.phase_change = false;
-    if (!(a.k > 0.0 && std::isfinite(a.k))) {
+    const auto given = [&](const char* option) {
+        return a.command && a.command->count(option) > 0;
+    };
+    if (given("--K") && !(a.k > 0.0 && std::isfinite(a.k))) {
         throw UsageError("--K " + format_shortest(a.k) + " must be a finite number > 0");
     }
-    f.k = a.k;
-    const auto given = [&](const char* option) { return a.command && a.command->count(option) > 0; };
+    // The thesis' closed forms take real indices: an absorbing film or substrate is refused, as
+    // the renderer refuses absorbing films, rather than its k silently dropped.
+    const auto thesis_material = [](const Material& m, const char* role,
+                                    const std::string& option) {
+        try {
+            check_thesis_material(m, role);
+        } catch (const Error& e) {
+            throw UsageError(option + ": " + e.what() + "; use --model exact");
+        }
+    };
+    const auto layer_option = [&](std::size_t i) {
+        return "--layer " + std::to_string(i + 1) + " '" + a.layers[i] + "'";
+    };
     if (a.periods < 0 || a.periods > thesis_max_periods) {
         throw UsageError("--periods " + std::to_string(a.periods) + " must be in 0.." +
                          std::to_string(thesis_max_periods));
@@ -207,11 +231,20 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
             }
             if (!thickness_required) need_layers(1, "exact (film-table)");
             break;
-        case FilmModel::thesis: need_layers(1, "thesis"); break;
+        case FilmModel::thesis:
+            need_layers(1, "thesis");
+            thesis_material(f.layers.front().material, "film", layer_option(0));
+            thesis_material(f.substrate, "substrate", "--substrate '" + a.substrate + "'");
+            f.k = given("--K")
+                      ? a.k
+                      : thesis_matched_k({f.ambient, f.layers.front().material, f.substrate});
+            break;
         case FilmModel::thesis_multilayer:
             need_layers(1, "thesis-multilayer");
             if (!given("--periods")) throw UsageError("--periods is required with --model thesis-multilayer");
             f.periods = a.periods;
+            f.k = given("--K") ? a.k : thesis_unit_peak_k(f.periods);
+            thesis_material(f.layers.front().material, "film", layer_option(0));
             if (real_index(f.layers.front().material, 555.0) < 1.0) {
                 throw UsageError("--layer: eq. 26 needs the film's index >= 1 (air around it)");
             }
@@ -227,7 +260,8 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
                 throw UsageError("--n " + format_shortest(a.n) +
                                  " must be >= 1 (eq. 29 assumes the wing is in air)");
             }
-            f.morpho = {a.d1_nm, a.d2_nm, a.n, a.periods, a.k};
+            f.k = given("--K") ? a.k : thesis_unit_peak_k(a.periods);
+            f.morpho = {a.d1_nm, a.d2_nm, a.n, a.periods, f.k};
             try {
                 validate_morpho(f.morpho);
             } catch (const Error& e) {
@@ -266,6 +300,37 @@ Colorimeter parse_colorimeter(const FilmArguments& a) {
 
 double Film::morpho_thickness_nm(double angle_rad_) const {
     return morpho_effective_thickness_nm(morpho, angle_rad_);
+}
+
+void Film::check_work(std::vector<WorkFactor> spectra, bool at_wavelengths) const {
+    try {
+        // color() takes the prepared Airy film for one unpolarised layer, the transfer matrix for
+        // any other exact stack; spectrum() always takes the transfer matrix.
+        const bool airy = model == FilmModel::exact && layers.size() == 1 &&
+                          polarization == Polarization::unpolarized && !at_wavelengths;
+        if (model == FilmModel::exact && !airy) {
+            if (!at_wavelengths) {
+                spectra.push_back({"the 1 nm grid 360-830 nm",
+                                   static_cast<double>(dense_sample_count), "wavelengths"});
+            }
+            spectra.push_back({"--layer", static_cast<double>(layers.size()), "layers"});
+            check_stack_work(spectra);
+        } else if (at_wavelengths) {
+            if (blend) {
+                spectra.push_back({"--blend", static_cast<double>(blend->samples), "samples"});
+            }
+            check_spectrum_work(spectra);
+        } else {
+            std::optional<WorkFactor> per_wavelength;
+            if (blend) {
+                per_wavelength =
+                    WorkFactor{"--blend", static_cast<double>(blend->samples), "samples"};
+            }
+            check_color_work(spectra, per_wavelength);
+        }
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
 }
 
 std::function<Optics(double)> Film::spectrum(double angle, std::optional<double> thickness_nm) const {

@@ -25,6 +25,8 @@ struct Range {
     double start = 0.0, end = 0.0, step = 1.0;
     /// start, start + step, ... up to end (inclusive within rounding).
     [[nodiscard]] std::vector<double> values() const;
+    /// How many values values() holds, without making them.
+    [[nodiscard]] std::size_t count() const;
 };
 
 /// The raw option strings, as CLI11 fills them.
@@ -38,6 +40,7 @@ struct FilmArguments {
     std::string wavelengths = "380:780:5";
     bool phase_change = false;
     bool no_phase_change = false;
+    /// --K when given; otherwise the model's physical default (see Film::k).
     double k = 1.0;
     int periods = 12;
     double d1_nm = 150.0, d2_nm = 50.0, n = 1.56;
@@ -68,6 +71,9 @@ struct Film {
     double angle_rad = 0.0;
     Polarization polarization = Polarization::unpolarized;
     std::optional<bool> phase_change;
+    /// The thesis' K: --K when given, otherwise thesis_matched_k of the film (--model thesis)
+    /// or thesis_unit_peak_k of the periods (thesis-multilayer, morpho), the values the renderer
+    /// and `irid film-error` use. Unused by the exact model.
     double k = 1.0;
     int periods = 12;
     MorphoParameters morpho;
@@ -83,6 +89,12 @@ struct Film {
                                   std::optional<double> thickness_nm = std::nullopt) const;
     /// The eq. 29 effective thickness (Morpho) at an angle.
     [[nodiscard]] double morpho_thickness_nm(double angle_rad) const;
+    /// Checks the work of a request against the library's limits before anything is computed:
+    /// colours (color(), one spectrum on the 1 nm grid each) for the product of `spectra`, or,
+    /// with `at_wavelengths`, spectrum() at the product of `spectra` (the --wavelengths). The
+    /// film adds what each wavelength costs (its layers, a blend's samples). Throws UsageError
+    /// naming the factors, the total and the limit.
+    void check_work(std::vector<WorkFactor> spectra, bool at_wavelengths) const;
 };
 
 /// Parses and checks the film options. `thickness_required`: every --layer needs :THICKNESS.

@@ -8,7 +8,7 @@
 #include "film_options.h"
 
 #include <irid/color.h>
-#include <irid/io/atomic_file.h>
+#include <irid/io/output_file.h>
 
 #include <array>
 #include <cmath>
@@ -34,18 +34,36 @@ int run_film_table(const FilmTableCommand& c) {
     if (morpho && !c.thickness.empty()) {
         throw UsageError("--thickness does not apply to --model morpho; its table is indexed by --angles");
     }
-    const std::vector<double> thicknesses =
-        morpho ? std::vector<double>{0.0}
-               : parse_range(c.thickness, "--thickness", 0.0, 1e6, 10000000).values();
-    const std::vector<double> angles =
-        c.angles.empty() ? std::vector<double>{c.args.angle_deg}
-                         : parse_range(c.angles, "--angles", 0.0, 90.0, 100000).values();
-    if (!angles.empty() && angles.back() >= 90.0) {
+    const std::optional<Range> thickness_range =
+        morpho ? std::nullopt
+               : std::optional<Range>(parse_range(c.thickness, "--thickness", 0.0, 1e6, 10000000));
+    const std::optional<Range> angle_range =
+        c.angles.empty()
+            ? std::nullopt
+            : std::optional<Range>(parse_range(c.angles, "--angles", 0.0, 90.0, 100000));
+    if (angle_range && angle_range->values().back() >= 90.0) {
         throw UsageError("--angles '" + c.angles + "': angles must be < 90 degrees");
     }
-    if (static_cast<double>(thicknesses.size()) * static_cast<double>(angles.size()) > 1e7) {
-        throw UsageError("--thickness × --angles: more than 1e7 rows; use larger steps");
+    // The table's size is the product of the two ranges: bound it (lines written, spectra
+    // computed) before computing anything.
+    std::vector<WorkFactor> rows;
+    if (thickness_range) {
+        rows.push_back(
+            {"--thickness " + c.thickness, static_cast<double>(thickness_range->count())});
     }
+    if (angle_range) {
+        rows.push_back({"--angles " + c.angles, static_cast<double>(angle_range->count())});
+    }
+    try {
+        check_output_rows(rows);
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+    film.check_work(rows, false);
+    const std::vector<double> thicknesses =
+        thickness_range ? thickness_range->values() : std::vector<double>{0.0};
+    const std::vector<double> angles =
+        angle_range ? angle_range->values() : std::vector<double>{c.args.angle_deg};
 
     std::string out = "thickness_nm,angle_deg,cos_theta,X,Y,Z,R_linear,G_linear,B_linear\n";
     for (const double angle_deg : angles) {
@@ -64,7 +82,8 @@ int run_film_table(const FilmTableCommand& c) {
         }
     }
     if (c.output.empty() || c.output == "-") write_stdout(out);
-    else io::write_text_file_atomically(c.output, out);
+    else
+        io::write_output_file(c.output, out);
     return exit_success;
 }
 

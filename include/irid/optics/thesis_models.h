@@ -32,7 +32,8 @@
 //   (sin((l+1)x) / sin x)², x = 2πt/λ. The t of eq. 25 is the effective thickness t_θ of
 //   eq. 26 (or 29), so at normal incidence it is the optical thickness t·n of a period. The
 //   model is not normalised: its peak is ½K(l+1)² (84.5 for the Morpho's l = 12 at K = 1);
-//   K = 2/(l+1)² makes the peak 1. K defaults to 1 as in the thesis.
+//   K = 2/(l+1)² (thesis_unit_peak_k) makes the peak 1. The parameter structs default K to 1,
+//   the thesis as written; the renderer, the figures and the command line use 2/(l+1)².
 // - Eq. 26 and 29 take the ambient to be air (index 1) and θ to be the angle in air; n ≥ 1 is
 //   required so that n² − sin²θ ≥ 0 at every angle.
 // - Morpho (eq. 29): d₁ is a path in air (it goes with cos θ), d₂ one in chitin of index n (it
@@ -157,6 +158,13 @@ void validate_thesis_multilayer(const ThesisMultilayerParameters& stack);
 /// the value is its limit ½K(l+1)²; near there it is evaluated without cancellation.
 [[nodiscard]] double thesis_multilayer_reflectance(double lambda_nm, double effective_thickness_nm,
                                                    int periods, double K = 1.0) noexcept;
+
+/// K = 2/(l+1)² for l = periods: eq. 25's maximum ½K(l+1)², where 2t = mλ puts all l + 1
+/// beams in phase, is then 1, the most a surface can reflect, and every other value is below it
+/// ((sin((l+1)x) / sin x)² ≤ (l+1)²). The renderer's and the figures' K for the Morpho wing, and
+/// the command line's default for the multilayer and Morpho models (with K = 1 the twelve
+/// mullions peak at 84.5). Precondition: periods >= 0.
+[[nodiscard]] double thesis_unit_peak_k(int periods) noexcept;
 
 /// Smits 1990, eq. 26: t_θ = t (n² − sin²θ)^½ [nm], θ [rad] the angle in air.
 [[nodiscard]] double thesis_multilayer_effective_thickness_nm(double thickness_nm, double n,
