@@ -2,6 +2,7 @@
 #include <irid/color/numeric_table.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
+#include <irid/text_input.h>
 
 #include "cie_tables.h"
 
@@ -133,8 +134,17 @@ DenseSpectrum illuminant_by_name(std::string_view name) {
     if (n.rfind(bb, 0) == 0 && parse_double(std::string_view(n).substr(bb.size()), value)) {
         return blackbody(value);
     }
-    throw Error("unknown illuminant '" + std::string(name) +
-                "'; valid: D50, D55, D65, D75, A, E, D<CCT in K, 4000-25000> (e.g. D9300), "
+    if (n == "c") {
+        // C is a white point of the command line (--white C) but has no spectrum here: CIE
+        // illuminant C is defined by a filtered source, tabulated in CIE 015, which irid does
+        // not ship.
+        throw Error("illuminant C has no spectral table in irid; it is available as a white "
+                    "point (--white C: x, y = 0.31006, 0.31616) where a chromaticity is enough. "
+                    "Spectral illuminants: D50, D55, D65, D75, A, E, D<CCT in K, 4000-25000> (e.g. "
+                    "D6774, close to C), blackbody:<T in K>");
+    }
+    throw Error("unknown illuminant " + quote_untrusted(name) +
+                "; valid: D50, D55, D65, D75, A, E, D<CCT in K, 4000-25000> (e.g. D9300), "
                 "blackbody:<T in K>");
 }
 

@@ -1,6 +1,8 @@
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
+#include <irid/text_input.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -39,15 +41,6 @@ Parse parse_number(std::string_view field, double& value) {
     return ec == std::errc() ? Parse::ok : Parse::not_a_number;
 }
 
-/// A field that is empty or begins like a number (sign, point or digit) is mistyped or missing
-/// data, never a column name: a first line made only of such fields is data even when one fails
-/// to parse.
-bool looks_numeric(std::string_view field) noexcept {
-    field = trim(field);
-    return field.empty() ||
-           std::string_view("+-.0123456789").find(field.front()) != std::string_view::npos;
-}
-
 std::vector<std::string_view> split_fields(std::string_view line) {
     std::vector<std::string_view> fields;
     std::size_t start = 0;
@@ -62,40 +55,42 @@ std::vector<std::string_view> split_fields(std::string_view line) {
     }
 }
 
-std::string quoted(std::string_view s) {
-    constexpr std::size_t max_shown = 40;
-    std::string out = "'";
-    out += s.size() > max_shown ? std::string(s.substr(0, max_shown)) + "..." : std::string(s);
-    return out + "'";
-}
-
 }  // namespace
 
-NumericTable read_numeric_table(std::istream& in, std::string_view source, int columns,
+NumericTable read_numeric_table(std::string_view text, std::string_view source, int columns,
                                 int min_columns) {
     NumericTable table;
-    std::string line;
     int line_number = 0;
     bool first_content_line = true;
     const auto fail = [&](const std::string& what) {
         throw Error(std::string(source) + ":" + std::to_string(line_number) + ": " + what);
     };
-    while (std::getline(in, line)) {
+    const auto field_error = [&](std::size_t i, std::string_view field, const char* what) {
+        fail("field " + std::to_string(i + 1) + " " + quote_untrusted(trim(field)) + " " + what);
+    };
+    std::vector<double> row;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view content = trim(text.substr(start, end - start));
+        start = end + 1;
         ++line_number;
-        std::string_view content = trim(line);
         constexpr std::string_view utf8_bom = "\xEF\xBB\xBF";
         if (line_number == 1 && content.substr(0, utf8_bom.size()) == utf8_bom) {
             content = trim(content.substr(utf8_bom.size()));
         }
         if (content.empty()) continue;
         const std::vector<std::string_view> fields = split_fields(content);
-        std::vector<double> row(fields.size());
+        row.assign(fields.size(), 0.0);
         Parse status = Parse::ok;
         std::size_t bad_field = 0;
-        bool all_look_numeric = true;
+        bool any_number = false, any_text = false;
         for (std::size_t i = 0; i < fields.size(); ++i) {
-            all_look_numeric = all_look_numeric && looks_numeric(fields[i]);
             const Parse p = parse_number(fields[i], row[i]);
+            // A value too large for a double is still a number (mistyped data, not a name).
+            any_number = any_number || p != Parse::not_a_number;
+            any_text = any_text || !trim(fields[i]).empty();
             if (p != Parse::ok && status == Parse::ok) {
                 status = p;
                 bad_field = i;
@@ -103,44 +98,62 @@ NumericTable read_numeric_table(std::istream& in, std::string_view source, int c
         }
         if (first_content_line) {
             first_content_line = false;
-            if (status != Parse::ok && !all_look_numeric) {
+            if (!any_number && any_text) {
                 table.header = std::string(content);
                 continue;
             }
         }
         if (status == Parse::out_of_range) {
-            fail("field " + std::to_string(bad_field + 1) + " " + quoted(trim(fields[bad_field])) +
-                 " is out of the range of a double");
+            field_error(bad_field, fields[bad_field], "is out of the range of a double");
         }
-        if (status != Parse::ok) {
-            fail("field " + std::to_string(bad_field + 1) + " " + quoted(trim(fields[bad_field])) +
-                 " is not a number");
-        }
+        if (status != Parse::ok) field_error(bad_field, fields[bad_field], "is not a number");
         for (std::size_t i = 0; i < row.size(); ++i) {
-            if (!std::isfinite(row[i])) {
-                fail("field " + std::to_string(i + 1) + " " + quoted(trim(fields[i])) +
-                     " is not a finite number");
-            }
+            if (!std::isfinite(row[i])) field_error(i, fields[i], "is not a finite number");
         }
-        const int n = static_cast<int>(row.size());
-        if (columns > 0 && n != columns) {
+        const std::size_t n = row.size();
+        if (columns > 0 && n != static_cast<std::size_t>(columns)) {
             fail("expected " + std::to_string(columns) + " comma-separated numbers, found " +
                  std::to_string(n));
         }
-        if (n < min_columns) {
+        if (n < static_cast<std::size_t>(std::max(min_columns, 1))) {
             fail("expected at least " + std::to_string(min_columns) +
                  " comma-separated numbers, found " + std::to_string(n));
         }
-        if (columns == 0 && !table.rows.empty() && n != static_cast<int>(table.rows.front().size())) {
-            fail("expected " + std::to_string(table.rows.front().size()) +
+        if (table.empty()) {
+            table.columns = n;
+        } else if (n != table.columns) {
+            fail("expected " + std::to_string(table.columns) +
                  " comma-separated numbers like line " + std::to_string(table.line_numbers.front()) +
                  ", found " + std::to_string(n));
         }
-        table.rows.push_back(std::move(row));
+        if (table.values.size() + n > max_table_values) {
+            throw Error(std::string(source) + ": more than " + std::to_string(max_table_values) +
+                        " numbers (at line " + std::to_string(line_number) +
+                        "); a table holds at most " + std::to_string(max_table_values));
+        }
+        table.values.insert(table.values.end(), row.begin(), row.end());
         table.line_numbers.push_back(line_number);
     }
-    if (in.bad()) throw Error(std::string(source) + ": read error");
     return table;
+}
+
+NumericTable read_numeric_table(std::istream& in, std::string_view source, int columns,
+                                int min_columns) {
+    std::string text;
+    constexpr std::size_t chunk = 1 << 16;
+    while (in) {
+        const std::size_t used = text.size();
+        text.resize(used + chunk);
+        in.read(text.data() + used, static_cast<std::streamsize>(chunk));
+        text.resize(used + static_cast<std::size_t>(in.gcount()));
+        if (text.size() > max_text_input_bytes) {
+            throw Error(std::string(source) + ": more than " +
+                        std::to_string(max_text_input_bytes >> 20) + " MiB; irid reads up to " +
+                        std::to_string(max_text_input_bytes >> 20) + " MiB of text");
+        }
+    }
+    if (in.bad()) throw Error(std::string(source) + ": read error");
+    return read_numeric_table(std::string_view(text), source, columns, min_columns);
 }
 
 std::string format_shortest(double value) {

@@ -1,10 +1,10 @@
 #include <irid/color/numeric_table.h>
 #include <irid/color/spectrum.h>
 #include <irid/error.h>
+#include <irid/text_input.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numeric>
 #include <string>
 
@@ -92,14 +92,14 @@ PiecewiseLinearSpectrum PiecewiseLinearSpectrum::read_csv(const std::string& pat
         throw Error(path + ": spectrum column " + std::to_string(column) +
                     " must be >= 1 (column 0 holds the wavelengths)");
     }
-    std::ifstream in(path);
-    if (!in) throw Error(path + ": cannot open the file for reading");
-    const NumericTable table = read_numeric_table(in, path, 0, column + 1);
-    if (table.rows.empty()) throw Error(path + ": no data rows");
+    const NumericTable table =
+        read_numeric_table(read_text_file(path, "spectrum CSV file", StreamInput::accept), path, 0,
+                           column + 1);
+    if (table.empty()) throw Error(path + ": no data rows");
     std::vector<double> lambda;
     std::vector<double> value;
-    for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        const double l = table.rows[r][0];
+    for (std::size_t r = 0; r < table.rows(); ++r) {
+        const double l = table.row(r)[0];
         if (!lambda.empty() && !(l > lambda.back())) {
             throw Error(path + ":" + std::to_string(table.line_numbers[r]) + ": wavelength " +
                         format_shortest(l) + " nm does not increase (previous " +
@@ -110,7 +110,7 @@ PiecewiseLinearSpectrum PiecewiseLinearSpectrum::read_csv(const std::string& pat
                         ": wavelength must be positive, found " + format_shortest(l));
         }
         lambda.push_back(l);
-        value.push_back(table.rows[r][static_cast<std::size_t>(column)]);
+        value.push_back(table.row(r)[static_cast<std::size_t>(column)]);
     }
     return {std::move(lambda), std::move(value)};
 }

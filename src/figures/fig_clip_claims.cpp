@@ -5,7 +5,8 @@
 
 #include <irid/color/rgb.h>
 #include <irid/error.h>
-#include <irid/io/atomic_file.h>
+#include <irid/figures/clip_sets.h>
+#include <irid/io/output_file.h>
 
 #include "figure_support.h"
 #include "film_clip_data.h"
@@ -276,7 +277,7 @@ FigureResult draw_clip_claims(const FigureRequest& request) {
     const bool html = lower_extension(request.output) == ".html";
     const std::string text = html ? clip_claims_html(analyses, set, hue, ClipMethod::smits)
                                   : clip_claims_markdown(analyses, set, hue, ClipMethod::smits);
-    io::write_text_file_atomically(request.output, text);
+    io::write_output_file(request.output, text);
 
     FigureResult result;
     for (const ClipAnalysis& a : analyses) {

@@ -2,7 +2,7 @@
 // library's clip (smits_clip_rgb) on a counting number type, beside the thesis' numbers.
 
 #include <irid/gamut/clip.h>
-#include <irid/io/atomic_file.h>
+#include <irid/io/output_file.h>
 
 #include "figure_data.h"
 #include "figure_support.h"
@@ -142,7 +142,7 @@ FigureResult draw_table1(const FigureRequest& request) {
     const bool page = options.choice("html", {"page", "fragment"}, "page") == "page";
     const Table1 counts = count_smits_operations();
     const bool markdown = lower_extension(request.output) == ".md";
-    io::write_text_file_atomically(request.output,
+    io::write_output_file(request.output,
                                    markdown ? table1_markdown(counts) : table1_html(counts, page));
 
     FigureResult result;

@@ -4,7 +4,7 @@
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/figures/figures.h>
-#include <irid/io/atomic_file.h>
+#include <irid/io/output_file.h>
 
 #include <cairo-svg.h>
 #include <cairo.h>
@@ -399,7 +399,7 @@ const std::string& Canvas::finish() {
 }
 
 void Canvas::save(const std::filesystem::path& path) {
-    io::write_text_file_atomically(path, finish());
+    io::write_output_file(path, finish());
 }
 
 Rect page_area(const Canvas& canvas) noexcept {

@@ -173,7 +173,7 @@ public:
     /// Ends drawing and returns the file's bytes (SVG text or PNG). Idempotent; drawing after
     /// it is a programming error.
     const std::string& finish();
-    /// finish(), then writes the bytes to `path` atomically (irid::io::AtomicFile). Throws
+    /// finish(), then writes the bytes to `path` (irid::io::OutputFile: whole or not at all). Throws
     /// irid::Error naming the path when writing fails.
     void save(const std::filesystem::path& path);
 

@@ -2,6 +2,7 @@
 #include <irid/io/image.h>
 
 #include "image_backend.h"
+#include "image_header.h"
 
 #include <dlfcn.h>
 
@@ -115,16 +116,25 @@ ImageFormat image_format_for(const fs::path& path) {
                 "'; images are written as .exr (linear float), .png, .tif or .tiff (8 or 16 bit)");
 }
 
-Image read_image(const fs::path& path) {
+Image read_image(const fs::path& path, const ImageLimits& limits) {
+    check_image_header(path, limits);
     Image image;
     std::string error;
-    if (!backend().read(path.c_str(), &image, &error)) throw Error(error);
+    if (!backend().read(path.c_str(), &limits, &image, &error)) throw Error(error);
     return image;
 }
 
-void write_image(const fs::path& path, const Image& image, const ImageEncoding& encoding) {
+void write_image(OutputFile& file, const Image& image, const ImageEncoding& encoding) {
     std::string error;
-    if (!backend().write(path.c_str(), &image, &encoding, &error)) throw Error(error);
+    if (!backend().write(&file, &image, &encoding, &error)) throw Error(error);
+}
+
+void write_image(const fs::path& path, const Image& image, const ImageEncoding& encoding) {
+    // The extension first: an unsupported one creates nothing.
+    (void)image_format_for(path);
+    OutputFile file(path);
+    write_image(file, image, encoding);
+    file.commit();
 }
 
 }  // namespace irid::io

@@ -9,18 +9,21 @@
 // table passes C++ types; errors come back as messages, never as exceptions across the boundary.
 
 #include <irid/io/image.h>
+#include <irid/io/output_file.h>
 
 #include <string>
 
 namespace irid::io {
 
 /// Bumped whenever ImageBackend, Image or ImageEncoding change layout.
-inline constexpr int image_backend_abi_version = 1;
+inline constexpr int image_backend_abi_version = 2;
 
 struct ImageBackend {
     int abi_version;
-    bool (*read)(const char* path, Image* out, std::string* error) noexcept;
-    bool (*write)(const char* path, const Image* image, const ImageEncoding* encoding,
+    bool (*read)(const char* path, const ImageLimits* limits, Image* out,
+                 std::string* error) noexcept;
+    /// Writes into an open output; the caller commits it.
+    bool (*write)(OutputFile* file, const Image* image, const ImageEncoding* encoding,
                   std::string* error) noexcept;
 };
 

@@ -1,17 +1,25 @@
 #include <irid/error.h>
-#include <irid/io/atomic_file.h>
 #include <irid/io/image.h>
+#include <irid/io/output_file.h>
 
 #include "image_backend.h"
+#include "image_header.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace irid::io {
 namespace fs = std::filesystem;
@@ -70,13 +78,43 @@ void check_image(const fs::path& path, const Image& image) {
     }
 }
 
+/// The file's declared size against the limits, before anything is allocated.
+void check_limits(const std::string& shown, const OIIO::ImageSpec& spec, const ImageLimits& limits) {
+    const long long w = spec.width, h = spec.height, c = spec.nchannels;
+    if (w < 1 || h < 1 || c < 1) throw Error(shown + ": the image is empty");
+    if (c > limits.max_channels) {
+        throw Error(shown + ": the image declares " + std::to_string(c) + " channels; irid reads at most " +
+                    std::to_string(limits.max_channels));
+    }
+    check_declared_pixels(shown, static_cast<std::uint64_t>(w), static_cast<std::uint64_t>(h),
+                          limits);
+    if (w * h > limits.max_samples / c) {
+        throw Error(shown + ": the image declares " +
+                    declared_size_text(static_cast<std::uint64_t>(w), static_cast<std::uint64_t>(h)) +
+                    " of " +
+                    std::to_string(c) + " channels; irid reads at most " +
+                    std::to_string(limits.max_samples) + " samples");
+    }
+}
+
 }  // namespace
 
-Image oiio_read(const fs::path& path) {
+Image oiio_read(const fs::path& path, const ImageLimits& limits) {
     const std::string shown = path.string();
-    std::error_code ec;
-    if (!fs::exists(path, ec)) throw Error(shown + ": no such file");
-    if (fs::is_directory(path, ec)) throw Error(shown + ": is a directory, not an image");
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        throw Error(shown + (errno == ENOENT ? std::string(": no such file")
+                                             : ": cannot read: " + std::string(std::strerror(errno))));
+    }
+    if (S_ISDIR(st.st_mode)) throw Error(shown + ": is a directory, not an image");
+    if (!S_ISREG(st.st_mode)) {
+        throw Error(shown + ": is not a regular file (" +
+                    (S_ISFIFO(st.st_mode)  ? "a FIFO"
+                     : S_ISCHR(st.st_mode) ? "a character device"
+                     : S_ISBLK(st.st_mode) ? "a block device"
+                                           : "a socket") +
+                    "); images are read from regular files");
+    }
 
     // Samples exactly as stored: no premultiplication of colour by an unassociated alpha (PNG,
     // some TIFFs), so that colour and alpha pass through unchanged.
@@ -90,9 +128,7 @@ Image oiio_read(const fs::path& path) {
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.deep) throw Error(shown + ": deep images are not supported");
     if (spec.depth > 1) throw Error(shown + ": volume images are not supported");
-    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) {
-        throw Error(shown + ": the image is empty");
-    }
+    check_limits(shown, spec, limits);
 
     Image image;
     image.width = spec.width;
@@ -113,16 +149,109 @@ Image oiio_read(const fs::path& path) {
     image.stored_bits =
         spec.get_int_attribute("oiio:BitsPerSample", static_cast<int>(spec.format.size() * 8));
 
-    image.pixels.resize(image.pixel_count() * static_cast<std::size_t>(image.channels));
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeFloat, image.pixels.data())) {
-        throw Error(shown + ": cannot read the pixels: " +
-                    message_or(in->geterror(), "the file is damaged or truncated"));
+    // In strips of about 16 MiB (whole rows of tiles for a tiled file), the buffer growing as
+    // the data arrive: a header may declare far more pixels than the file holds, and a file cut
+    // short then costs what it holds, not what it claims.
+    const auto row_samples = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.nchannels);
+    const int unit = spec.tile_width > 0 ? std::max(1, spec.tile_height) : 1;
+    const int strip = std::max(unit, static_cast<int>((std::size_t{4} << 20) / row_samples) / unit * unit);
+    const int z_end = spec.z + std::max(1, spec.depth);
+    for (int row = 0; row < spec.height; row += strip) {
+        const int rows = std::min(strip, spec.height - row);
+        const std::size_t done = image.pixels.size();
+        image.pixels.resize(done + static_cast<std::size_t>(rows) * row_samples);
+        float* out = image.pixels.data() + done;
+        const bool ok =
+            spec.tile_width > 0
+                ? in->read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + row,
+                                 spec.y + row + rows, spec.z, z_end, 0, spec.nchannels,
+                                 OIIO::TypeFloat, out)
+                : in->read_scanlines(0, 0, spec.y + row, spec.y + row + rows, spec.z, 0,
+                                     spec.nchannels, OIIO::TypeFloat, out);
+        if (!ok) {
+            throw Error(shown + ": cannot read the pixels: " +
+                        message_or(in->geterror(), "the file is damaged or truncated"));
+        }
     }
     in->close();
     return image;
 }
 
-void oiio_write(const fs::path& path, const Image& image, const ImageEncoding& encoding) {
+namespace {
+
+/// OpenImageIO writes through this proxy into irid's OutputFile, so that every byte goes through
+/// one writer that checks every write (OpenImageIO 2.4's PNG writer ignores failed writes and
+/// reports success on a full disk). A seekable output (a temporary file) is written in place; a
+/// stream (a device, a FIFO, standard output) cannot go back to fill in an index, so the file is
+/// assembled in memory and written out when OpenImageIO is done.
+class OutputProxy final : public OIIO::Filesystem::IOProxy {
+public:
+    explicit OutputProxy(OutputFile& file)
+        : IOProxy(file.target().string(), IOProxy::Write), m_file(file) {}
+
+    const char* proxytype() const override { return "irid-output"; }
+    void close() override { m_mode = Closed; }
+    bool seek(int64_t offset) override {
+        if (offset < 0) return false;
+        m_pos = offset;
+        return true;
+    }
+    size_t write(const void* buf, size_t size) override {
+        const size_t n = pwrite(buf, size, m_pos);
+        m_pos += static_cast<int64_t>(n);
+        return n;
+    }
+    size_t pwrite(const void* buf, size_t size, int64_t offset) override {
+        if (!m_failure.empty() || offset < 0) return 0;
+        const auto at = static_cast<std::size_t>(offset);
+        try {
+            if (m_file.seekable()) {
+                m_file.write_at(buf, size, at);
+            } else {
+                if (m_memory.size() < at + size) m_memory.resize(at + size);
+                std::memcpy(m_memory.data() + at, buf, size);
+            }
+        } catch (const std::exception& e) {
+            m_failure = e.what();
+            return 0;
+        }
+        m_size = std::max(m_size, at + size);
+        return size;
+    }
+    size_t read(void* buf, size_t size) override {
+        const size_t n = pread(buf, size, m_pos);
+        m_pos += static_cast<int64_t>(n);
+        return n;
+    }
+    size_t pread(void* buf, size_t size, int64_t offset) override {
+        if (offset < 0) return 0;
+        const auto at = static_cast<std::size_t>(offset);
+        if (m_file.seekable()) return m_file.read_at(buf, size, at);
+        if (at >= m_memory.size()) return 0;
+        const std::size_t n = std::min(size, m_memory.size() - at);
+        std::memcpy(buf, m_memory.data() + at, n);
+        return n;
+    }
+    size_t size() const override { return m_size; }
+
+    /// For a stream: writes what was assembled. Throws irid::Error on failure.
+    void finish() {
+        if (!m_failure.empty()) throw Error(m_failure);
+        if (!m_file.seekable()) m_file.write(m_memory.data(), m_memory.size());
+    }
+    [[nodiscard]] const std::string& failure() const noexcept { return m_failure; }
+
+private:
+    OutputFile& m_file;
+    std::vector<char> m_memory;
+    std::size_t m_size = 0;
+    std::string m_failure;
+};
+
+}  // namespace
+
+void oiio_write(OutputFile& file, const Image& image, const ImageEncoding& encoding) {
+    const fs::path& path = file.target();
     const std::string shown = path.string();
     const ImageFormat format = image_format_for(path);
     if (is_integer_format(format) && encoding.bits != 8 && encoding.bits != 16) {
@@ -131,7 +260,6 @@ void oiio_write(const fs::path& path, const Image& image, const ImageEncoding& e
     }
     check_image(path, image);
 
-    AtomicFile file(path);
     const char* format_name = format == ImageFormat::exr   ? "openexr"
                               : format == ImageFormat::png ? "png"
                                                            : "tiff";
@@ -157,17 +285,24 @@ void oiio_write(const fs::path& path, const Image& image, const ImageEncoding& e
     // Colour and alpha are written as given (no division of colour by alpha for PNG).
     spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!image.color_space.empty()) {
-        spec.attribute("oiio:ColorSpace", image.color_space);      // PNG keeps it (a text chunk)
+        // PNG keeps it (a text chunk). Not given to TIFF: OpenImageIO 2.4 turns it into an Exif
+        // directory, which its TIFF writer links wrongly when writing through an IOProxy (the
+        // file's first directory pointer ends up at the Exif one, losing the image).
+        if (format != ImageFormat::tiff) spec.attribute("oiio:ColorSpace", image.color_space);
         spec.attribute(color_space_attribute, image.color_space);  // EXR keeps it
     }
     if (!image.description.empty()) spec.attribute("ImageDescription", image.description);
     if (!encoding.compression.empty()) spec.attribute("compression", encoding.compression);
 
-    const std::string temporary = file.temporary_path().string();
-    if (!out->open(temporary, spec)) {
-        throw Error(shown + ": cannot write: " +
-                    message_or(out->geterror(), "cannot create the file in its folder"));
-    }
+    OutputProxy proxy(file);
+    OIIO::Filesystem::IOProxy* proxy_pointer = &proxy;
+    spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy_pointer);
+    const auto failed = [&](const char* what, const char* fallback) {
+        // irid's own record of a failed write names the file and the system's reason.
+        if (!proxy.failure().empty()) return Error(proxy.failure());
+        return Error(shown + ": " + what + ": " + message_or(out->geterror(), fallback));
+    };
+    if (!out->open(shown, spec)) throw failed("cannot write", "OpenImageIO refused the image");
     bool ok = false;
     if (format == ImageFormat::exr) {
         ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
@@ -179,19 +314,17 @@ void oiio_write(const fs::path& path, const Image& image, const ImageEncoding& e
         ok = out->write_image(OIIO::TypeDesc::UINT16, samples.data());
     }
     const bool closed = out->close();
-    if (!ok || !closed) {
-        throw Error(shown +
-                    ": writing failed: " + message_or(out->geterror(), "the disk may be full"));
-    }
+    if (!ok || !closed) throw failed("writing failed", "OpenImageIO reported no reason");
     out.reset();
-    file.commit();
+    proxy.finish();
 }
 
 namespace {
 
-bool backend_read(const char* path, Image* out, std::string* error) noexcept {
+bool backend_read(const char* path, const ImageLimits* limits, Image* out,
+                  std::string* error) noexcept {
     try {
-        *out = oiio_read(path);
+        *out = oiio_read(path, *limits);
         return true;
     } catch (const std::exception& e) {
         *error = e.what();
@@ -201,15 +334,15 @@ bool backend_read(const char* path, Image* out, std::string* error) noexcept {
     return false;
 }
 
-bool backend_write(const char* path, const Image* image, const ImageEncoding* encoding,
+bool backend_write(OutputFile* file, const Image* image, const ImageEncoding* encoding,
                    std::string* error) noexcept {
     try {
-        oiio_write(path, *image, *encoding);
+        oiio_write(*file, *image, *encoding);
         return true;
     } catch (const std::exception& e) {
         *error = e.what();
     } catch (...) {
-        *error = std::string(path) + ": writing failed";
+        *error = file->target().string() + ": writing failed";
     }
     return false;
 }

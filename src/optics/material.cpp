@@ -2,13 +2,14 @@
 #include <irid/color/spectrum.h>
 #include <irid/error.h>
 #include <irid/optics/material.h>
+#include <irid/text_input.h>
 
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <functional>
 #include <optional>
 #include <system_error>
@@ -319,12 +320,15 @@ Material Material::tabulated(std::string name, std::vector<IndexSample> samples)
 
 Material Material::read_csv(std::istream& in, std::string_view source, std::string name) {
     const NumericTable table = read_numeric_table(in, source, 3);
-    if (table.rows.empty()) {
+    if (table.empty()) {
         throw Error(std::string(source) + ": no data; expected lines wavelength_nm,n,k");
     }
     std::vector<IndexSample> samples;
-    samples.reserve(table.rows.size());
-    for (const std::vector<double>& row : table.rows) samples.push_back({row[0], row[1], row[2]});
+    samples.reserve(table.rows());
+    for (std::size_t r = 0; r < table.rows(); ++r) {
+        const std::span<const double> row = table.row(r);
+        samples.push_back({row[0], row[1], row[2]});
+    }
     check_samples(samples, [&](std::size_t i) {
         return std::string(source) + ":" + std::to_string(table.line_numbers[i]);
     });
@@ -332,8 +336,8 @@ Material Material::read_csv(std::istream& in, std::string_view source, std::stri
 }
 
 Material Material::read_csv(const std::string& path, std::string name) {
-    std::ifstream in(path);
-    if (!in) throw Error(path + ": cannot open the file");
+    std::istringstream in(read_text_file(path, "material table (wavelength_nm,n,k)",
+                                         StreamInput::accept));
     if (name.empty()) name = std::filesystem::path(path).stem().string();
     return read_csv(in, path, std::move(name));
 }

@@ -13,11 +13,12 @@ namespace {
 
 TEST(Ciede2000, ReproducesAllSharmaWuDalalPairs) {
     const NumericTable t = test::read_data_table("sharma2005_ciede2000_pairs.csv");
-    ASSERT_EQ(t.rows.size(), 34u);
-    for (const auto& r : t.rows) {
+    ASSERT_EQ(t.rows(), 34u);
+    for (std::size_t i = 0; i < t.rows(); ++i) {
+        const std::span<const double> r = t.row(i);
         const Lab a{r[0], r[1], r[2]};
         const Lab b{r[3], r[4], r[5]};
-        EXPECT_NEAR(delta_e_2000(a, b), r[6], 1e-4) << "line " << &r - &t.rows[0] + 2;
+        EXPECT_NEAR(delta_e_2000(a, b), r[6], 1e-4) << "line " << t.line_numbers[i];
         // The formula is symmetric.
         EXPECT_NEAR(delta_e_2000(b, a), r[6], 1e-4);
     }

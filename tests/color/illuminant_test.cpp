@@ -17,7 +17,8 @@ namespace {
 void expect_matches_table(const DenseSpectrum& s, const char* file, double abs_tol, double rel_tol) {
     const NumericTable t = test::read_data_table(file);
     int compared = 0;
-    for (const auto& row : t.rows) {
+    for (std::size_t i = 0; i < t.rows(); ++i) {
+        const std::span<const double> row = t.row(i);
         if (row[0] < lambda_min_nm || row[0] > lambda_max_nm) continue;
         const double v = s(row[0]);
         EXPECT_NEAR(v, row[1], abs_tol + rel_tol * std::abs(row[1])) << file << " at " << row[0];

@@ -8,6 +8,9 @@
 
 #include <charconv>
 #include <sstream>
+#include <streambuf>
+#include <string_view>
+#include <vector>
 
 namespace irid {
 namespace {
@@ -30,17 +33,17 @@ TEST(NumericTable, SkipsANonNumericFirstLineAsHeader) {
     const NumericTable t = parse("X,Y,Z\n1,2,3\n4,5,6\n");
     ASSERT_TRUE(t.header.has_value());
     EXPECT_EQ(*t.header, "X,Y,Z");
-    ASSERT_EQ(t.rows.size(), 2u);
-    EXPECT_EQ(t.rows[1][2], 6.0);
+    ASSERT_EQ(t.rows(), 2u);
+    EXPECT_EQ(t.row(1)[2], 6.0);
     EXPECT_EQ(t.line_numbers[1], 3);
     EXPECT_FALSE(parse("1,2,3\n").header.has_value());
 }
 
 TEST(NumericTable, AcceptsSpacesCrlfExponentsAndBlankLines) {
     const NumericTable t = parse(" 1.5 , -2e-3,+4\r\n\n  \n7,8,9");
-    ASSERT_EQ(t.rows.size(), 2u);
-    EXPECT_EQ(t.rows[0][1], -2e-3);
-    EXPECT_EQ(t.rows[0][2], 4.0);
+    ASSERT_EQ(t.rows(), 2u);
+    EXPECT_EQ(t.row(0)[1], -2e-3);
+    EXPECT_EQ(t.row(0)[2], 4.0);
     EXPECT_EQ(t.line_numbers[1], 4);
 }
 
@@ -48,9 +51,16 @@ TEST(NumericTable, NamesTheLineAndFieldOfBadData) {
     EXPECT_EQ(error_of("X,Y,Z\n1,2,3\n1,two,3\n"), "input.csv:3: field 2 'two' is not a number");
     EXPECT_EQ(error_of("1,2,3\n1,2\n", 3), "input.csv:2: expected 3 comma-separated numbers, found 2");
     EXPECT_NE(error_of("1,2,3\n1,2\n").find("input.csv:2:"), std::string::npos);
-    // A first line with a name in it is a header, not an error; the same line later is.
-    EXPECT_EQ(error_of("1,x,3\n"), "no error");
+    // A first line is a header only when none of its fields is a number: one bad field among
+    // numbers is data, and an error (it was once dropped silently as a header).
+    EXPECT_EQ(error_of("0.1,abc,0.3\n"), "input.csv:1: field 2 'abc' is not a number");
+    EXPECT_EQ(error_of("1,x,3\n"), "input.csv:1: field 2 'x' is not a number");
+    EXPECT_EQ(error_of("R,1,B\n"), "input.csv:1: field 1 'R' is not a number");
+    EXPECT_EQ(error_of("R,G,B\n1,2,3\n"), "no error");
+    EXPECT_EQ(error_of("wavelength_nm,reflectance 1,R (%)\n400,0.5,3\n"), "no error");
     EXPECT_NE(error_of("1,2,3\n1,x,3\n").find("input.csv:2: field 2 'x'"), std::string::npos);
+    // A line of empty fields names nothing: data, and an error.
+    EXPECT_EQ(error_of(",,\n"), "input.csv:1: field 1 '' is not a number");
     // A first line of number-like fields is data, so a typo there is reported, not skipped.
     EXPECT_EQ(error_of("1e400,0,0\n"), "input.csv:1: field 1 '1e400' is out of the range of a double");
     EXPECT_EQ(error_of("0x10,0,0\n"), "input.csv:1: field 1 '0x10' is not a number");
@@ -68,14 +78,60 @@ TEST(NumericTable, IgnoresAByteOrderMarkAndUnderflowsTinyNumbersToZero) {
     const NumericTable t = parse("\xEF\xBB\xBFX,Y\n1e-400,2\n");
     ASSERT_TRUE(t.header.has_value());
     EXPECT_EQ(*t.header, "X,Y");
-    ASSERT_EQ(t.rows.size(), 1u);
-    EXPECT_EQ(t.rows[0][0], 0.0);
-    EXPECT_EQ(parse("\xEF\xBB\xBF" "1,2\n").rows.size(), 1u);
+    ASSERT_EQ(t.rows(), 1u);
+    EXPECT_EQ(t.row(0)[0], 0.0);
+    EXPECT_EQ(parse("\xEF\xBB\xBF" "1,2\n").rows(), 1u);
 }
 
 TEST(NumericTable, EmptyInputHasNoRows) {
-    EXPECT_TRUE(parse("").rows.empty());
-    EXPECT_TRUE(parse("a,b\n").rows.empty());
+    EXPECT_TRUE(parse("").empty());
+    EXPECT_TRUE(parse("a,b\n").empty());
+    EXPECT_TRUE(read_numeric_table(std::string_view("\n\n"), "text").empty());
+}
+
+TEST(NumericTable, RowsAreStoredFlatWithTheirColumnCount) {
+    const NumericTable t = read_numeric_table(std::string_view("1,2\n3,4\n5,6\n"), "text");
+    EXPECT_EQ(t.columns, 2u);
+    EXPECT_EQ(t.values, (std::vector<double>{1, 2, 3, 4, 5, 6}));
+    EXPECT_EQ(t.row(2)[1], 6.0);
+    EXPECT_EQ(t.line_numbers, (std::vector<int>{1, 2, 3}));
+}
+
+TEST(NumericTable, UntrustedBytesAreQuotedShortAndEscaped) {
+    // A terminal escape sequence in a field is shown escaped, never sent to the terminal.
+    EXPECT_EQ(error_of("1,\x1b[31mred,3\n"), "input.csv:1: field 2 '\\x1b[31mred' is not a number");
+    // A 10 MB field is shown by its first 40 characters.
+    const std::string message = error_of("1," + std::string(10'000'000, 'z') + ",3\n");
+    EXPECT_EQ(message, "input.csv:1: field 2 '" + std::string(40, 'z') + "...' is not a number");
+    // NUL bytes (from /dev/zero) too.
+    EXPECT_EQ(error_of(std::string("1,\0\0,3\n", 8)), "input.csv:1: field 2 '\\x00\\x00' is not a number");
+}
+
+TEST(NumericTable, MoreThanTheLimitIsRefusedWithoutGrowingWithoutBound) {
+    // Just above max_table_values numbers: one short line repeated.
+    std::string text;
+    const std::size_t lines = max_table_values / 4 + 1;
+    text.reserve(lines * 8);
+    for (std::size_t i = 0; i < lines; ++i) text += "1,2,3,4\n";
+    const std::string message = [&] {
+        try {
+            (void)read_numeric_table(std::string_view(text), "big.csv");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    }();
+    EXPECT_EQ(message.rfind("big.csv: more than 33554432 numbers", 0), 0u) << message;
+    // A stream beyond max_text_input_bytes stops at the limit instead of reading on.
+    struct Endless : std::streambuf {
+        int_type underflow() override {
+            setg(m_zeros, m_zeros, m_zeros + sizeof m_zeros);
+            return 0;
+        }
+        char m_zeros[1 << 16]{};
+    } zeros;
+    std::istream endless(&zeros);
+    EXPECT_THROW((void)read_numeric_table(endless, "<zeros>"), Error);
 }
 
 TEST(FormatShortest, RoundTripsWithTheFewestDigits) {

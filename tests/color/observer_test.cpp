@@ -19,12 +19,12 @@ TEST(ColorMatchingFunctions, AreTheCieTablesDigitForDigit) {
           std::pair{"cie1964_10deg_xyz_cmf.csv", Observer::cie1964_10deg}}) {
         const NumericTable t = test::read_data_table(file);
         const ColorMatchingFunctions& cmf = color_matching_functions(observer);
-        ASSERT_EQ(t.rows.size(), static_cast<std::size_t>(dense_sample_count));
+        ASSERT_EQ(t.rows(), static_cast<std::size_t>(dense_sample_count));
         for (int i = 0; i < dense_sample_count; ++i) {
-            ASSERT_EQ(t.rows[i][0], DenseSpectrum::wavelength_nm(i));
-            EXPECT_EQ(cmf.x[i], t.rows[i][1]);
-            EXPECT_EQ(cmf.y[i], t.rows[i][2]);
-            EXPECT_EQ(cmf.z[i], t.rows[i][3]);
+            ASSERT_EQ(t.row(i)[0], DenseSpectrum::wavelength_nm(i));
+            EXPECT_EQ(cmf.x[i], t.row(i)[1]);
+            EXPECT_EQ(cmf.y[i], t.row(i)[2]);
+            EXPECT_EQ(cmf.z[i], t.row(i)[3]);
         }
     }
 }

@@ -1,6 +1,6 @@
-// irid_io: images through OpenImageIO and atomic file writes.
+// irid_io: images through OpenImageIO (output files: output_file_test.cpp).
 #include <irid/error.h>
-#include <irid/io/atomic_file.h>
+#include <irid/io/output_file.h>
 #include <irid/io/image.h>
 
 #include <OpenImageIO/imageio.h>
@@ -250,7 +250,7 @@ TEST_F(ImageIo, MissingOrUnwritableFolderIsAnErrorAndLeavesNothing) {
         fs::create_directory(locked);
         fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
         EXPECT_THROW(write_image(locked / "out.tif", image), Error);
-        EXPECT_THROW(write_text_file_atomically(locked / "out.csv", "1,2,3\n"), Error);
+        EXPECT_THROW(write_output_file(locked / "out.csv", "1,2,3\n"), Error);
         fs::permissions(locked, fs::perms::owner_all);
         EXPECT_TRUE(fs::is_empty(locked));
     }
@@ -299,7 +299,7 @@ TEST_F(ImageIo, NoTemporaryFileIsLeftOnSuccessOrFailure) {
     write_image(m_dir / "a.exr", ramp(3, 3, 3));
     write_image(m_dir / "b.png", ramp(3, 3, 4));
     write_image(m_dir / "c.tiff", ramp(3, 3, 1), {.bits = 16, .compression = {}});
-    write_text_file_atomically(m_dir / "d.csv", "R,G,B\n1,0,0\n");
+    write_output_file(m_dir / "d.csv", "R,G,B\n1,0,0\n");
     EXPECT_THROW(write_image(m_dir / "e.png", ramp(3, 3, 5)), Error);  // fails inside OIIO
     std::vector<std::string> names = files();
     std::sort(names.begin(), names.end());
@@ -308,7 +308,7 @@ TEST_F(ImageIo, NoTemporaryFileIsLeftOnSuccessOrFailure) {
 }
 
 TEST_F(ImageIo, AFailedWriteKeepsTheExistingFile) {
-    write_text_file_atomically(m_dir / "keep.png", "old");
+    write_output_file(m_dir / "keep.png", "old");
     EXPECT_THROW(write_image(m_dir / "keep.png", ramp(2, 2, 7)), Error);
     EXPECT_EQ(slurp(m_dir / "keep.png"), "old");
     // A successful write replaces it whole.
@@ -317,43 +317,16 @@ TEST_F(ImageIo, AFailedWriteKeepsTheExistingFile) {
     EXPECT_EQ(files(), std::vector<std::string>{"keep.png"});
 }
 
-TEST_F(ImageIo, AtomicFileIsRemovedUnlessCommitted) {
-    fs::path temporary;
-    {
-        AtomicFile file(m_dir / "x.txt");
-        temporary = file.temporary_path();
-        EXPECT_EQ(temporary.parent_path(), m_dir);  // same folder: rename is atomic
-        std::ofstream(temporary) << "partial";
-        EXPECT_FALSE(fs::exists(m_dir / "x.txt"));  // not visible before commit
-    }
-    EXPECT_FALSE(fs::exists(temporary));
-    EXPECT_TRUE(files().empty());
-    {
-        AtomicFile file(m_dir / "y.txt");
-        std::ofstream(file.temporary_path()) << "whole";
-        file.commit();
-    }
-    EXPECT_EQ(slurp(m_dir / "y.txt"), "whole");
-    // Committing without having written anything is an error, and leaves nothing.
-    AtomicFile empty(m_dir / "z.txt");
-    EXPECT_THROW(empty.commit(), Error);
-    EXPECT_EQ(files(), std::vector<std::string>{"y.txt"});
-    // Two atomic files for the same target never share a temporary name.
-    AtomicFile a(m_dir / "t.txt");
-    AtomicFile b(m_dir / "t.txt");
-    EXPECT_NE(a.temporary_path(), b.temporary_path());
-}
-
 TEST_F(ImageIo, TextFileErrorsNameThePath) {
     try {
-        write_text_file_atomically(m_dir / "missing" / "out.csv", "x");
+        write_output_file(m_dir / "missing" / "out.csv", "x");
         ADD_FAILURE() << "accepted";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("out.csv"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(write_text_file_atomically(m_dir, "x"), Error);
-    EXPECT_THROW(write_text_file_atomically("/proc/irid-io-test.csv", "x"), Error);
-    write_text_file_atomically(m_dir / "empty.csv", "");
+    EXPECT_THROW(write_output_file(m_dir, "x"), Error);
+    EXPECT_THROW(write_output_file("/proc/irid-io-test.csv", "x"), Error);
+    write_output_file(m_dir / "empty.csv", "");
     EXPECT_EQ(slurp(m_dir / "empty.csv"), "");
     EXPECT_EQ(files(), std::vector<std::string>{"empty.csv"});
 }

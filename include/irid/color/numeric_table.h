@@ -1,7 +1,9 @@
 #pragma once
 
 #include <istream>
+#include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -10,20 +12,39 @@ namespace irid {
 
 /// A table of finite numbers read from CSV text: the shape every irid command reads.
 struct NumericTable {
-    /// The first line, when it is not numeric.
+    /// The first line, when it is a header (none of its fields is a number).
     std::optional<std::string> header;
-    std::vector<std::vector<double>> rows;
+    /// Numbers per row; every row has as many.
+    std::size_t columns = 0;
+    /// The numbers row by row: row r is values[r × columns, (r + 1) × columns).
+    std::vector<double> values;
     /// 1-based line number of each row in the source, for messages.
     std::vector<int> line_numbers;
+
+    [[nodiscard]] std::size_t rows() const noexcept { return line_numbers.size(); }
+    [[nodiscard]] bool empty() const noexcept { return line_numbers.empty(); }
+    [[nodiscard]] std::span<const double> row(std::size_t r) const noexcept {
+        return {values.data() + r * columns, columns};
+    }
 };
 
-/// Reads comma-separated numbers. A first line that is not numeric is a header, unless every
-/// field of it is empty or begins like a number (a sign, point or digit: "1e400,0,0",
-/// "0x1,2,3", "1,,0"), which is mistyped data and an error rather than silently skipped; a
-/// UTF-8 byte-order mark is ignored; blank lines are skipped; numbers too small for a double
-/// become 0 (or subnormal), too large ones are errors; every other line must hold `columns` finite numbers (any count ≥ min_columns, the
-/// same on every line, when columns is 0). Spaces around fields and a final CR are ignored.
-/// Throws irid::Error "<source>:<line>: <what was wrong>" on the first bad line.
+/// The most numbers one table holds: 2^25 (256 MiB of doubles; 11 million colours). Larger
+/// batches belong in an image or, from Python, an array.
+inline constexpr std::size_t max_table_values = std::size_t{1} << 25;
+
+/// Reads comma-separated numbers. The first line is a header when none of its fields is a
+/// number (and one is not empty): "R,G,B" is a header, "0.1,abc,0.3" is data with a bad field,
+/// and so an error. A UTF-8 byte-order mark is ignored; blank lines are skipped; numbers too small
+/// for a double become 0 (or subnormal), too large ones are errors; every other line must hold
+/// `columns` finite numbers (any count >= min_columns, the same on every line, when columns is
+/// 0). Spaces around fields and a final CR are ignored. Throws irid::Error
+/// "<source>:<line>: <what was wrong>" on the first bad line, quoting at most 40 characters of the
+/// field with control characters escaped, and "<source>: ..." when the table would hold more than
+/// max_table_values numbers.
+[[nodiscard]] NumericTable read_numeric_table(std::string_view text, std::string_view source,
+                                              int columns = 0, int min_columns = 1);
+/// The same from a stream, read to its end (at most max_text_input_bytes, irid/text_input.h);
+/// throws irid::Error "<source>: read error" when the stream fails.
 [[nodiscard]] NumericTable read_numeric_table(std::istream& in, std::string_view source,
                                               int columns = 0, int min_columns = 1);
 

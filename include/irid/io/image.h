@@ -2,7 +2,9 @@
 
 // Images through OpenImageIO: read anything OpenImageIO reads (EXR, TIFF, PNG, HDR, JPEG, ...)
 // into float pixels, write EXR (linear, 32-bit float) or PNG/TIFF (encoded, 8 or 16 bit).
-// Output files appear only when complete (irid/io/atomic_file.h).
+// Output files appear only when complete, and never replace what is not a regular file
+// (irid/io/output_file.h). Inputs are checked against stated limits before any pixel is
+// allocated (ImageLimits).
 //
 // Values are passed through as they are stored: irid_io converts numbers, never colours.
 // An 8- or 16-bit file (PNG, TIFF, JPEG) holds encoded values (sRGB, a gamma, ...); read_image
@@ -65,10 +67,23 @@ private:
     }
 };
 
+/// What read_image accepts, checked on the file's header before anything is allocated.
+struct ImageLimits {
+    /// Pixels (width × height of the data window): 64 Mpixel, the renderer's limit (8192², or
+    /// an 11K × 6K frame).
+    long long max_pixels = 64LL * 1024 * 1024;
+    /// Samples (pixels × channels): 2^28, 1 GiB of float samples.
+    long long max_samples = 1LL << 28;
+    /// Channels of one image.
+    int max_channels = 64;
+};
+
 /// Reads the first subimage of any file OpenImageIO reads, converted to float (integers scaled
-/// to [0, 1], still encoded: see above). Throws irid::Error naming the file when it does not
-/// exist or cannot be read (unknown format, truncated, a deep or volume image).
-[[nodiscard]] Image read_image(const std::filesystem::path& path);
+/// to [0, 1], still encoded: see above). Only regular files are read (a FIFO or a device would
+/// block or cannot be searched). Throws irid::Error naming the file when it does not exist, is
+/// not a regular file, cannot be read (unknown format, truncated, a deep or volume image), or
+/// declares more pixels, samples or channels than `limits` allow (the message gives both).
+[[nodiscard]] Image read_image(const std::filesystem::path& path, const ImageLimits& limits = {});
 
 /// How write_image stores samples in PNG and TIFF.
 struct ImageEncoding {
@@ -97,15 +112,22 @@ enum class ImageFormat {
     return f != ImageFormat::exr;
 }
 
+class OutputFile;
+
 /// Writes `image` to `path` in the format of its extension (see ImageFormat), with its
 /// channel names, the colour space (see Image::color_space) and "ImageDescription" =
 /// image.description (each when not empty). Samples are written as they are, alpha included
 /// (colour is never divided or multiplied by alpha: PNG's alpha is marked unassociated). PNG and
 /// TIFF samples are quantised with rounding: round(v × (2^bits − 1)) after clamping v to [0, 1];
-/// NaN becomes 0. EXR stores the floats exactly. The file appears only when complete; on failure
-/// neither it nor a temporary file is left and irid::Error names the file and what was wrong
-/// (unsupported extension, bad bit depth, folder missing or not writable, OpenImageIO's message).
+/// NaN becomes 0. EXR stores the floats exactly. The file is written as an OutputFile: it appears
+/// only when complete (a device or FIFO is written straight into); on failure the destination is
+/// as it was, no temporary file is left, and irid::Error names the file and what was wrong
+/// (unsupported extension, bad bit depth, folder missing or not writable, a full disk with the
+/// system's reason, OpenImageIO's message).
 void write_image(const std::filesystem::path& path, const Image& image,
                  const ImageEncoding& encoding = {});
+/// The same into an output opened by the caller (the format from file.target()'s extension),
+/// for commands that write several files and commit them together. The caller commits.
+void write_image(OutputFile& file, const Image& image, const ImageEncoding& encoding = {});
 
 }  // namespace irid::io

@@ -1,0 +1,237 @@
+// What an image file's header declares, checked against the file itself before a decoder sees
+// it (image_header.h). libpng and OpenEXR allocate what a header declares before they read it:
+// a chunk's length, an attribute's size, the line-offset table of the data window. A file of a
+// few hundred bytes can so ask for gigabytes. These checks need only the file's bytes.
+#include "image_header.h"
+
+#include <irid/error.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace irid::io {
+namespace {
+
+/// deflate (RFC 1951) expands its input at most about 1032-fold: a 258-byte match costs at
+/// least 2 bits (zlib's FAQ, "What's the maximum compression ratio?": 1032:1).
+constexpr double deflate_max_expansion = 1032.0;
+
+/// Reads a file front to back through a buffer, and skips ahead without reading.
+class Reader {
+public:
+    Reader(int fd, std::uint64_t size) : m_fd(fd), m_size(size) {}
+    [[nodiscard]] std::uint64_t size() const noexcept { return m_size; }
+    /// `n` bytes at `offset` (n <= buffer size), or false when the file ends first.
+    bool read(std::uint64_t offset, void* out, std::size_t n) {
+        if (offset + n > m_size) return false;
+        if (offset < m_start || offset + n > m_start + m_valid) {
+            m_start = offset;
+            m_valid = 0;
+            while (m_valid < m_buffer.size() && m_start + m_valid < m_size) {
+                const ssize_t got = ::pread(m_fd, m_buffer.data() + m_valid,
+                                            m_buffer.size() - m_valid,
+                                            static_cast<off_t>(m_start + m_valid));
+                if (got < 0 && errno == EINTR) continue;
+                if (got <= 0) break;
+                m_valid += static_cast<std::size_t>(got);
+            }
+            if (offset + n > m_start + m_valid) return false;
+        }
+        std::memcpy(out, m_buffer.data() + (offset - m_start), n);
+        return true;
+    }
+
+private:
+    int m_fd;
+    std::uint64_t m_size;
+    std::uint64_t m_start = 0;
+    std::size_t m_valid = 0;
+    std::array<unsigned char, 1 << 16> m_buffer{};
+};
+
+std::uint32_t big_endian32(const unsigned char* p) noexcept {
+    return static_cast<std::uint32_t>(p[0]) << 24 | static_cast<std::uint32_t>(p[1]) << 16 |
+           static_cast<std::uint32_t>(p[2]) << 8 | static_cast<std::uint32_t>(p[3]);
+}
+
+std::uint32_t little_endian32(const unsigned char* p) noexcept {
+    return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+           static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+}
+
+std::string printable(const unsigned char* p, std::size_t n) {
+    std::string s;
+    for (std::size_t i = 0; i < n; ++i) s += (p[i] >= 0x20 && p[i] < 0x7F) ? static_cast<char>(p[i]) : '?';
+    return s;
+}
+
+[[noreturn]] void corrupt(const std::string& shown, const std::string& what) {
+    throw Error(shown + ": truncated or corrupt: " + what);
+}
+
+/// PNG (ISO/IEC 15948): every chunk must fit in the file, and the image data (IDAT) must be able
+/// to hold the pixels the header (IHDR) declares.
+void check_png(const std::string& shown, Reader& file, const ImageLimits& limits) {
+    std::uint64_t pos = 8, idat_bytes = 0;
+    std::uint64_t width = 0, height = 0;
+    unsigned depth = 0, colour_type = 0;
+    bool have_header = false;
+    unsigned char head[8];
+    while (file.read(pos, head, sizeof head)) {
+        const std::uint64_t length = big_endian32(head);
+        const std::string type = printable(head + 4, 4);
+        const std::uint64_t left = file.size() - pos - 8;  // data and CRC
+        if (length + 4 > left) {
+            corrupt(shown, "its " + type + " chunk at byte " + std::to_string(pos) + " declares " +
+                               std::to_string(length) + " bytes, and " +
+                               std::to_string(left >= 4 ? left - 4 : 0) + " remain");
+        }
+        if (type == "IHDR" && length >= 13) {
+            unsigned char ihdr[13];
+            if (!file.read(pos + 8, ihdr, sizeof ihdr)) break;
+            width = big_endian32(ihdr);
+            height = big_endian32(ihdr + 4);
+            depth = ihdr[8];
+            colour_type = ihdr[9];
+            have_header = true;
+        } else if (type == "IDAT") {
+            idat_bytes += length;
+        } else if (type == "IEND") {
+            break;
+        }
+        pos += 12 + length;
+    }
+    if (!have_header || width == 0 || height == 0) return;  // the decoder names what is wrong
+    check_declared_pixels(shown, width, height, limits);
+    // Samples per pixel by colour type: grey, -, RGB, palette, grey + alpha, -, RGBA.
+    static constexpr unsigned samples_of[] = {1, 0, 3, 1, 2, 0, 4};
+    const unsigned samples = colour_type < 7 ? samples_of[colour_type] : 0;
+    if (samples == 0 || depth == 0 || depth > 16) return;
+    // Each row: a filter byte and its samples, packed (the non-interlaced size, the smallest).
+    const double raw = static_cast<double>(height) *
+                       (1.0 + std::ceil(static_cast<double>(width) * samples * depth / 8.0));
+    if (raw > deflate_max_expansion * static_cast<double>(idat_bytes) + 1024.0) {
+        corrupt(shown, std::to_string(width) + " x " + std::to_string(height) + " pixels need " +
+                           std::to_string(static_cast<std::uint64_t>(raw)) +
+                           " bytes of image data, and its " + std::to_string(idat_bytes) +
+                           " bytes of compressed data cannot hold them (deflate expands at most "
+                           "1032-fold)");
+    }
+}
+
+/// OpenEXR (the file layout of openexr.com, "OpenEXR File Layout"): every attribute of the
+/// header(s) must fit in the file, and the first part's data window within the limits.
+void check_exr(const std::string& shown, Reader& file, const ImageLimits& limits) {
+    unsigned char version[4];
+    if (!file.read(4, version, sizeof version)) return;
+    const bool multipart = (version[1] & 0x10) != 0;  // flag bit 12
+    std::uint64_t pos = 8;
+    int part = 0;
+    bool header_empty = true;
+    // "name\0type\0" then a 4-byte size and the value; names are at most 255 bytes.
+    const auto read_string = [&](std::uint64_t from, std::string& out) -> std::uint64_t {
+        out.clear();
+        unsigned char c = 0;
+        for (std::uint64_t i = from; i < from + 256; ++i) {
+            if (!file.read(i, &c, 1)) return 0;
+            if (c == 0) return i + 1;
+            out += static_cast<char>(c);
+        }
+        return 0;
+    };
+    while (pos < file.size()) {
+        unsigned char first = 0;
+        if (!file.read(pos, &first, 1)) return;
+        if (first == 0) {  // the end of a header
+            ++pos;
+            if (!multipart || header_empty) return;
+            header_empty = true;
+            ++part;
+            continue;
+        }
+        header_empty = false;
+        std::string name, type;
+        const std::uint64_t after_name = read_string(pos, name);
+        if (after_name == 0) return;
+        const std::uint64_t after_type = read_string(after_name, type);
+        if (after_type == 0) return;
+        unsigned char size_bytes[4];
+        if (!file.read(after_type, size_bytes, 4)) return;
+        const std::uint64_t size = little_endian32(size_bytes);
+        const std::uint64_t left = file.size() - (after_type + 4);
+        if (size > left) {
+            corrupt(shown, "its header attribute '" + printable(reinterpret_cast<const unsigned char*>(name.data()), std::min<std::size_t>(name.size(), 40)) +
+                               "' declares " + std::to_string(size) + " bytes, and " +
+                               std::to_string(left) + " remain");
+        }
+        if (part == 0 && name == "dataWindow" && type == "box2i" && size == 16) {
+            unsigned char box[16];
+            if (file.read(after_type + 4, box, sizeof box)) {
+                const auto signed32 = [&](int i) {
+                    return static_cast<std::int64_t>(static_cast<std::int32_t>(little_endian32(box + i)));
+                };
+                const std::int64_t w = signed32(8) - signed32(0) + 1;
+                const std::int64_t h = signed32(12) - signed32(4) + 1;
+                if (w >= 1 && h >= 1) {
+                    check_declared_pixels(shown, static_cast<std::uint64_t>(w),
+                                          static_cast<std::uint64_t>(h), limits);
+                }
+            }
+        }
+        pos = after_type + 4 + size;
+    }
+}
+
+}  // namespace
+
+std::string declared_size_text(std::uint64_t width, std::uint64_t height) {
+    const double mpixel = static_cast<double>(width) * static_cast<double>(height) / 1e6;
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, "%llu x %llu pixels (%.1f Mpixel)",
+                  static_cast<unsigned long long>(width), static_cast<unsigned long long>(height),
+                  mpixel);
+    return buffer;
+}
+
+void check_declared_pixels(const std::string& shown, std::uint64_t width, std::uint64_t height,
+                           const ImageLimits& limits) {
+    const auto max = static_cast<std::uint64_t>(limits.max_pixels);
+    if (width > max || height > max || width * height > max) {
+        throw Error(shown + ": the image declares " + declared_size_text(width, height) +
+                    "; irid reads at most " + std::to_string(limits.max_pixels) + " pixels (" +
+                    std::to_string(limits.max_pixels >> 20) + " Mpixel)");
+    }
+}
+
+void check_image_header(const std::filesystem::path& path, const ImageLimits& limits) {
+    const std::string shown = path.string();
+    int fd = -1;
+    do {
+        fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+    } while (fd < 0 && errno == EINTR);
+    if (fd < 0) return;  // the decoder reports it, with the path
+    struct Closer {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer{fd};
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) return;
+    Reader file(fd, static_cast<std::uint64_t>(st.st_size));
+    unsigned char magic[8];
+    if (!file.read(0, magic, sizeof magic)) return;
+    if (std::memcmp(magic, "\x89PNG\r\n\x1a\n", 8) == 0) check_png(shown, file, limits);
+    if (std::memcmp(magic, "\x76\x2f\x31\x01", 4) == 0) check_exr(shown, file, limits);
+}
+
+}  // namespace irid::io
