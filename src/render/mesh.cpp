@@ -4,6 +4,7 @@
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
 #include <irid/render/geometry.h>
+#include <irid/text_input.h>
 
 #include <algorithm>
 #include <array>
@@ -11,7 +12,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -229,8 +229,11 @@ struct Builder {
     }
 
     static int bin_of(double c, double lo, double scale) noexcept {
-        const int b = static_cast<int>((c - lo) * scale);
-        return std::clamp(b, 0, sah_bins - 1);
+        // Compared as a double first: a NaN or a value beyond int must not reach the cast.
+        const double x = (c - lo) * scale;
+        if (!(x > 0.0)) return 0;
+        if (!(x < sah_bins - 1.0)) return sah_bins - 1;
+        return static_cast<int>(x);
     }
 
     struct SahSplit {
@@ -298,7 +301,7 @@ public:
         double value = 0.0;
         const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
         if (ec != std::errc() || end != token.data() + token.size() || !std::isfinite(value)) {
-            fail("'" + std::string(token) + "' is not a finite number; " + usage);
+            fail(quote_untrusted(token, 24) + " is not a finite number; " + usage);
         }
         return value;
     }
@@ -308,8 +311,8 @@ public:
         long long value = 0;
         const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
         if (ec != std::errc() || end != token.data() + token.size()) {
-            fail(std::string(what) + " index '" + std::string(token) +
-                 "' is not an integer; a face vertex is i, i/t, i//n or i/t/n with 1-based "
+            fail(std::string(what) + " index " + quote_untrusted(token, 24) +
+                 " is not an integer; a face vertex is i, i/t, i//n or i/t/n with 1-based "
                  "indices, negative ones counting back from the last defined");
         }
         const auto n = static_cast<long long>(count);
@@ -381,8 +384,11 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> positions, std::vector<std::array<i
     }
     const std::size_t n = m_positions.size();
     for (std::size_t i = 0; i < n; ++i) {
-        if (!is_finite(m_positions[i])) {
-            throw Error("TriangleMesh: positions[" + count_text(i) + "] must be finite");
+        const Vec3 p = m_positions[i];
+        if (!is_finite(p) || std::abs(p.x) > max_coordinate || std::abs(p.y) > max_coordinate ||
+            std::abs(p.z) > max_coordinate) {
+            throw Error("TriangleMesh: positions[" + count_text(i) +
+                        "] must be finite and within +-1e150 on each axis");
         }
     }
     for (std::size_t i = 0; i < m_triangles.size(); ++i) {
@@ -426,18 +432,36 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> positions, std::vector<std::array<i
     build_bvh();
 }
 
+bool TriangleMesh::has_area(std::size_t triangle) const noexcept {
+    const auto& tri = m_triangles[triangle];
+    const Vec3 p0 = m_positions[static_cast<std::size_t>(tri[0])];
+    const Vec3 n = cross(m_positions[static_cast<std::size_t>(tri[1])] - p0,
+                         m_positions[static_cast<std::size_t>(tri[2])] - p0);
+    return n.x != 0.0 || n.y != 0.0 || n.z != 0.0;
+}
+
 void TriangleMesh::build_bvh() {
-    const std::size_t count = m_triangles.size();
-    std::vector<Aabb> boxes(count);
-    std::vector<Vec3> centroids(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        Aabb b;
-        for (const int v : m_triangles[i]) b.expand(m_positions[static_cast<std::size_t>(v)]);
-        boxes[i] = b;
-        centroids[i] = b.centroid();
+    // Only triangles with an area go into the BVH: one of zero area has no normal to shade with.
+    std::vector<std::int32_t> ids;
+    ids.reserve(m_triangles.size());
+    for (std::size_t i = 0; i < m_triangles.size(); ++i) {
+        if (has_area(i)) ids.push_back(static_cast<std::int32_t>(i));
     }
-    std::vector<std::int32_t> ids(count);
-    for (std::size_t i = 0; i < count; ++i) ids[i] = static_cast<std::int32_t>(i);
+    if (ids.empty()) {
+        throw Error("TriangleMesh: every one of the " + count_text(m_triangles.size()) +
+                    " triangles has zero area (its vertices lie on a line); a mesh needs one "
+                    "with an area");
+    }
+    const std::size_t count = ids.size();
+    std::vector<Aabb> boxes(m_triangles.size());
+    std::vector<Vec3> centroids(m_triangles.size());
+    for (const std::int32_t id : ids) {
+        Aabb b;
+        for (const int v : m_triangles[static_cast<std::size_t>(id)])
+            b.expand(m_positions[static_cast<std::size_t>(v)]);
+        boxes[static_cast<std::size_t>(id)] = b;
+        centroids[static_cast<std::size_t>(id)] = b.centroid();
+    }
     m_nodes.clear();
     m_nodes.reserve(2 * count - 1);  // a binary tree with count leaves at most
     Builder builder{boxes, centroids, ids, m_nodes};
@@ -497,7 +521,10 @@ bool TriangleMesh::intersect(const Ray& ray, double t_min, double t_max,
     std::int32_t current = 0;
     while (true) {
         const BvhNode& node = m_nodes[static_cast<std::size_t>(current)];
-        if (hit_box(node.bounds, r, t_min, best_t)) {
+        // The box's entry distance carries its own rounding: a box flat along the ray's axis
+        // can enter a few ulps beyond the very hit it holds, so the cull allows for it (the
+        // exact comparison of t below keeps the answer exact).
+        if (hit_box(node.bounds, r, t_min, best_t > 0.0 ? best_t * slab_exit_factor : best_t)) {
             if (node.count > 0) {
                 for (std::int32_t i = node.offset; i < node.offset + node.count; ++i) {
                     const TriangleVertices& tri = m_bvh_vertices[static_cast<std::size_t>(i)];
@@ -535,7 +562,8 @@ bool TriangleMesh::occluded(const Ray& ray, double t_min, double t_max) const no
     std::int32_t current = 0;
     while (true) {
         const BvhNode& node = m_nodes[static_cast<std::size_t>(current)];
-        if (hit_box(node.bounds, r, t_min, t_max)) {
+        // Widened as in intersect: a hit just short of t_max may sit in a box entered beyond it.
+        if (hit_box(node.bounds, r, t_min, t_max > 0.0 ? t_max * slab_exit_factor : t_max)) {
             if (node.count > 0) {
                 for (std::int32_t i = node.offset; i < node.offset + node.count; ++i) {
                     const TriangleVertices& tri = m_bvh_vertices[static_cast<std::size_t>(i)];
@@ -564,6 +592,7 @@ bool TriangleMesh::intersect_brute_force(const Ray& ray, double t_min, double t_
     double best_t = t_max, best_b1 = 0.0, best_b2 = 0.0;
     int best_id = -1;
     for (std::size_t i = 0; i < m_triangles.size(); ++i) {
+        if (!has_area(i)) continue;  // as in the BVH
         const auto& tri = m_triangles[i];
         double t, b1, b2;
         if (hit_triangle(r, m_positions[static_cast<std::size_t>(tri[0])],
@@ -659,17 +688,10 @@ TriangleMesh TriangleMesh::read_obj(const std::filesystem::path& file, std::size
     // `v`, `vt` and `vn` lines each: three per triangle.
     const std::size_t max_obj_vertices = 3 * max_obj_triangles;
     const std::string name = file.string();
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec)) {
-        throw Error(name + ": is a directory; expected a Wavefront OBJ file");
-    }
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        const std::string reason = std::filesystem::exists(file, ec)
-                                       ? "cannot be opened for reading (permission?)"
-                                       : "does not exist";
-        throw Error(name + ": " + reason + "; expected a readable Wavefront OBJ file");
-    }
+    // A regular file only: a mesh path comes from a scene file, and a FIFO there would block.
+    const std::string text = read_text_file(file, "Wavefront OBJ mesh");
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+        throw Error(name + ": the file is empty; expected a Wavefront OBJ mesh with at least one face");
 
     ObjReader reader(name);
     std::vector<Vec3> obj_positions, obj_normals;
@@ -686,19 +708,29 @@ TriangleMesh TriangleMesh::read_obj(const std::filesystem::path& file, std::size
     static constexpr const char* vn_usage = "'vn' takes x y z (3 numbers, not all 0)";
     static constexpr const char* vt_usage = "'vt' takes u, optionally v and w (1 to 3 numbers)";
 
-    std::string line, continued;
+    std::string line;
     int line_number = 0;
-    while (std::getline(in, line)) {
+    std::size_t next = 0;
+    // The next physical line of the text, without its line break (false at the end).
+    const auto next_line = [&](std::string_view& out) {
+        if (next >= text.size()) return false;
+        std::size_t end = text.find('\n', next);
+        if (end == std::string::npos) end = text.size();
+        out = std::string_view(text).substr(next, end - next);
+        if (!out.empty() && out.back() == '\r') out.remove_suffix(1);
+        next = end + 1;
         ++line_number;
+        return true;
+    };
+    std::string_view physical;
+    while (next_line(physical)) {
         const int statement_line = line_number;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
+        line.assign(physical);
         // A backslash at the end of a line continues the statement on the next line.
         while (!line.empty() && line.back() == '\\') {
             line.back() = ' ';
-            if (!std::getline(in, continued)) break;
-            ++line_number;
-            if (!continued.empty() && continued.back() == '\r') continued.pop_back();
-            line += continued;
+            if (!next_line(physical)) break;
+            line += physical;
         }
         reader.set_line(statement_line);
         std::string_view view(line);
@@ -778,8 +810,8 @@ TriangleMesh TriangleMesh::read_obj(const std::filesystem::path& file, std::size
                 }
                 if (too_many || parts[0].empty() || (part_count == 2 && parts[1].empty()) ||
                     (part_count == 3 && parts[2].empty())) {
-                    reader.fail("face vertex '" + std::string(ref) +
-                                "' is malformed; allowed forms: i, i/t, i//n, i/t/n");
+                    reader.fail("face vertex " + quote_untrusted(ref, 24) +
+                                " is malformed; allowed forms: i, i/t, i//n, i/t/n");
                 }
                 VertexKey vk{reader.index(parts[0], obj_positions.size(), "position"), -1, -1};
                 if (part_count >= 2 && !parts[1].empty()) {
@@ -811,18 +843,14 @@ TriangleMesh TriangleMesh::read_obj(const std::filesystem::path& file, std::size
                    key == "l" || key == "p") {
             continue;
         } else {
-            reader.fail("unknown statement '" + std::string(key) +
-                        "'; allowed: v, vn, vt, f, and o, g, s, usemtl, mtllib, l, p (ignored), "
+            reader.fail("unknown statement " + quote_untrusted(key, 24) +
+                        "; allowed: v, vn, vt, f, and o, g, s, usemtl, mtllib, l, p (ignored), "
                         "# comments");
         }
     }
-    if (in.bad()) {
-        reader.set_line(line_number);
-        reader.fail("read error; expected a readable Wavefront OBJ file");
-    }
     if (triangles.empty()) {
-        reader.set_line(line_number);
-        reader.fail("end of file without a face ('f' line); a mesh needs at least one");
+        throw Error(name + ": no face ('f' line) in " + std::to_string(line_number) +
+                    " lines; a mesh needs at least one");
     }
     if (!every_vertex_has_normal) normals.clear();
     if (!every_vertex_has_uv) uvs.clear();

@@ -4,6 +4,7 @@
 #include <irid/gamut/clip.h>
 #include <irid/optics/material.h>
 #include <irid/render/scene.h>
+#include <irid/text_input.h>
 
 #include "builtin_scenes.h"  // generated from scenes/*.json (cmake/EmbedScenes.cmake)
 
@@ -14,14 +15,21 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 namespace irid::render {
 namespace {
 
 using Json = nlohmann::json;
+
+/// A JSON value for a message: its JSON text (control characters escaped by the dump), cut
+/// short when long.
+std::string shown(const Json& v) {
+    // Bytes that are not UTF-8 (a --set value can hold any) are shown as U+FFFD.
+    std::string text = v.dump(-1, ' ', false, Json::error_handler_t::replace);
+    if (text.size() > 60) text = text.substr(0, 57) + "...";
+    return text;
+}
 
 /// Reads one JSON object: refuses keys it does not know, then reads values by name.
 class ObjectReader {
@@ -33,8 +41,8 @@ public:
             fail(m_path.empty() ? "the scene" : m_path, "must be an object ({...})");
         for (const auto& item : object.items()) {
             if (std::find(keys.begin(), keys.end(), item.key()) == keys.end()) {
-                throw Error(fmt::format("{}: unknown key '{}'; valid keys{}: {}", m_source,
-                                        key_path(item.key()),
+                throw Error(fmt::format("{}: unknown key {}; valid keys{}: {}", m_source,
+                                        quote_untrusted(key_path(item.key()), 60),
                                         m_path.empty() ? "" : " in '" + m_path + "'",
                                         fmt::join(keys, ", ")));
             }
@@ -62,7 +70,7 @@ public:
         if (!v) return;
         const double x = v->is_number() ? v->get<double>() : std::nan("");
         if (!std::isfinite(x) || x <= 0.0 || x > hi)
-            fail(key_path(key), fmt::format("is {}; allowed: (0, {}]", v->dump(), hi));
+            fail(key_path(key), fmt::format("is {}; allowed: (0, {}]", shown(*v), hi));
         out = x;
     }
 
@@ -74,7 +82,7 @@ public:
         const bool too_big = v->is_number_unsigned() && v->get<std::uint64_t>() > static_cast<std::uint64_t>(hi);
         const auto x = too_big ? static_cast<long long>(hi) + 1 : v->get<long long>();
         if (x < lo || x > hi)
-            fail(key_path(key), fmt::format("is {}; allowed: [{}, {}]", v->dump(), lo, hi));
+            fail(key_path(key), fmt::format("is {}; allowed: [{}, {}]", shown(*v), lo, hi));
         out = static_cast<int>(x);
     }
 
@@ -108,7 +116,7 @@ public:
                 }
             }
         }
-        fail(key_path(key), fmt::format("is {}; allowed: {}", v->dump(), fmt::join(names, ", ")));
+        fail(key_path(key), fmt::format("is {}; allowed: {}", shown(*v), fmt::join(names, ", ")));
     }
 
     void vec3(std::string_view key, std::array<double, 3>& out, double lo, double hi) const {
@@ -120,7 +128,7 @@ public:
             const Json& e = (*v)[i];
             const double x = e.is_number() ? e.get<double>() : std::nan("");
             if (!std::isfinite(x) || x < lo || x > hi)
-                fail(key_path(key), fmt::format("is {}; must be {}", v->dump(), allowed));
+                fail(key_path(key), fmt::format("is {}; must be {}", shown(*v), allowed));
             out[i] = x;
         }
     }
@@ -154,10 +162,10 @@ void read_film(const ObjectReader& r, std::string_view key, std::string& out) {
         r.fail(r.key_path(key), e.what());
     }
     if (!m.is_lossless())
-        r.fail(r.key_path(key), fmt::format("is \"{}\", an absorbing material; a film must be "
+        r.fail(r.key_path(key), fmt::format("is {}, an absorbing material; a film must be "
                                             "lossless (k = 0), because its transmittance is "
                                             "taken as 1 − R",
-                                            out));
+                                            quote_untrusted(out)));
 }
 
 /// Bounds shared by the readers: positions within ±1e4 scene units, colours within [0, 100].
@@ -330,6 +338,20 @@ void read_morpho(const Json& j, const std::string& source, MorphoSceneParams& p)
     r.text("wing_mesh", p.wing_mesh);
 }
 
+/// "line L, column C" of the character at `offset`.
+std::string position_of(std::string_view text, std::size_t offset) {
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < std::min(offset, text.size()); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return fmt::format("line {}, column {}", line, column);
+}
+
 /// "line L, column C" of a parse error. nlohmann's parse_error::byte is one past the last
 /// character read; when that character closes a string (the parser wanted something else, as a
 /// comma before the next key), the column given is the string's opening quote, where editors
@@ -341,23 +363,135 @@ std::string line_column(std::string_view text, std::size_t byte) {
         while (i > 0 && !(text[i - 1] == '"' && (i < 2 || text[i - 2] != '\\'))) --i;
         if (i > 0) end = i - 1;
     }
-    std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i < end; ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            column = 1;
+    return position_of(text, end);
+}
+
+/// What nlohmann's DOM parser accepts silently or reports without a position, found in the text
+/// it has read: a key given twice in one object (the DOM keeps the last; a scene file with two
+/// values for one key is a mistake, like an unknown key), and a number beyond the range of a
+/// double (nlohmann reports "number overflow" with no line). Runs on text nlohmann has parsed
+/// (or failed on only for such a number), comments included. Throws irid::Error with the key path
+/// or the number, and its line and column.
+void check_json_text(std::string_view text, const std::string& source) {
+    struct Frame {
+        bool object = false;
+        std::string path;  // the key path of this container
+        std::vector<std::pair<std::string, std::size_t>> keys;  // keys seen and where
+        std::size_t index = 0;                                    // arrays: the element's index
+        bool expect_key = true;
+        std::string key;  // objects: the current key
+    };
+    std::vector<Frame> stack;
+    const auto child_path = [&]() -> std::string {
+        if (stack.empty()) return {};
+        const Frame& f = stack.back();
+        const std::string part = f.object ? f.key : std::to_string(f.index);
+        return f.path.empty() ? part : f.path + "." + part;
+    };
+    std::size_t i = 0;
+    const std::size_t n = text.size();
+    while (i < n) {
+        const char c = text[i];
+        if (c == '/' && i + 1 < n && text[i + 1] == '/') {
+            while (i < n && text[i] != '\n') ++i;
+        } else if (c == '/' && i + 1 < n && text[i + 1] == '*') {
+            const std::size_t end = text.find("*/", i + 2);
+            i = end == std::string_view::npos ? n : end + 2;
+        } else if (c == '{' || c == '[') {
+            Frame f;
+            f.object = c == '{';
+            f.path = child_path();
+            stack.push_back(std::move(f));
+            ++i;
+        } else if (c == '}' || c == ']') {
+            if (!stack.empty()) stack.pop_back();
+            ++i;
+        } else if (c == ',') {
+            if (!stack.empty()) {
+                if (stack.back().object)
+                    stack.back().expect_key = true;
+                else
+                    ++stack.back().index;
+            }
+            ++i;
+        } else if (c == ':') {
+            if (!stack.empty()) stack.back().expect_key = false;
+            ++i;
+        } else if (c == '"') {
+            const std::size_t start = i++;
+            while (i < n && text[i] != '"') i += text[i] == '\\' ? 2 : 1;
+            ++i;
+            if (!stack.empty() && stack.back().object && stack.back().expect_key) {
+                Frame& f = stack.back();
+                const Json decoded = Json::parse(text.substr(start, i - start), nullptr, false);
+                f.key = decoded.is_string() ? decoded.get<std::string>() : std::string{};
+                for (const auto& [seen, at] : f.keys) {
+                    if (seen == f.key) {
+                        throw Error(fmt::format(
+                            "{}: the key {} is given twice, at {} and at {}; give each key once",
+                            source, quote_untrusted(child_path(), 80), position_of(text, at),
+                            position_of(text, start)));
+                    }
+                }
+                f.keys.emplace_back(f.key, start);
+            }
+        } else if (c == '-' || (c >= '0' && c <= '9')) {
+            const std::size_t start = i;
+            while (i < n && std::string_view("+-.0123456789eE").find(text[i]) != std::string_view::npos)
+                ++i;
+            const std::string number(text.substr(start, i - start));
+            if (std::isinf(std::strtod(number.c_str(), nullptr))) {
+                throw Error(fmt::format(
+                    "{}: the number {} at {} is beyond the range of a double (about 1.8e308)",
+                    source, quote_untrusted(number), position_of(text, start)));
+            }
         } else {
-            ++column;
+            ++i;
         }
     }
-    return fmt::format("line {}, column {}", line, column);
+}
+
+/// The sections a scene of one kind reads: the common ones and its own. A section of another
+/// kind would be read and then ignored, so it is refused, whether the file or an override
+/// brings it.
+void check_sections(const Json& root, SceneKind kind, const std::string& source,
+                    const std::vector<std::string>& sections_in_text,
+                    const std::vector<std::string>& overrides) {
+    struct Owner {
+        std::string_view section;
+        SceneKind kind;
+    };
+    static constexpr Owner owned[] = {{"oil", SceneKind::oil_slick},
+                                      {"pavement", SceneKind::oil_slick},
+                                      {"soap", SceneKind::soap_bubbles},
+                                      {"morpho", SceneKind::morpho}};
+    std::string valid = "scene, image, camera, render, light";
+    for (const Owner& o : owned)
+        if (o.kind == kind) valid += ", " + std::string(o.section);
+    for (const Owner& o : owned) {
+        if (o.kind == kind || !root.contains(std::string(o.section))) continue;
+        const std::string what = fmt::format(
+            "'{}' is a section of the {} scene; this scene is {}, whose sections are {}",
+            o.section, scene_kind_name(o.kind), scene_kind_name(kind), valid);
+        if (std::find(sections_in_text.begin(), sections_in_text.end(), o.section) !=
+            sections_in_text.end())
+            throw Error(fmt::format("{}: {}", source, what));
+        for (const std::string& assignment : overrides) {
+            if (assignment.rfind(std::string(o.section) + ".", 0) == 0 ||
+                assignment.rfind(std::string(o.section) + "=", 0) == 0)
+                throw Error(fmt::format("{}: the override {}: {}", source,
+                                        quote_untrusted(assignment, 60), what));
+        }
+        throw Error(fmt::format("{}: {}", source, what));
+    }
 }
 
 /// Replaces the value at a dotted key path ("soap.bubbles.0.radius").
 void apply_override(Json& root, const std::string& assignment, const std::string& source) {
     const auto eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0)
-        throw Error(fmt::format("{}: override '{}' must be key.path=value", source, assignment));
+        throw Error(fmt::format("{}: override {} must be key.path=value", source,
+                                quote_untrusted(assignment, 60)));
     const std::string key = assignment.substr(0, eq);
     const std::string text = assignment.substr(eq + 1);
     Json value = Json::parse(text, nullptr, /*allow_exceptions=*/false);
@@ -369,18 +503,20 @@ void apply_override(Json& root, const std::string& assignment, const std::string
         const auto dot = key.find('.', start);
         const std::string part = key.substr(start, dot == std::string::npos ? dot : dot - start);
         if (part.empty())
-            throw Error(fmt::format("{}: override key '{}' has an empty part", source, key));
+            throw Error(fmt::format("{}: override key {} has an empty part", source,
+                                    quote_untrusted(key, 60)));
         if (node->is_array()) {
             std::size_t index = 0;
             const auto [p, ec] = std::from_chars(part.data(), part.data() + part.size(), index);
             if (ec != std::errc{} || p != part.data() + part.size() || index >= node->size())
-                throw Error(fmt::format("{}: override key '{}': '{}' must be an index below {}",
-                                        source, key, part, node->size()));
+                throw Error(fmt::format("{}: override key {}: {} must be an index below {}",
+                                        source, quote_untrusted(key, 60), quote_untrusted(part),
+                                        node->size()));
             node = &(*node)[index];
         } else {
             if (!node->is_object() && !node->is_null())
-                throw Error(fmt::format("{}: override key '{}': '{}' is not inside an object",
-                                        source, key, part));
+                throw Error(fmt::format("{}: override key {}: {} is not inside an object",
+                                        source, quote_untrusted(key, 60), quote_untrusted(part)));
             node = &(*node)[part];
         }
         if (dot == std::string::npos) break;
@@ -419,6 +555,10 @@ Scene parse_scene(std::string_view json_text, const std::string& source,
     try {
         root = Json::parse(json_text.begin(), json_text.end(), nullptr, true,
                            /*ignore_comments=*/true);
+    } catch (const Json::out_of_range&) {
+        // A number beyond a double: nlohmann gives no position; find it.
+        check_json_text(json_text, source);
+        throw Error(fmt::format("{}: a number in the JSON is beyond the range of a double", source));
     } catch (const Json::parse_error& e) {
         // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ...";
         // keep its explanation after the position, and give the position ourselves.
@@ -428,6 +568,10 @@ Scene parse_scene(std::string_view json_text, const std::string& source,
         throw Error(fmt::format("{}: JSON syntax error at {}: {}", source,
                                 line_column(json_text, e.byte), why));
     }
+    check_json_text(json_text, source);
+    std::vector<std::string> sections_in_text;
+    if (root.is_object())
+        for (const auto& item : root.items()) sections_in_text.push_back(item.key());
     for (const auto& o : overrides) apply_override(root, o, source);
 
     Scene scene;
@@ -442,6 +586,7 @@ Scene parse_scene(std::string_view json_text, const std::string& source,
              {{"oil-slick", SceneKind::oil_slick},
               {"soap-bubbles", SceneKind::soap_bubbles},
               {"morpho", SceneKind::morpho}});
+    check_sections(root, scene.kind, source, sections_in_text, overrides);
     if (scene.kind == SceneKind::soap_bubbles) scene.soap.bubbles.assign(1, BubbleParams{});
     if (const Json* v = r.find("image")) read_image(*v, source, scene.image);
     if (const Json* v = r.find("camera")) read_camera(*v, source, scene.camera);
@@ -451,7 +596,24 @@ Scene parse_scene(std::string_view json_text, const std::string& source,
     if (const Json* v = r.find("pavement")) read_pavement(*v, source, scene.pavement);
     if (const Json* v = r.find("soap")) read_soap(*v, source, scene.soap);
     if (const Json* v = r.find("morpho")) read_morpho(*v, source, scene.morpho);
+    if (const double work = morpho_table_work(scene); work > max_morpho_table_work) {
+        const MorphoSceneParams& m = scene.morpho;
+        throw Error(fmt::format(
+            "{}: morpho.periods = {} and morpho.blend_samples = {} with render.optics = exact ask "
+            "for {:.3g} layer evaluations before the first ray (91 angles x {} x 471 wavelengths "
+            "x {} layers); the limit is {:.3g}, about 80 s on one core: lower morpho.periods or "
+            "morpho.blend_samples, or set render.optics = thesis",
+            source, m.periods, m.blend_samples, work, m.blend ? m.blend_samples : 1,
+            2 * m.periods - 1, max_morpho_table_work));
+    }
     return scene;
+}
+
+double morpho_table_work(const Scene& scene) noexcept {
+    if (scene.kind != SceneKind::morpho || scene.render.optics != OpticsModel::exact) return 0;
+    const MorphoSceneParams& m = scene.morpho;
+    constexpr double angles = 91, wavelengths = 471;  // AngleTable at 1°, 360-830 nm at 1 nm
+    return angles * (m.blend ? m.blend_samples : 1) * wavelengths * (2.0 * m.periods - 1.0);
 }
 
 Scene load_scene(const std::string& name_or_path, const std::vector<std::string>& overrides) {
@@ -459,20 +621,16 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
         return parse_scene(*builtin, name_or_path, {}, overrides);
     const std::filesystem::path path(name_or_path);
     std::error_code ec;
-    std::ifstream in;
-    if (std::filesystem::is_regular_file(path, ec)) in.open(path, std::ios::binary);
-    if (!in.is_open() || !in) {
-        throw Error(fmt::format("cannot read scene '{}': not a built-in scene ({}) and not a "
-                                "readable file",
-                                name_or_path, fmt::join(builtin_scene_names(), ", ")));
+    if (!std::filesystem::exists(path, ec)) {
+        throw Error(fmt::format("cannot read scene {}: not a built-in scene ({}) and no such file",
+                                quote_untrusted(name_or_path, 80),
+                                fmt::join(builtin_scene_names(), ", ")));
     }
-    std::ostringstream text;
-    text << in.rdbuf();
+    // A scene named on the command line may come through a pipe (`irid render <(...)`).
     constexpr std::size_t max_scene_bytes = 16u << 20;
-    if (text.str().size() > max_scene_bytes)
-        throw Error(fmt::format("{}: scene files are limited to {} bytes", name_or_path,
-                                max_scene_bytes));
-    return parse_scene(text.str(), name_or_path, path.parent_path(), overrides);
+    const std::string text =
+        read_text_file(path, "scene file (JSON)", StreamInput::accept, max_scene_bytes);
+    return parse_scene(text, name_or_path, path.parent_path(), overrides);
 }
 
 }  // namespace irid::render

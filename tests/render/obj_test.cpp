@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -217,8 +219,8 @@ TEST_F(Obj, NormalsAndUvsAreDroppedUnlessEveryVertexHasThem) {
 
 TEST_F(Obj, EveryErrorNamesTheFileAndLine) {
     struct Case {
-        const char* text;
-        const char* message;
+        std::string text;
+        std::string message;
     };
     const Case cases[] = {
         {"v 0 0 0\nv 1 x 0\n", "bad.obj:2: 'x' is not a finite number; 'v' takes x y z"},
@@ -255,8 +257,18 @@ TEST_F(Obj, EveryErrorNamesTheFileAndLine) {
          "bad.obj:2: unknown statement 'curv'; allowed: v, vn, vt, f, and o, g, s, usemtl, "
          "mtllib, l, p (ignored), # comments"},
         {"# only vertices\nv 0 0 0\nv 1 0 0\n",
-         "bad.obj:3: end of file without a face ('f' line); a mesh needs at least one"},
-        {"", "bad.obj:0: end of file without a face"},
+         "bad.obj: no face ('f' line) in 3 lines; a mesh needs at least one"},
+        // An empty file is named as such, not reported at a line 0.
+        {"", "bad.obj: the file is empty; expected a Wavefront OBJ mesh with at least one face"},
+        {"\n \n", "bad.obj: the file is empty"},
+        // Untrusted bytes are quoted short and escaped: another file's line, a long token, and
+        // a terminal escape sequence.
+        {"root:$y$j9T$abcdefghijklmnopqrstuvwxyz0123456789:19000:0:99999:7:::\n",
+         "bad.obj:1: unknown statement 'root:$y$j9T$abcdefghijkl...'; allowed:"},
+        {"v 0 0 " + std::string(1000000, '7') + "x\n",
+         "bad.obj:1: '777777777777777777777777...' is not a finite number"},
+        {"\x1b[2J\x1b]0;pwned\x07 0 0\n",
+         "bad.obj:1: unknown statement '\\x1b[2J\\x1b]0;pwned\\x07'; allowed:"},
     };
     for (const Case& c : cases) {
         const std::string message = error_reading(c.text);
@@ -272,9 +284,19 @@ TEST_F(Obj, UnreadableFilesAndTheSizeLimit) {
         ADD_FAILURE() << "no error for a missing file";
     } catch (const Error& e) {
         const std::string message = e.what();
-        EXPECT_NE(message.find("missing.obj: does not exist; expected a readable Wavefront OBJ"),
+        EXPECT_NE(message.find("missing.obj: no such file; expected a Wavefront OBJ mesh"),
                   std::string::npos)
             << message;
+    }
+    // A FIFO is refused at once (a scene names the mesh; nobody may ever write to the FIFO).
+    ASSERT_EQ(::mkfifo((m_dir / "fifo.obj").c_str(), 0600), 0);
+    try {
+        (void)TriangleMesh::read_obj(m_dir / "fifo.obj");
+        ADD_FAILURE() << "no error for a FIFO";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("fifo.obj: is not a regular file (a FIFO)"),
+                  std::string::npos)
+            << e.what();
     }
     try {
         (void)TriangleMesh::read_obj(m_dir);
@@ -308,6 +330,90 @@ TEST_F(Obj, UnreadableFilesAndTheSizeLimit) {
             << e.what();
     }
     EXPECT_EQ(TriangleMesh::max_triangles, 10'000'000u);
+}
+
+// --- Findings of the OBJ fuzzer (tests/fuzz/regressions/obj, docs/RELIABILITY.md) ---------
+
+/// Every ray from four directions towards each vertex, each edge's midpoint and each
+/// triangle's centroid: the BVH's nearest hit is the brute-force loop's (same t, same triangle,
+/// ties to the lowest index), occluded() agrees, and every hit has a unit normal.
+void expect_bvh_matches_brute_force(const TriangleMesh& mesh) {
+    const Aabb box = mesh.bounds();
+    const Vec3 centre = 0.5 * (box.lo + box.hi);
+    const double reach = 2.0 * length(box.hi - box.lo) + 1.0;
+    std::vector<Vec3> targets;
+    const auto& p = mesh.positions();
+    for (const auto& tri : mesh.triangles()) {
+        const Vec3 a = p[static_cast<std::size_t>(tri[0])], b = p[static_cast<std::size_t>(tri[1])],
+                   c = p[static_cast<std::size_t>(tri[2])];
+        targets.insert(targets.end(), {a, b, c, 0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a),
+                                       (a + b + c) / 3.0});
+    }
+    const Vec3 from[] = {{1, 0.3, 0.2}, {-0.2, 1, 0.4}, {0.1, -0.3, 1}, {-1, -1, -1}};
+    int rays = 0;
+    for (const Vec3& target : targets) {
+        for (const Vec3& f : from) {
+            const Vec3 origin = centre + reach * normalize(f);
+            const Ray ray{origin, normalize(target - origin)};
+            SurfaceHit bvh, brute;
+            const bool hit = mesh.intersect(ray, 0.0, 4.0 * reach, bvh);
+            ASSERT_EQ(hit, mesh.intersect_brute_force(ray, 0.0, 4.0 * reach, brute));
+            EXPECT_EQ(mesh.occluded(ray, 0.0, 4.0 * reach), hit);
+            ++rays;
+            if (!hit) continue;
+            EXPECT_EQ(bvh.t, brute.t);
+            EXPECT_EQ(bvh.primitive, brute.primitive);
+            EXPECT_NEAR(length(bvh.normal), 1.0, 1e-12) << "triangle " << bvh.primitive;
+        }
+    }
+    EXPECT_GT(rays, 0);
+}
+
+fs::path regression(const char* name) { return fs::path(IRID_FUZZ_REGRESSIONS_DIR) / "obj" / name; }
+
+TEST(ObjFuzzFindings, TiedAndNearlyTiedHitsAreTheBruteForceLoops) {
+    // obj-1: a box flat along the ray entered a few ulps beyond the hit it held, and the BVH
+    // culled it: another triangle at the same t, or one an ulp farther, came back.
+    expect_bvh_matches_brute_force(TriangleMesh::read_obj(regression("bvh-tie-shared-edge.obj")));
+    expect_bvh_matches_brute_force(TriangleMesh::read_obj(regression("bvh-near-tie-one-ulp.obj")));
+}
+
+TEST(ObjFuzzFindings, ZeroAreaTrianglesAreNeverHit) {
+    // obj-2: three vertices on a line have no normal (it came out NaN); such a triangle is kept
+    // but never hit, and a mesh of nothing else is refused.
+    const TriangleMesh mixed = TriangleMesh::read_obj(regression("zero-area-triangle-bvh-disagrees.obj"));
+    expect_bvh_matches_brute_force(mixed);
+    const TriangleMesh line_and_square({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 1}, {2, 0, 1}},
+                                       {{0, 1, 2}, {0, 2, 4}, {0, 4, 3}});
+    SurfaceHit hit;
+    // Straight down onto the middle vertex of the line: the square behind it is what is hit.
+    ASSERT_TRUE(line_and_square.intersect({{1, 5, 0.0}, {0, -1, 0}}, 0.0, 10.0, hit));
+    EXPECT_NE(hit.primitive, 0);
+    EXPECT_NEAR(length(hit.normal), 1.0, 1e-15);
+    try {
+        (void)TriangleMesh::read_obj(regression("zero-area-triangle-hit.obj"));
+        ADD_FAILURE() << "a mesh of one zero-area triangle was read";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("has zero area"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ObjFuzzFindings, CoordinatesNearTheRangeOfADoubleAreRefused) {
+    // obj-3: 1e308 overflowed the BVH builder's centroids and extents, and NaN reached an int.
+    try {
+        (void)TriangleMesh::read_obj(regression("huge-coordinates-nan-bin.obj"));
+        ADD_FAILURE() << "1e308 was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("within +-1e150"), std::string::npos) << e.what();
+    }
+    // Up to the limit the mesh is built and exact.
+    const double big = 1e150;
+    const TriangleMesh far({{big, 0, 0}, {big, 1, 0}, {big, 0, 1}, {-big, 0, 0}, {-big, 1, 0}, {-big, 0, 1}},
+                           {{0, 1, 2}, {3, 4, 5}});
+    SurfaceHit hit;
+    ASSERT_TRUE(far.intersect({{0, 0.25, 0.25}, {1, 0, 0}}, 0.0, 2 * big, hit));
+    EXPECT_EQ(hit.t, big);
+    EXPECT_EQ(hit.primitive, 0);
 }
 
 }  // namespace

@@ -7,6 +7,9 @@
 
 #include <fstream>
 #include <string>
+#include <string_view>
+
+#include <unistd.h>
 
 namespace irid::render {
 namespace {
@@ -115,7 +118,7 @@ TEST(Scene, ValuesOutOfRangeNameTheKeyPathAndTheRange) {
 
 TEST(Scene, ValuesTheRendererCannotUseAreRefusedWhenTheSceneIsRead) {
     EXPECT_CONTAINS(error_of([] { (void)load_scene("soap-bubbles", {"soap.film=gold"}); }),
-                    "'soap.film' is \"gold\", an absorbing material");
+                    "'soap.film' is 'gold', an absorbing material");
     EXPECT_CONTAINS(error_of([] { (void)load_scene("oil-slick", {"oil.film=unobtainium"}); }),
                     "'oil.film'");
     EXPECT_EQ(load_scene("oil-slick", {"oil.film=1.45"}).oil.film, "1.45");
@@ -123,7 +126,7 @@ TEST(Scene, ValuesTheRendererCannotUseAreRefusedWhenTheSceneIsRead) {
                     "'render.space' is \"cmyk\"; allowed: srgb");
     EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"render.clip=nearest"}); }),
                     "'render.clip'");
-    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"soap.floor_checker=-1"}); }),
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("soap-bubbles", {"soap.floor_checker=-1"}); }),
                     "'soap.floor_checker' is -1");
     EXPECT_CONTAINS(error_of([] { (void)load_scene("soap-bubbles", {"soap.bubbles.0.radius=-2"}); }),
                     "is -2; allowed: (0, 10000]");
@@ -169,6 +172,104 @@ TEST(Scene, UnknownScenesListTheBuiltinOnes) {
     const std::string m = error_of([] { (void)load_scene("no-such-scene.json"); });
     EXPECT_CONTAINS(m, "no-such-scene.json");
     EXPECT_CONTAINS(m, "morpho, oil-slick, soap-bubbles");
+}
+
+TEST(Scene, AKeyGivenTwiceIsAnErrorNamingBothPlaces) {
+    const std::string text = "{\n  \"scene\": \"oil-slick\",\n  \"oil\": {\"k1\": 1, \"k1\": 2}\n}\n";
+    EXPECT_EQ(error_of([&] { (void)parse_scene(text, "dup.json"); }),
+              "dup.json: the key 'oil.k1' is given twice, at line 3, column 11 and at line 3, "
+              "column 20; give each key once");
+    // At the top level, in a nested array's object, and after a comment that looks like a key.
+    EXPECT_CONTAINS(error_of([] {
+                        (void)parse_scene(R"({"scene": "morpho", "scene": "morpho"})", "s");
+                    }),
+                    "the key 'scene' is given twice");
+    EXPECT_CONTAINS(error_of([] {
+                        (void)parse_scene(R"({"scene": "soap-bubbles", "soap": {"bubbles": [
+                            {"radius": 1}, {"radius": 1, /* "radius": 0 */ "radius": 2}]}})",
+                                          "s");
+                    }),
+                    "the key 'soap.bubbles.1.radius' is given twice");
+    // The same name in two objects, or as a string value, is not a duplicate.
+    EXPECT_EQ(error_of([] {
+                  (void)parse_scene(R"({"scene": "morpho", "render": {"clip": "smits"},
+                                        "morpho": {"wing_mesh": ""}, "image": {"spp": 1}})",
+                                    "s");
+              }),
+              "");
+    // Escaped and plain spellings of one key are one key.
+    EXPECT_CONTAINS(error_of([] { (void)parse_scene(R"({"scene": "morpho", "sc\u0065ne": "morpho"})", "s"); }),
+                    "given twice");
+}
+
+TEST(Scene, ANumberBeyondADoubleIsNamedWithItsPosition) {
+    EXPECT_EQ(error_of([] {
+                  (void)parse_scene("{\"scene\": \"oil-slick\",\n \"oil\": {\"k1\": 1e999}}", "big.json");
+              }),
+              "big.json: the number '1e999' at line 2, column 16 is beyond the range of a double "
+              "(about 1.8e308)");
+    EXPECT_CONTAINS(error_of([] { (void)parse_scene(R"({"scene": "morpho", "image": {"spp": -1e400}})", "s"); }),
+                    "the number '-1e400' at line 1, column 38");
+}
+
+TEST(Scene, ASectionOfAnotherSceneIsRefusedFromTheFileAndFromOverrides) {
+    EXPECT_EQ(error_of([] { (void)load_scene("oil-slick", {"morpho.periods=5"}); }),
+              "oil-slick: the override 'morpho.periods=5': 'morpho' is a section of the morpho "
+              "scene; this scene is oil-slick, whose sections are scene, image, camera, render, "
+              "light, oil, pavement");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"pavement.bump_height=0"}); }),
+                    "'pavement' is a section of the oil-slick scene");
+    EXPECT_CONTAINS(error_of([] {
+                        (void)parse_scene(R"({"scene": "morpho", "soap": {"film": "water"}})", "m.json");
+                    }),
+                    "m.json: 'soap' is a section of the soap-bubbles scene; this scene is morpho");
+    // Switching a file's scene with an override leaves the file's own section behind.
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"scene=oil-slick"}); }),
+                    "'morpho' is a section of the morpho scene; this scene is oil-slick");
+    // Each scene's own sections are accepted.
+    EXPECT_EQ(load_scene("oil-slick", {"pavement.bump_height=0"}).pavement.bump_height, 0.0);
+}
+
+TEST(Scene, TheExactMorphosTableWorkIsBoundedBeforeRendering) {
+    // The built-in scene's exact table: 91 × 101 × 471 × 23 layer evaluations.
+    const Scene exact = load_scene("morpho", {"render.optics=exact"});
+    EXPECT_DOUBLE_EQ(morpho_table_work(exact), 91.0 * 101 * 471 * 23);
+    EXPECT_LT(morpho_table_work(exact), max_morpho_table_work);
+    // Each value in range, together too much: refused when read, naming both and the limit.
+    const std::string m = error_of([] {
+        (void)load_scene("morpho", {"render.optics=exact", "morpho.periods=100",
+                                    "morpho.blend_samples=201"});
+    });
+    EXPECT_CONTAINS(m, "morpho.periods = 100 and morpho.blend_samples = 201");
+    EXPECT_CONTAINS(m, "1.71e+09 layer evaluations");
+    EXPECT_CONTAINS(m, "the limit is 4e+08");
+    // The thesis' closed forms cost nothing like it, and other scenes none of it.
+    EXPECT_EQ(morpho_table_work(load_scene("morpho", {"render.optics=thesis", "morpho.periods=100",
+                                                      "morpho.blend_samples=201"})),
+              0.0);
+    EXPECT_EQ(morpho_table_work(load_scene("oil-slick", {"render.optics=exact"})), 0.0);
+}
+
+TEST(Scene, AnOverrideThatIsNotUtf8IsAnErrorOfIrids) {
+    // The scene fuzzer's scene-1: nlohmann's dump threw its own type_error on the bytes.
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"render.path=\xff"}); }),
+                    "'render.path' is \"\xef\xbf\xbd\"; allowed: table, spectral");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"render.p\xffth=1"}); }),
+                    "unknown key 'render.p\\xffth'");
+}
+
+TEST(Scene, AFolderIsNotASceneFileButAPipeIs) {
+    const std::string m = error_of([] { (void)load_scene("/"); });
+    EXPECT_CONTAINS(m, "/: is a directory; expected a scene file (JSON)");
+    // `irid render <(...)`: the scene arrives through a pipe named /dev/fd/N.
+    int fds[2];
+    ASSERT_EQ(::pipe(fds), 0);
+    const std::string_view json = *builtin_scene_json("morpho");
+    ASSERT_EQ(::write(fds[1], json.data(), json.size()), static_cast<ssize_t>(json.size()));
+    ::close(fds[1]);
+    const Scene s = load_scene("/dev/fd/" + std::to_string(fds[0]));
+    ::close(fds[0]);
+    EXPECT_EQ(s.kind, SceneKind::morpho);
 }
 
 }  // namespace

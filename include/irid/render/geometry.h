@@ -283,10 +283,17 @@ public:
     /// The largest mesh irid builds or reads [triangles]: about 1.2 GB of triangles and BVH
     /// (~120 bytes per triangle) plus the vertices.
     static constexpr std::size_t max_triangles = 10'000'000;
+    /// The largest coordinate a vertex may have [scene units]: a triangle's cross product and a
+    /// BVH box's surface area grow as the square of the coordinates and overflow a double
+    /// (1.8e308) beyond about 1e154; 1e150 keeps both finite (scenes stay within ±1e4).
+    static constexpr double max_coordinate = 1e150;
 
     /// `normals` and `uvs` are per vertex (same count as positions) or empty. Validates: at least
-    /// one triangle and at most max_triangles; finite positions; indices in [0, positions.size());
-    /// finite non-zero normals (stored normalised); finite uvs. Then builds the BVH.
+    /// one triangle and at most max_triangles; finite positions within ±max_coordinate; indices
+    /// in [0, positions.size()); at least one triangle of non-zero area; finite non-zero normals
+    /// (stored normalised); finite uvs. Then builds the BVH. Triangles of zero area (three
+    /// vertices on a line, as OBJ exports often hold) are kept but never hit: they have no
+    /// normal.
     TriangleMesh(std::vector<Vec3> positions, std::vector<std::array<int, 3>> triangles,
                  std::vector<Vec3> normals = {}, std::vector<std::array<double, 2>> uvs = {});
 
@@ -360,6 +367,8 @@ private:
     std::vector<BvhNode> m_nodes;
     std::vector<TriangleVertices> m_bvh_vertices;  ///< triangles in BVH order
     std::vector<std::int32_t> m_bvh_ids;           ///< BVH order → triangle index
+    /// True when the triangle's cross product is not zero (only such triangles are hit).
+    [[nodiscard]] bool has_area(std::size_t triangle) const noexcept;
     int m_depth = 0;
 };
 

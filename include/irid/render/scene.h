@@ -76,7 +76,7 @@ struct RenderParams {
 /// The light: a sun (a directional light with a visible disc) and an environment, either a
 /// procedural sky over a ground or a latitude–longitude image.
 struct LightParams {
-    /// Direction towards the sun (normalised when read).
+    /// Direction towards the sun, any non-zero length (the renderer normalises it).
     Vec3Param sun_direction{-0.4, 0.8, 0.5};
     /// Irradiance of the sun on a surface facing it, as a multiple of the D65 white.
     double sun_intensity = 2.5;
@@ -224,6 +224,14 @@ inline constexpr int max_spp = 1024;
 /// width × height × spp: the renderer keeps every sample (20 bytes) until the filter has read it.
 inline constexpr long long max_samples = 1LL << 27;
 inline constexpr int max_bubbles = 64;
+/// The exact Morpho's wing table (91 angles × blend samples × 471 wavelengths × (2 periods − 1)
+/// transfer-matrix layers, built before the first ray) may take at most this many layer
+/// evaluations. One takes about 0.2 µs on the machines of docs/PERFORMANCE.md (both
+/// polarisations), so the limit is about 80 s on one core; the built-in scene (12 periods, 101
+/// blend samples) takes 1.0e8. Parameters in range one by one can ask for 1.7e9 together.
+inline constexpr double max_morpho_table_work = 4e8;
+/// The work the exact Morpho's wing table of a scene asks for (0 for other scenes and optics).
+[[nodiscard]] double morpho_table_work(const Scene& scene) noexcept;
 
 [[nodiscard]] std::string_view scene_kind_name(SceneKind kind) noexcept;
 
