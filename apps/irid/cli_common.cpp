@@ -1,13 +1,18 @@
 #include "cli_common.h"
 
 #include <irid/error.h>
+#include <irid/text_input.h>
 
+#include <cerrno>
+#include <charconv>
+#include <cstring>
 #include <iostream>
+#include <system_error>
 
 namespace irid::cli {
 
 NumericTable read_stdin_table(int columns, int min_columns) {
-    return read_numeric_table(std::cin, "<stdin>", columns, min_columns);
+    return read_numeric_table(read_standard_input(), "<stdin>", columns, min_columns);
 }
 
 void append_csv_line(std::string& out, std::span<const double> values) {
@@ -20,7 +25,23 @@ void append_csv_line(std::string& out, std::span<const double> values) {
 
 void write_stdout(const std::string& text) {
     std::cout << text << std::flush;
-    if (!std::cout) throw Error("cannot write to standard output");
+    if (!std::cout) throw Error(std::string("cannot write to standard output: ") + std::strerror(errno));
+}
+
+CLI::Validator whole_number_in(long long lo, long long hi) {
+    const std::string allowed = std::to_string(lo) + " to " + std::to_string(hi);
+    return CLI::Validator(
+        [lo, hi, allowed](std::string& text) -> std::string {
+            long long value = 0;
+            const char* end = text.data() + text.size();
+            const auto [p, ec] = std::from_chars(text.data(), end, value);
+            if (text.empty() || p != end || ec == std::errc::invalid_argument)
+                return quote_untrusted(text) + " is not a whole number; allowed: " + allowed;
+            if (ec == std::errc::result_out_of_range || value < lo || value > hi)
+                return quote_untrusted(text) + " is out of range; allowed: " + allowed;
+            return {};
+        },
+        "INT in " + allowed);
 }
 
 std::string join(const std::vector<std::string>& names) {

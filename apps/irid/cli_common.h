@@ -50,6 +50,10 @@ void append_csv_line(std::string& out, std::span<const double> values);
 /// Writes the whole output at once; throws irid::Error when standard output fails.
 void write_stdout(const std::string& text);
 
+/// An option's check for a whole number in [lo, hi]: "--width abc" is "'abc' is not a whole
+/// number; allowed: 1 to 16384", not "out of range".
+[[nodiscard]] CLI::Validator whole_number_in(long long lo, long long hi);
+
 /// "a, b, c" for messages.
 [[nodiscard]] std::string join(const std::vector<std::string>& names);
 

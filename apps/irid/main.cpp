@@ -2,12 +2,34 @@
 #include "cli_common.h"
 
 #include <irid/error.h>
+#include <irid/text_input.h>
 
 #include <fmt/core.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
-#include <string>
 #include <iostream>
+#include <string>
+
+namespace {
+
+/// A message on stderr, made safe for a terminal (it may quote input irid did not write).
+void report(const std::string& message) {
+    const std::string safe = irid::terminal_safe(message);
+    std::fputs(safe.c_str(), stderr);
+}
+
+/// Whatever is still buffered for standard output is written now; a failure (a full disk, a
+/// closed pipe) is an I/O error of the command, not a success.
+bool flush_standard_output() {
+    std::cout.flush();
+    const bool ok = std::cout.good() && std::fflush(stdout) == 0 && !std::ferror(stdout);
+    return ok;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     using namespace irid::cli;
@@ -18,8 +40,9 @@ int main(int argc, char** argv) {
     // values, so the message always lists what is allowed.
     app.failure_message([](const CLI::App* root, const CLI::Error& e) {
         const auto chosen = root->get_subcommands();
-        const CLI::App* shown = chosen.empty() ? root : chosen.front();
-        return std::string("irid: ") + e.what() + "\n\n" + shown->help();
+        // A subcommand's usage line names the program too: "Usage: irid render [OPTIONS] scene".
+        const std::string help = chosen.empty() ? root->help() : chosen.front()->help("irid");
+        return irid::terminal_safe(std::string("irid: ") + e.what() + "\n\n" + help);
     });
 
     Runner runner;
@@ -45,7 +68,8 @@ int main(int argc, char** argv) {
             names += (names.empty() ? "" : ", ") + sub->get_name();
         }
         if (!known) {
-            fmt::print(stderr, "irid: unknown command '{}'; valid commands: {}\n", word, names);
+            report(fmt::format("irid: unknown command {}; valid commands: {}\n",
+                               irid::quote_untrusted(word), names));
             return exit_usage;
         }
     }
@@ -53,21 +77,35 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        const int status = app.exit(e);
+        const int status = app.exit(e);  // --help and --version print to stdout
+        if (status == 0 && !flush_standard_output()) {
+            report(fmt::format("irid: cannot write to standard output: {}\n", std::strerror(errno)));
+            return exit_bad_data;
+        }
         return status == 0 ? exit_success : exit_usage;
     }
 
     const std::string command = app.get_subcommands().front()->get_name();
+    int status = exit_success;
     try {
-        return runner();
+        status = runner();
     } catch (const UsageError& e) {
-        fmt::print(stderr, "irid {}: {}\n", command, e.what());
+        report(fmt::format("irid {}: {}\n", command, e.what()));
         return exit_usage;
     } catch (const irid::Error& e) {
-        fmt::print(stderr, "irid {}: {}\n", command, e.what());
+        report(fmt::format("irid {}: {}\n", command, e.what()));
+        return exit_bad_data;
+    } catch (const std::bad_alloc&) {
+        report(fmt::format("irid {}: out of memory\n", command));
         return exit_bad_data;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "irid {}: {}\n", command, e.what());
+        report(fmt::format("irid {}: {}\n", command, e.what()));
         return exit_bad_data;
     }
+    if (!flush_standard_output()) {
+        report(fmt::format("irid {}: cannot write to standard output: {}\n", command,
+                           std::strerror(errno)));
+        return exit_bad_data;
+    }
+    return status;
 }

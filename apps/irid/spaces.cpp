@@ -115,6 +115,19 @@ Mat3 Converter::adaptation_to(const std::optional<Xy>& native, ChromaticAdaptati
     return adaptation_matrix(m_white, xy_to_xyz(*native), cat);
 }
 
+Vec3 Converter::operator()(const Vec3& in) const {
+    if (is_rgb(m_from) && is_rgb(m_to) && m_from.rgb == m_to.rgb) {
+        if (m_from.family == m_to.family) return in;
+        const Rgb c{in[0], in[1], in[2]};
+        const Rgb r = m_from.family == Family::rgb_encoded ? m_from.rgb->decode(c) : m_from.rgb->encode(c);
+        return {r.r, r.g, r.b};
+    }
+    // The other families are relative to the reference white (or, for Oklab, to D65), which is
+    // the same on both sides.
+    if (!is_rgb(m_from) && m_from.family == m_to.family && m_from.family != Family::xyy) return in;
+    return from_xyz(to_xyz(in));
+}
+
 Xyz Converter::to_xyz(const Vec3& v) const {
     switch (m_from.family) {
         case Family::xyz: return {v[0], v[1], v[2]};

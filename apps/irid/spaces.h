@@ -52,7 +52,10 @@ class Converter {
 public:
     Converter(const Space& from, const Space& to, const Xy& white, ChromaticAdaptation cat);
 
-    [[nodiscard]] Vec3 operator()(const Vec3& in) const { return from_xyz(to_xyz(in)); }
+    /// A triple of the source space → the destination space. Between two forms of one space
+    /// (srgb → srgb, srgb → srgb-linear, lab → lab) nothing goes through XYZ: only the transfer
+    /// function is applied where the forms differ, so a colour comes back bit for bit.
+    [[nodiscard]] Vec3 operator()(const Vec3& in) const;
 
     /// A triple of the source space → XYZ relative to the reference white. Throws irid::Error
     /// for an xyY chromaticity y = 0 with Y ≠ 0.

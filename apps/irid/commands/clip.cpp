@@ -16,6 +16,7 @@
 #include <irid/gamut/batch.h>
 #include <irid/gamut/clip.h>
 #include <irid/io/image.h>
+#include <irid/text_input.h>
 
 #include <fmt/core.h>
 
@@ -48,6 +49,7 @@ struct ClipOptions {
     std::string in;
     std::string out;
     const CLI::Option* bits_option = nullptr;
+    const CLI::Option* from_option = nullptr;
 };
 
 std::string method_names() {
@@ -198,8 +200,8 @@ int run_clip_csv(const ClipOptions& o, const Pipeline& p) {
     const double max = p.clipper.gamut().max();
     const NumericTable table = read_stdin_table(3);
     std::string out = "R,G,B\n";
-    for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        const auto& row = table.rows[r];
+    for (std::size_t r = 0; r < table.rows(); ++r) {
+        const std::span<const double> row = table.row(r);
         const Vec3 in{row[0], row[1], row[2]};
         Rgb c{};
         try {
@@ -260,14 +262,23 @@ void parallel_for(std::size_t n, int threads, const Body& body) {
     if (failure) std::rethrow_exception(failure);
 }
 
-/// The three colour channels: R, G and B by name, else the first three.
-std::array<int, 3> colour_channels(const io::Image& image, const std::string& path) {
-    const std::array<int, 3> named{image.channel_index("R"), image.channel_index("G"),
-                                   image.channel_index("B")};
-    if (named[0] >= 0 && named[1] >= 0 && named[2] >= 0) return named;
-    if (image.channels >= 3) return {0, 1, 2};
-    throw Error(path + ": " + std::to_string(image.channels) + " channel(s) (" +
-                join(image.channel_names) + "); clip needs three colour channels (R, G, B)");
+/// The three colour channels of an image and what they hold.
+struct ColourChannels {
+    std::array<int, 3> index;
+    /// X, Y and Z channels: the image is CIE XYZ, whatever --from names for RGB.
+    bool xyz = false;
+};
+
+/// R, G and B by name; else X, Y and Z by name (an XYZ EXR); else refused, naming the channels.
+ColourChannels colour_channels(const io::Image& image, const std::string& path) {
+    const std::array<int, 3> rgb{image.channel_index("R"), image.channel_index("G"),
+                                 image.channel_index("B")};
+    if (rgb[0] >= 0 && rgb[1] >= 0 && rgb[2] >= 0) return {rgb, false};
+    const std::array<int, 3> xyz{image.channel_index("X"), image.channel_index("Y"),
+                                 image.channel_index("Z")};
+    if (xyz[0] >= 0 && xyz[1] >= 0 && xyz[2] >= 0) return {xyz, true};
+    throw Error(path + ": channels " + quote_untrusted(join(image.channel_names), 80) +
+                "; clip needs colour channels named R, G and B (or X, Y and Z for CIE XYZ)");
 }
 
 int run_clip_image(const ClipOptions& o, const Pipeline& p) {
@@ -295,7 +306,26 @@ int run_clip_image(const ClipOptions& o, const Pipeline& p) {
     }
 
     io::Image image = io::read_image(o.in);
-    const std::array<int, 3> rgb = colour_channels(image, o.in);
+    const ColourChannels channels = colour_channels(image, o.in);
+    const std::array<int, 3>& rgb = channels.index;
+    // An image's channel names say what it holds: X, Y, Z is CIE XYZ. --from may say so too
+    // (or be left out); naming an RGB space for it would clip XYZ as RGB.
+    std::optional<Pipeline> xyz_pipeline;
+    if (channels.xyz && p.from.family != Family::xyz) {
+        if (o.from_option->count() > 0) {
+            throw UsageError(o.in + " holds X, Y and Z channels (CIE XYZ) but --from is " + o.from +
+                             "; give --from xyz, or leave --from out");
+        }
+        ClipOptions as_xyz = o;
+        as_xyz.from = "xyz";
+        xyz_pipeline.emplace(make_pipeline(as_xyz));
+    }
+    const Pipeline& pipe = xyz_pipeline ? *xyz_pipeline : p;
+    // PNG and TIFF keep a 16-bit input's depth unless --bits says otherwise.
+    const int bits =
+        o.bits_option->count() > 0 ? o.bits
+        : (image.stored_integer && image.stored_bits > 8) ? 16
+                                                          : 8;
     if (image.stored_integer && p.from.family == Family::rgb_linear) {
         fmt::print(
             stderr,
@@ -327,7 +357,7 @@ int run_clip_image(const ClipOptions& o, const Pipeline& p) {
             const float k = a > 0.0f ? 1.0f / a : 1.0f;
             Rgb c{};
             try {
-                c = p.to_linear({s[rgb[0]] * k, s[rgb[1]] * k, s[rgb[2]] * k});
+                c = pipe.to_linear({s[rgb[0]] * k, s[rgb[1]] * k, s[rgb[2]] * k});
             } catch (const Error& e) {
                 throw Error(o.in + ": pixel (" +
                             std::to_string(i % static_cast<std::size_t>(image.width)) + ", " +
@@ -357,12 +387,17 @@ int run_clip_image(const ClipOptions& o, const Pipeline& p) {
         }
     });
 
+    if (channels.xyz) {  // the colour channels now hold RGB of the destination
+        const char* const names[] = {"R", "G", "B"};
+        for (int c = 0; c < 3; ++c) image.channel_names[static_cast<std::size_t>(rgb[c])] = names[c];
+    }
     const std::string written = encoded_out ? p.dest->name() : p.dest->name() + "-linear";
     image.color_space = written;
     image.description = fmt::format(
-        "irid clip --method {} --from {} --to {} --max {}; colour space {} ({})", o.method, o.from,
+        "irid clip --method {} --from {} --to {} --max {}; colour space {} ({})", o.method,
+        channels.xyz ? std::string("xyz") : o.from,
         o.to, format_shortest(max), written, encoded_out ? "encoded" : "linear");
-    io::write_image(o.out, image, io::ImageEncoding{.bits = o.bits, .compression = {}});
+    io::write_image(o.out, image, io::ImageEncoding{.bits = bits, .compression = {}});
     return exit_success;
 }
 
@@ -386,8 +421,10 @@ void add_clip_command(CLI::App& app, Runner& runner) {
         "Bring out-of-gamut colours into an RGB space's gamut: CSV triples on stdin (R,G,B out), "
         "or an image IN → OUT");
     cmd->add_option("--method", o->method, "Clipping method: " + method_names());
-    cmd->add_option("--from", o->from, "Source space: " + join(space_names()))
-        ->capture_default_str();
+    o->from_option = cmd->add_option("--from", o->from,
+                                     "Source space: " + join(space_names()) +
+                                         ". An image with X, Y and Z channels is CIE XYZ")
+                         ->capture_default_str();
     cmd->add_option("--to", o->to,
                     "Destination RGB space, whose linear cube [0, max]^3 is the gamut: " +
                         join(rgb_space_names()) +
@@ -407,7 +444,9 @@ void add_clip_command(CLI::App& app, Runner& runner) {
         ->capture_default_str();
     cmd->add_option("--threads", o->threads, "Threads for images (0: all)")->capture_default_str();
     o->bits_option =
-        cmd->add_option("--bits", o->bits, "Bits per sample of PNG and TIFF output: 8 or 16")
+        cmd->add_option("--bits", o->bits,
+                        "Bits per sample of PNG and TIFF output: 8 or 16 (default: 16 for a 16-bit "
+                        "input image, else 8)")
             ->capture_default_str();
     cmd->add_flag(
         "--count-ops", o->count_ops,

@@ -31,8 +31,8 @@ int run_convert(const ConvertOptions& o) {
 
     const NumericTable table = read_stdin_table(3);
     std::string out = std::string(header_of(to)) + "\n";
-    for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        const auto& row = table.rows[r];
+    for (std::size_t r = 0; r < table.rows(); ++r) {
+        const std::span<const double> row = table.row(r);
         Vec3 result{};
         try {
             result = convert({row[0], row[1], row[2]});

@@ -24,7 +24,7 @@ Metric parse_metric(const std::string& name) {
                      "' for --metric; valid names: ciede2000, cie76, cieuv, oklab");
 }
 
-double difference(Metric metric, const std::vector<double>& r) {
+double difference(Metric metric, std::span<const double> r) {
     switch (metric) {
         case Metric::ciede2000: return delta_e_2000({r[0], r[1], r[2]}, {r[3], r[4], r[5]});
         case Metric::cie76: return delta_e_76({r[0], r[1], r[2]}, {r[3], r[4], r[5]});
@@ -38,8 +38,8 @@ int run_delta_e(const DeltaEOptions& o) {
     const Metric metric = parse_metric(o.metric);
     const NumericTable table = read_stdin_table(6);
     std::string out = "delta_e\n";
-    for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        const double d = difference(metric, table.rows[r]);
+    for (std::size_t r = 0; r < table.rows(); ++r) {
+        const double d = difference(metric, table.row(r));
         if (!std::isfinite(d)) {
             throw Error("<stdin>:" + std::to_string(table.line_numbers[r]) +
                         ": the difference overflows; values are too large");

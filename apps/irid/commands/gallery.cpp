@@ -9,10 +9,11 @@
 #include "../cli_common.h"
 
 #include <irid/error.h>
+#include <irid/figures/clip_sets.h>
 #include <irid/figures/figures.h>
 #include <irid/gamut/clip.h>
 #include <irid/gamut/report.h>
-#include <irid/io/atomic_file.h>
+#include <irid/io/output_file.h>
 #include <irid/io/image.h>
 #include <irid/render/render.h>
 #include <irid/render/scene.h>
@@ -142,6 +143,7 @@ std::string format_number(double v, int digits = 2) { return fmt::format("{:.{}f
 int run_gallery(const GalleryOptions& o) {
     namespace fs = std::filesystem;
     const auto start = std::chrono::steady_clock::now();
+    if (o.dir.empty()) throw UsageError("-o: an empty folder name; give the folder to write into");
     const fs::path dir(o.dir);
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -293,8 +295,9 @@ int run_gallery(const GalleryOptions& o) {
     // --- The clip report ---------------------------------------------------------------------
     say("measuring the clip report");
     page.add("<h2>Gamut clipping: the clip report</h2>\n");
+    using figures::ClipReportSet;  // the report's sets are made in irid_figures (clip_sets.h)
     for (const ClipReportSet set : {ClipReportSet::spectrum, ClipReportSet::interference}) {
-        const ClipReport rep = measure_clip_report(clip_report_color_set(set, srgb()),
+        const ClipReport rep = measure_clip_report(figures::clip_report_color_set(set, srgb()),
                                                    Gamut(srgb(), 1.0), ClipReportOptions{0.05});
         page.add(fmt::format("<p>{} — {} colours, {} outside {} — {}</p>\n<table>\n"
                              "<tr><th>method</th><th>ΔE2000 mean</th><th>ΔE2000 p95</th>"
@@ -321,7 +324,7 @@ int run_gallery(const GalleryOptions& o) {
                              std::string(style) + "</style>\n</head>\n<body>\n" + page.html() +
                              "</body>\n</html>\n";
     const fs::path index = dir / "index.html";
-    io::write_text_file_atomically(index, html);
+    io::write_output_file(index, html);
     fmt::print("{}\n", fs::absolute(index).lexically_normal().string());
     return exit_success;
 }
@@ -334,12 +337,12 @@ void add_gallery_command(CLI::App& app, Runner& runner) {
         "gallery", "Render the scenes, figures and tables into DIR/index.html");
     cmd->add_option("-o,--output", o->dir, "Folder to write index.html and its images into")
         ->required();
-    cmd->add_option("--width", o->width, "Scene width in pixels")->check(CLI::Range(32, 4096));
-    cmd->add_option("--height", o->height, "Scene height in pixels")->check(CLI::Range(24, 4096));
-    cmd->add_option("--spp", o->spp, "Samples per pixel of the scenes")->check(CLI::Range(1, 256));
+    cmd->add_option("--width", o->width, "Scene width in pixels")->check(whole_number_in(32, 4096));
+    cmd->add_option("--height", o->height, "Scene height in pixels")->check(whole_number_in(24, 4096));
+    cmd->add_option("--spp", o->spp, "Samples per pixel of the scenes")->check(whole_number_in(1, 256));
     cmd->add_option("--figure-width", o->figure_width, "Figure width in pixels (height 5/8 of it)")
-        ->check(CLI::Range(320, 4096));
-    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
+        ->check(whole_number_in(320, 4096));
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(whole_number_in(0, 1024));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress messages on stderr");
     cmd->callback([o, &runner] { runner = [o] { return run_gallery(*o); }; });
 }

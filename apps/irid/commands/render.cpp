@@ -13,7 +13,7 @@
 
 #include <irid/error.h>
 #include <irid/gamut/clip.h>
-#include <irid/io/atomic_file.h>
+#include <irid/io/output_file.h>
 #include <irid/io/image.h>
 #include <irid/render/render.h>
 #include <irid/render/scene.h>
@@ -22,6 +22,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -77,8 +78,26 @@ int run_render(const RenderCliOptions& o) {
     (void)render::load_scene(o.scene);
 
     std::vector<std::string> overrides = o.assignments;
-    if (o.width) overrides.push_back(fmt::format("image.width={}", *o.width));
-    if (o.height) overrides.push_back(fmt::format("image.height={}", *o.height));
+    // --width or --height alone keeps the scene's aspect ratio (after its --set values).
+    std::optional<int> width = o.width, height = o.height;
+    if (width.has_value() != height.has_value()) {
+        render::Scene shape;
+        try {
+            shape = render::load_scene(o.scene, overrides);
+        } catch (const Error& e) {
+            throw UsageError(fmt::format("{} (from the command line's options)", e.what()));
+        }
+        const double aspect =
+            static_cast<double>(shape.image.width) / static_cast<double>(shape.image.height);
+        const auto rounded = [](double v) {
+            return static_cast<int>(std::clamp(std::lround(v), 1L,
+                                               static_cast<long>(render::max_image_side)));
+        };
+        if (width) height = rounded(*width / aspect);
+        else width = rounded(*height * aspect);
+    }
+    if (width) overrides.push_back(fmt::format("image.width={}", *width));
+    if (height) overrides.push_back(fmt::format("image.height={}", *height));
     if (o.spp) overrides.push_back(fmt::format("image.spp={}", *o.spp));
     if (o.seed) overrides.push_back(fmt::format("render.seed={}", *o.seed));
     if (!o.clip.empty()) {
@@ -114,10 +133,10 @@ int run_render(const RenderCliOptions& o) {
         if (fs::absolute(*o.linear).lexically_normal() == fs::absolute(out).lexically_normal())
             throw UsageError(fmt::format("--linear: '{}' is also the output image (-o)", *o.linear));
     }
-    // A missing folder (or a folder named as the file) fails now, not after the render; an
-    // AtomicFile checks the target and creates nothing until written.
-    (void)io::AtomicFile(out);
-    if (o.linear) (void)io::AtomicFile(*o.linear);
+    // A missing folder (or a folder named as the file) fails now, not after the render; the
+    // check creates nothing.
+    (void)io::check_output_path(out);
+    if (o.linear) (void)io::check_output_path(*o.linear);
 
     render::RenderOptions options;
     options.threads = o.threads;
@@ -138,37 +157,29 @@ int run_render(const RenderCliOptions& o) {
                                      scene.render.path == render::ColorPath::table ? "table" : "spectral",
                                      scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
                                      scene.render.clip);
+    // Both files or neither: each is written whole under a temporary name beside its target,
+    // and both are renamed into place only when both are complete.
+    io::OutputFile main_file(out);
+    io::write_image(main_file, image);
     if (o.linear) {
         io::Image linear = result.linear;
         linear.description = image.description + ", unclipped";
-        // Both files or neither: the unclipped image waits under a temporary name beside its
-        // target until the main output is written, so a failure leaves both targets as they were.
-        fs::path staged(*o.linear);
-        staged += fmt::format(".tmp-{}.exr", getpid());
-        io::write_image(staged, linear);
-        std::error_code ec;
-        try {
-            io::write_image(out, image);
-        } catch (const Error&) {
-            fs::remove(staged, ec);
-            throw;
-        }
-        fs::rename(staged, *o.linear, ec);
-        if (ec) {
-            fs::remove(staged, ec);
-            throw Error(fmt::format("{}: cannot move the finished file into place: {}", *o.linear,
-                                    ec.message()));
-        }
-    } else {
-        io::write_image(out, image);
+        io::OutputFile linear_file(*o.linear);
+        io::write_image(linear_file, linear);
+        linear_file.commit();
     }
+    main_file.commit();
     if (!o.quiet) {
         const auto& s = result.stats;
+        // Rays per second of the tracing alone: building the colour tables (the exact Morpho's
+        // takes most of its run) is counted apart.
+        const double tracing = std::max(s.seconds - s.table_seconds, 1e-9);
         fmt::print(stderr,
-                   "irid render: wrote {} ({}×{}, {} spp) in {:.2f} s: {:.2f} M rays/s, "
-                   "{:.1f} % of pixels out of gamut before the clip\n",
+                   "irid render: wrote {} ({}×{}, {} spp) in {:.2f} s ({:.2f} s building colour "
+                   "tables, {:.2f} s tracing {:.3g} M rays/s), {:.1f} % of pixels out of gamut "
+                   "before the clip\n",
                    out, scene.image.width, scene.image.height, scene.image.spp, s.seconds,
-                   static_cast<double>(s.rays) / s.seconds * 1e-6,
+                   s.table_seconds, tracing, static_cast<double>(s.rays) / tracing * 1e-6,
                    100.0 * static_cast<double>(s.out_of_gamut_pixels) /
                        (static_cast<double>(scene.image.width) * scene.image.height));
     }
@@ -186,12 +197,12 @@ void add_render_command(CLI::App& app, Runner& runner) {
         ->required();
     cmd->add_option("-o,--output", o->out, "Output image: .png, .tif/.tiff or .exr (default: SCENE.png)");
     cmd->add_option("--width", o->width, "Image width in pixels")
-        ->check(CLI::Range(1, render::max_image_side));
+        ->check(whole_number_in(1, render::max_image_side));
     cmd->add_option("--height", o->height, "Image height in pixels")
-        ->check(CLI::Range(1, render::max_image_side));
-    cmd->add_option("--spp", o->spp, "Samples per pixel")->check(CLI::Range(1, render::max_spp));
+        ->check(whole_number_in(1, render::max_image_side));
+    cmd->add_option("--spp", o->spp, "Samples per pixel")->check(whole_number_in(1, render::max_spp));
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")
-        ->check(CLI::Range(0, 1024));
+        ->check(whole_number_in(0, 1024));
     // CLI11 2.1 reads "-1" as 2^64 - 1 and saturates numbers beyond 2^64 - 1: check the text.
     cmd->add_option("--seed", o->seed, "Seed of the sampling and of the noise textures")
         ->check(CLI::Validator(

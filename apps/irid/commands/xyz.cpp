@@ -26,14 +26,20 @@ int run_xyz(const XyzOptions& o) {
     }
 
     const NumericTable table = read_stdin_table(0, 2);
-    if (table.rows.size() < 2) {
-        throw Error("<stdin>: a spectrum needs at least two wavelengths, found " +
-                    std::to_string(table.rows.size()));
+    std::string out = "X,Y,Z\n";
+    // No input, no spectra: the header alone, as convert, clip and delta-e answer empty input.
+    if (table.empty()) {
+        write_stdout(out);
+        return exit_success;
+    }
+    if (table.rows() < 2) {
+        throw Error("<stdin>:" + std::to_string(table.line_numbers.front()) +
+                    ": a spectrum needs at least two wavelengths, found 1");
     }
     std::vector<double> lambda;
-    lambda.reserve(table.rows.size());
-    for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        const double l = table.rows[r][0];
+    lambda.reserve(table.rows());
+    for (std::size_t r = 0; r < table.rows(); ++r) {
+        const double l = table.row(r)[0];
         const std::string where = "<stdin>:" + std::to_string(table.line_numbers[r]) + ": ";
         if (!(l > 0.0)) throw Error(where + "wavelength " + format_shortest(l) + " nm must be positive");
         if (!lambda.empty() && !(l > lambda.back())) {
@@ -49,11 +55,9 @@ int run_xyz(const XyzOptions& o) {
                     "360-830 nm");
     }
 
-    const std::size_t columns = table.rows.front().size();
-    std::string out = "X,Y,Z\n";
-    for (std::size_t c = 1; c < columns; ++c) {
-        std::vector<double> values(table.rows.size());
-        for (std::size_t r = 0; r < table.rows.size(); ++r) values[r] = table.rows[r][c];
+    for (std::size_t c = 1; c < table.columns; ++c) {
+        std::vector<double> values(table.rows());
+        for (std::size_t r = 0; r < table.rows(); ++r) values[r] = table.row(r)[c];
         const PiecewiseLinearSpectrum measured(lambda, std::move(values), Extrapolation::hold_ends);
         const Xyz xyz = reflectance_to_xyz(DenseSpectrum::resample(measured), illuminant, observer);
         if (!std::isfinite(xyz.X) || !std::isfinite(xyz.Y) || !std::isfinite(xyz.Z)) {
