@@ -166,6 +166,8 @@ check "every PNG in the gallery's folder is whole" every_png_whole "$W/gal"
 
 # A real full file system: a 64 KiB tmpfs.
 if is_root && mkdir -p "$W/tiny" && mount -t tmpfs -o size=64k tmpfs "$W/tiny" 2>/dev/null; then
+    # Unmounted however the script ends, before its folder is removed.
+    trap 'umount "$W/tiny" 2>/dev/null; rm -rf "$TMP"' EXIT
     head -c 60000 /dev/zero >"$W/tiny/filler"
     printf 'keep\n' >"$W/tiny/keep.png"
     sh_run '"$IRID" render oil-slick --width 200 --height 150 --spp 1 -q -o tiny/keep.png'
