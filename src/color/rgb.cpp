@@ -149,6 +149,8 @@ using Kind = TransferFunction::Kind;
 constexpr Xy d65_xy{0.3127, 0.3290};
 /// Illuminant C as the FCC 1953 NTSC standard gives it.
 constexpr Xy c_xy{0.310, 0.316};
+/// The ACES white point (SMPTE ST 2065-1:2012 §4.1; Academy S-2008-001), near but not D60.
+constexpr Xy aces_white_xy{0.32168, 0.33767};
 
 }  // namespace
 
@@ -194,9 +196,24 @@ const RgbSpace& ntsc1953() {
     return space;
 }
 
+const RgbSpace& aces2065_1() {
+    // SMPTE ST 2065-1:2012 §4 (Academy S-2008-001): AP0 primaries, the ACES white; linear.
+    static const RgbSpace space("aces2065-1", {{0.7347, 0.2653}, {0.0, 1.0}, {0.0001, -0.0770}},
+                                aces_white_xy, TransferFunction(Kind::linear));
+    return space;
+}
+
+const RgbSpace& acescg() {
+    // Academy S-2014-004 (ACEScg) §4.1: AP1 primaries, the ACES white; linear.
+    static const RgbSpace space("acescg", {{0.713, 0.293}, {0.165, 0.830}, {0.128, 0.044}},
+                                aces_white_xy, TransferFunction(Kind::linear));
+    return space;
+}
+
 std::span<const RgbSpace* const> builtin_rgb_spaces() {
-    static const std::array<const RgbSpace*, 6> spaces{&srgb(),     &display_p3(), &rec2020(),
-                                                       &adobe_rgb(), &smpte_c(),    &ntsc1953()};
+    static const std::array<const RgbSpace*, 8> spaces{
+        &srgb(),     &display_p3(), &rec2020(),    &adobe_rgb(),
+        &smpte_c(),  &ntsc1953(),   &aces2065_1(), &acescg()};
     return spaces;
 }
 

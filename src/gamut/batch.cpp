@@ -7,6 +7,8 @@
 #include <irid/error.h>
 #include <irid/gamut/batch.h>
 
+#include "kernels.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
@@ -87,11 +89,36 @@ void clip_range(const GamutClipper& clipper, const detail::BatchFloatParams& p, 
             clamp_scalar(in + 3 * done, out + 3 * done, colours - done, p);
             return;
         }
-        default: clipper_scalar(clipper, in, out, colours); return;
+        default: {
+            const detail::ClipKernel kernel = simd ? detail::simd_kernel(clipper.method()) : nullptr;
+            const std::size_t done = kernel ? kernel(clipper, in, out, colours) : 0;
+            clipper_scalar(clipper, in + 3 * done, out + 3 * done, colours - done);
+            return;
+        }
     }
 }
 
 }  // namespace
+
+namespace detail {
+
+ClipKernel simd_kernel(ClipMethod method) noexcept {
+    switch (method) {
+        case ClipMethod::smits_xyz: return clip_smits_xyz_simd;
+        case ClipMethod::luv_lightness_hue: return clip_luv_lightness_hue_simd;
+        case ClipMethod::smits_corrected: return clip_smits_corrected_simd;
+        case ClipMethod::smits_soft: return clip_smits_soft_simd;
+        case ClipMethod::aces_rgc: return clip_aces_rgc_simd;
+        case ClipMethod::css: return clip_css_simd;
+        case ClipMethod::css_raytrace: return clip_css_raytrace_simd;
+        case ClipMethod::oklab: return clip_oklab_simd;
+        case ClipMethod::oklab_adaptive: return clip_oklab_adaptive_simd;
+        case ClipMethod::oklab_cusp: return clip_oklab_cusp_simd;
+        default: return nullptr;
+    }
+}
+
+}  // namespace detail
 
 void clip_batch(const GamutClipper& clipper, std::span<float> rgb, const BatchOptions& options) {
     clip_batch(clipper, std::span<const float>(rgb), rgb, options);

@@ -8,15 +8,45 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <charconv>
 #include <limits>
 #include <string>
+#include <system_error>
 
 namespace irid {
 namespace {
 
-constexpr std::array<ClipMethod, 8> all_methods{
-    ClipMethod::clamp,   ClipMethod::smits, ClipMethod::smits_xyz, ClipMethod::luv_lightness_hue,
-    ClipMethod::luv_hue, ClipMethod::css,   ClipMethod::oklab,     ClipMethod::smits_corrected};
+constexpr std::array<ClipMethod, 13> all_methods{
+    ClipMethod::clamp,          ClipMethod::smits,      ClipMethod::smits_xyz,
+    ClipMethod::luv_lightness_hue, ClipMethod::luv_hue, ClipMethod::css,
+    ClipMethod::oklab,          ClipMethod::smits_corrected, ClipMethod::css_raytrace,
+    ClipMethod::oklab_adaptive, ClipMethod::oklab_cusp, ClipMethod::smits_soft,
+    ClipMethod::aces_rgc};
+
+// The parameters of each method. Ranges are closed; consistency between parameters is checked
+// by GamutClipper::check_parameters.
+//
+// aces-rgc: the published defaults of LMT.Academy.ReferenceGamutCompress.ctl (ACES 1.3), in
+// ACEScg; ranges as OpenColorIO 2.1 validates FixedFunction ACES_GamutComp13's parameters.
+constexpr std::array<ClipParameterInfo, 8> aces_rgc_parameters{{
+    {"limit-cyan", 1.147, 1.001, 65504.0, false, "distance limit of the red channel (toward cyan): it maps to 1"},
+    {"limit-magenta", 1.264, 1.001, 65504.0, false, "distance limit of the green channel (toward magenta)"},
+    {"limit-yellow", 1.312, 1.001, 65504.0, false, "distance limit of the blue channel (toward yellow)"},
+    {"threshold-cyan", 0.815, 0.0, 0.9995, false, "distance of the red channel below which nothing moves"},
+    {"threshold-magenta", 0.803, 0.0, 0.9995, false, "distance of the green channel below which nothing moves"},
+    {"threshold-yellow", 0.880, 0.0, 0.9995, false, "distance of the blue channel below which nothing moves"},
+    {"power", 1.2, 1.0, 65504.0, false, "power of the compression curve (higher: sharper knee)"},
+    {"clip", 0.0, 0.0, 1.0, true, "clamp the result into the cube [0, max]^3 (images: default true)"},
+}};
+// Ottosson 2021 ("gamut_clip_adaptive_L0_0_5", "..._L_cusp"): alpha = 0.05 is his default.
+constexpr std::array<ClipParameterInfo, 1> oklab_adaptive_parameters{{
+    {"alpha", 0.05, 0.0, 100.0, false, "how far L0 stays from 0.5 (or the cusp's L) toward the colour's L as chroma grows"},
+}};
+constexpr std::array<ClipParameterInfo, 3> smits_soft_parameters{{
+    {"threshold", 0.8, 0.0, 0.9999, false, "distance from the grey, as a fraction of the boundary's, below which nothing moves"},
+    {"limit", 1.5, 1.0001, 1000.0, false, "distance (same unit) that maps onto the boundary; farther colours stop on it"},
+    {"power", 1.2, 1.0, 100.0, false, "power of the compression curve (ACES' form)"},
+}};
 
 Vec3 v3(const Rgb& c) noexcept { return {c.r, c.g, c.b}; }
 Rgb rgb(const Vec3& v) noexcept { return {v[0], v[1], v[2]}; }
@@ -93,8 +123,63 @@ std::string_view clip_method_name(ClipMethod method) noexcept {
         case ClipMethod::css: return "css";
         case ClipMethod::oklab: return "oklab";
         case ClipMethod::smits_corrected: return "smits-corrected";
+        case ClipMethod::css_raytrace: return "css-raytrace";
+        case ClipMethod::oklab_adaptive: return "oklab-adaptive";
+        case ClipMethod::oklab_cusp: return "oklab-cusp";
+        case ClipMethod::smits_soft: return "smits-soft";
+        case ClipMethod::aces_rgc: return "aces-rgc";
     }
     return "";
+}
+
+std::span<const ClipParameterInfo> clip_parameters(ClipMethod method) noexcept {
+    switch (method) {
+        case ClipMethod::aces_rgc: return aces_rgc_parameters;
+        case ClipMethod::oklab_adaptive:
+        case ClipMethod::oklab_cusp: return oklab_adaptive_parameters;
+        case ClipMethod::smits_soft: return smits_soft_parameters;
+        default: return {};
+    }
+}
+
+bool has_inverse(ClipMethod method) noexcept {
+    return method == ClipMethod::aces_rgc || method == ClipMethod::smits_soft;
+}
+
+bool moves_in_gamut_colours(ClipMethod method) noexcept {
+    return method == ClipMethod::aces_rgc || method == ClipMethod::smits_soft;
+}
+
+ClipSettings& ClipSettings::set(std::string_view name, double value) {
+    for (auto& [n, v] : values) {
+        if (n == name) {
+            v = value;
+            return *this;
+        }
+    }
+    values.emplace_back(std::string(name), value);
+    return *this;
+}
+
+ClipSettings& ClipSettings::set(std::string_view name_equals_value) {
+    const std::size_t eq = name_equals_value.find('=');
+    if (eq == std::string_view::npos || eq == 0) {
+        throw Error("parameter '" + std::string(name_equals_value) +
+                    "' is not of the form name=value");
+    }
+    const std::string_view name = name_equals_value.substr(0, eq);
+    const std::string_view text = name_equals_value.substr(eq + 1);
+    for (const auto& [word, v] : {std::pair{"true", 1.0}, {"yes", 1.0}, {"on", 1.0},
+                                  {"false", 0.0}, {"no", 0.0}, {"off", 0.0}}) {
+        if (text == word) return set(name, v);
+    }
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size()) {
+        throw Error("parameter " + std::string(name) + ": value '" + std::string(text) +
+                    "' is not a number nor true/false");
+    }
+    return set(name, v);
 }
 
 ClipMethod parse_clip_method(std::string_view name) {
@@ -113,11 +198,54 @@ Gamut::Gamut(const RgbSpace& space, double max) : m_space(space), m_max(max) {
     m_luminance = space.to_xyz_matrix()[1];
 }
 
-GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut)
+namespace {
+
+std::string describe_parameters(ClipMethod method) {
+    std::string out;
+    for (const ClipParameterInfo& p : clip_parameters(method)) {
+        out += (out.empty() ? "" : ", ") + std::string(p.name) +
+               (p.boolean ? std::string(" (true or false)")
+                          : " in [" + format_shortest(p.min) + ", " + format_shortest(p.max) + "]");
+    }
+    return out;
+}
+
+}  // namespace
+
+GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut, const ClipSettings& settings)
     : m_method(method),
       m_gamut(gamut),
       m_rgb_to_xyz(gamut.space().to_xyz_matrix()),
-      m_xyz_to_rgb(gamut.space().from_xyz_matrix()) {
+      m_xyz_to_rgb(gamut.space().from_xyz_matrix()),
+      m_inverse(settings.inverse) {
+    const std::string name(clip_method_name(method));
+    const std::span<const ClipParameterInfo> known = clip_parameters(method);
+    for (const ClipParameterInfo& p : known) m_parameters.emplace_back(p.name, p.default_value);
+    for (const auto& [key, value] : settings.values) {
+        const auto it = std::find_if(known.begin(), known.end(),
+                                     [&](const ClipParameterInfo& p) { return p.name == key; });
+        if (it == known.end()) {
+            throw Error("method " + name + " has no parameter '" + key + "'" +
+                        (known.empty() ? "; it takes none"
+                                       : "; its parameters: " + describe_parameters(method)));
+        }
+        const bool ok = it->boolean ? (value == 0.0 || value == 1.0)
+                                    : (std::isfinite(value) && value >= it->min && value <= it->max);
+        if (!ok) {
+            throw Error("method " + name + ": parameter " + key + " = " + format_shortest(value) +
+                        (it->boolean ? " must be true or false"
+                                     : " must be in [" + format_shortest(it->min) + ", " +
+                                           format_shortest(it->max) + "]"));
+        }
+        m_parameters[static_cast<std::size_t>(it - known.begin())].second = value;
+    }
+    if (m_inverse && !has_inverse(method)) {
+        std::string with;
+        for (const ClipMethod m : all_methods) {
+            if (has_inverse(m)) with += (with.empty() ? "" : ", ") + std::string(clip_method_name(m));
+        }
+        throw Error("method " + name + " has no inverse; methods with one: " + with);
+    }
     // Oklab is defined on XYZ relative to D65 (Ottosson 2020): adapt from the space's white.
     const Xy d65{0.3127, 0.3290};
     const Xy w = gamut.space().white();
@@ -125,12 +253,32 @@ GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut)
                             ? Mat3::identity()
                             : adaptation_matrix(xy_to_xyz(w), xy_to_xyz(d65), ChromaticAdaptation::bradford);
     m_rgb_to_lms = oklab_m1 * to_d65 * m_rgb_to_xyz;
-    m_lms_to_rgb = inverse(m_rgb_to_lms, "RGB to LMS matrix");
+    m_lms_to_rgb = irid::inverse(m_rgb_to_lms, "RGB to LMS matrix");
     const double max = gamut.max();
     const Vec3 white = m_rgb_to_xyz * Vec3{max, max, max};
     m_white = {white[0], white[1], white[2]};
     m_white_oklab_l = to_oklab({max, max, max}).L;
     m_white_uv = xyz_to_uv_prime(m_white);
+    prepare();
+    m_confined = method != ClipMethod::aces_rgc || parameter("clip") != 0.0;
+}
+
+void GamutClipper::prepare() {
+    switch (m_method) {
+        case ClipMethod::aces_rgc: prepare_aces_rgc(); return;
+        case ClipMethod::smits_soft: prepare_smits_soft(); return;
+        case ClipMethod::oklab_adaptive:
+        case ClipMethod::oklab_cusp: prepare_oklab_projection(); return;
+        default: return;
+    }
+}
+
+double GamutClipper::parameter(std::string_view name) const {
+    for (const auto& [n, v] : m_parameters) {
+        if (n == name) return v;
+    }
+    throw Error("method " + std::string(clip_method_name(m_method)) + " has no parameter '" +
+                std::string(name) + "'");
 }
 
 Oklab GamutClipper::to_oklab(const Rgb& c) const noexcept {
@@ -147,6 +295,11 @@ Rgb GamutClipper::from_oklab(const Oklab& c) const noexcept {
 Rgb GamutClipper::clip(const Rgb& linear) const noexcept {
     const Rgb c{finite_or_default(linear.r), finite_or_default(linear.g), finite_or_default(linear.b)};
     if (m_method == ClipMethod::clamp) return clamp(c);
+    if (m_method == ClipMethod::aces_rgc) {
+        const Rgb out = aces_rgc(c);
+        return confines_to_cube() ? clamp(out) : out;
+    }
+    if (m_method == ClipMethod::smits_soft) return clamp(smits_soft(c));
     if (m_gamut.contains(c)) return c;
     Rgb out = clip_finite(c);
     // Rounding may leave a result a few ulps outside a face; the contract is [0, max]³.
@@ -176,6 +329,11 @@ Rgb GamutClipper::clip_finite(const Rgb& c) const noexcept {
         case ClipMethod::css: return css(c);
         case ClipMethod::oklab: return oklab(c);
         case ClipMethod::smits_corrected: return smits_corrected(c);
+        case ClipMethod::css_raytrace: return css_raytrace(c);
+        case ClipMethod::oklab_adaptive: return oklab_adaptive(c);
+        case ClipMethod::oklab_cusp: return oklab_cusp(c);
+        case ClipMethod::smits_soft: return smits_soft(c);
+        case ClipMethod::aces_rgc: return aces_rgc(c);
     }
     return c;
 }

@@ -52,7 +52,7 @@ TEST(RgbSpace, EveryBuiltinMapsWhiteToItsWhiteAndPrimariesToTheirChromaticities)
         EXPECT_NEAR(b.x, s->primaries().blue.x, 1e-14) << s->name();
         EXPECT_EQ(find_rgb_space(s->name()), s);
     }
-    EXPECT_EQ(builtin_rgb_spaces().size(), 6u);
+    EXPECT_EQ(builtin_rgb_spaces().size(), 8u);
     EXPECT_EQ(find_rgb_space("srgb-linear"), nullptr);
 }
 
@@ -177,6 +177,34 @@ TEST(RgbSpace, UserDefinedSpacesAreValidated) {
     EXPECT_NEAR(ap0.to_xyz_matrix()[1][0], 0.3439664, 1e-6);
     EXPECT_NEAR(ap0.to_xyz_matrix()[1][1], 0.7281661, 1e-6);
     EXPECT_NEAR(ap0.to_xyz_matrix()[1][2], -0.0721325, 1e-6);
+}
+
+// Academy S-2014-004 §4.1 and S-2008-001 (ST 2065-1) Annex: the published normalised primary
+// matrices, to the ten decimals they are printed with.
+TEST(RgbSpace, AcesMatricesAreThePublishedOnes) {
+    const Mat3 ap0{{{{0.9525523959, 0.0000000000, 0.0000936786},
+                    {0.3439664498, 0.7281660966, -0.0721325464},
+                    {0.0000000000, 0.0000000000, 1.0088251844}}}};
+    const Mat3 ap1{{{{0.6624541811, 0.1340042065, 0.1561876870},
+                    {0.2722287168, 0.6740817658, 0.0536895174},
+                    {-0.0055746495, 0.0040607335, 1.0103391003}}}};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            EXPECT_NEAR(aces2065_1().to_xyz_matrix()[i][j], ap0[i][j], 1e-9) << i << j;
+            EXPECT_NEAR(acescg().to_xyz_matrix()[i][j], ap1[i][j], 1e-9) << i << j;
+        }
+    }
+    // AP1 → AP0 (S-2014-004 §4.3), same white: no adaptation.
+    const Mat3 ap1_to_ap0 = aces2065_1().from_xyz_matrix() * acescg().to_xyz_matrix();
+    const Mat3 published{{{{0.6954522414, 0.1406786965, 0.1638690622},
+                          {0.0447945634, 0.8596711185, 0.0955343182},
+                          {-0.0055258826, 0.0040252103, 1.0015006723}}}};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) EXPECT_NEAR(ap1_to_ap0[i][j], published[i][j], 1e-9) << i << j;
+    }
+    EXPECT_EQ(find_rgb_space("aces2065-1"), &aces2065_1());
+    EXPECT_EQ(find_rgb_space("acescg"), &acescg());
+    EXPECT_EQ(acescg().transfer().kind(), TransferFunction::Kind::linear);
 }
 
 }  // namespace

@@ -46,6 +46,8 @@ struct ClipOptions {
     int threads = 0;
     int bits = 8;
     bool count_ops = false;
+    std::vector<std::string> params;
+    bool inverse = false;
     std::string in;
     std::string out;
     const CLI::Option* bits_option = nullptr;
@@ -56,6 +58,22 @@ std::string method_names() {
     std::vector<std::string> names;
     for (const ClipMethod m : clip_methods()) names.emplace_back(clip_method_name(m));
     return join(names);
+}
+
+/// "aces-rgc: limit-cyan (default 1.147), ...; oklab-adaptive: ..." for --help.
+std::string parameter_help() {
+    std::string out;
+    for (const ClipMethod m : clip_methods()) {
+        std::string list;
+        for (const ClipParameterInfo& p : clip_parameters(m)) {
+            list += (list.empty() ? "" : ", ") + std::string(p.name) + " (default " +
+                    (p.boolean ? std::string(p.default_value != 0.0 ? "true" : "false")
+                               : format_shortest(p.default_value)) +
+                    ")";
+        }
+        if (!list.empty()) out += (out.empty() ? "" : "; ") + std::string(clip_method_name(m)) + ": " + list;
+    }
+    return out;
 }
 
 // --- Table 1 ---------------------------------------------------------------------------------
@@ -134,7 +152,35 @@ struct Pipeline {
     }
 };
 
-Pipeline make_pipeline(const ClipOptions& o) {
+/// The method's settings from --param and --inverse. An image gets aces-rgc's final clip unless
+/// --param clip= says otherwise: a file cannot hold what a display cannot show.
+ClipSettings make_settings(const ClipOptions& o, ClipMethod method, bool image) {
+    ClipSettings settings;
+    settings.inverse = o.inverse;
+    bool clip_given = false;
+    for (const std::string& p : o.params) {
+        try {
+            settings.set(p);
+        } catch (const Error& e) {
+            throw UsageError(std::string("--param: ") + e.what());
+        }
+        clip_given = clip_given || p.starts_with("clip=");
+    }
+    if (image && method == ClipMethod::aces_rgc && !clip_given) settings.set("clip", 1.0);
+    return settings;
+}
+
+/// "--param k=v ..." of the method's settings, for an image's description.
+std::string describe_settings(const GamutClipper& clipper) {
+    std::string out;
+    for (const auto& [name, value] : clipper.parameters()) {
+        out += " --param " + name + "=" + format_shortest(value);
+    }
+    if (clipper.inverse()) out += " --inverse";
+    return out;
+}
+
+Pipeline make_pipeline(const ClipOptions& o, bool image) {
     if (o.method.empty()) {
         throw UsageError("--method is required (or --count-ops); valid methods: " + method_names());
     }
@@ -168,6 +214,13 @@ Pipeline make_pipeline(const ClipOptions& o) {
         throw UsageError("--max " + format_shortest(o.max) +
                          ": the peak must be finite, > 0 and <= 1e6");
     }
+    const ClipSettings settings = make_settings(o, method, image);
+    std::optional<GamutClipper> clipper;
+    try {
+        clipper.emplace(method, *gamut, settings);
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
     const Space dest_linear{Family::rgb_linear, to.rgb};
     const bool same_space = is_rgb(from) && from.rgb == to.rgb;
     const bool linear_source = from.family == Family::xyz || is_rgb(from);
@@ -185,7 +238,7 @@ Pipeline make_pipeline(const ClipOptions& o) {
                     to,
                     to.rgb,
                     Converter(from, dest_linear, white, cat),
-                    GamutClipper(method, *gamut),
+                    *clipper,
                     same_space,
                     linear_source,
                     to_destination};
@@ -318,7 +371,7 @@ int run_clip_image(const ClipOptions& o, const Pipeline& p) {
         }
         ClipOptions as_xyz = o;
         as_xyz.from = "xyz";
-        xyz_pipeline.emplace(make_pipeline(as_xyz));
+        xyz_pipeline.emplace(make_pipeline(as_xyz, true));
     }
     const Pipeline& pipe = xyz_pipeline ? *xyz_pipeline : p;
     // PNG and TIFF keep a 16-bit input's depth unless --bits says otherwise.
@@ -394,9 +447,9 @@ int run_clip_image(const ClipOptions& o, const Pipeline& p) {
     const std::string written = encoded_out ? p.dest->name() : p.dest->name() + "-linear";
     image.color_space = written;
     image.description = fmt::format(
-        "irid clip --method {} --from {} --to {} --max {}; colour space {} ({})", o.method,
-        channels.xyz ? std::string("xyz") : o.from,
-        o.to, format_shortest(max), written, encoded_out ? "encoded" : "linear");
+        "irid clip --method {}{} --from {} --to {} --max {}; colour space {} ({})", o.method,
+        describe_settings(p.clipper), channels.xyz ? std::string("xyz") : o.from, o.to,
+        format_shortest(max), written, encoded_out ? "encoded" : "linear");
     io::write_image(o.out, image, io::ImageEncoding{.bits = bits, .compression = {}});
     return exit_success;
 }
@@ -406,7 +459,7 @@ int run_clip(const ClipOptions& o) {
         if (!o.in.empty()) throw UsageError("--count-ops takes no files");
         return run_count_ops();
     }
-    const Pipeline p = make_pipeline(o);
+    const Pipeline p = make_pipeline(o, !o.in.empty());
     if (o.in.empty()) return run_clip_csv(o, p);
     if (o.out.empty()) throw UsageError("give both IN and OUT (images), or neither (CSV on stdin)");
     return run_clip_image(o, p);
@@ -421,6 +474,11 @@ void add_clip_command(CLI::App& app, Runner& runner) {
         "Bring out-of-gamut colours into an RGB space's gamut: CSV triples on stdin (R,G,B out), "
         "or an image IN → OUT");
     cmd->add_option("--method", o->method, "Clipping method: " + method_names());
+    cmd->add_option("--param", o->params,
+                    "A method's parameter, name=value (repeatable): " + parameter_help() +
+                        ". Images get aces-rgc's clip=true unless given");
+    cmd->add_flag("--inverse", o->inverse,
+                  "Apply the method's inverse (aces-rgc, smits-soft: undo a compression)");
     o->from_option = cmd->add_option("--from", o->from,
                                      "Source space: " + join(space_names()) +
                                          ". An image with X, Y and Z channels is CIE XYZ")

@@ -101,10 +101,16 @@ private:
 /// NTSC 1953: FCC 1953 primaries, illuminant C, γ = 2.2 (the FCC's assumed display gamma).
 [[nodiscard]] const RgbSpace& ntsc1953();
 
+/// ACES2065-1: AP0 primaries (blue imaginary, y < 0), the ACES white (0.32168, 0.33767), linear
+/// (SMPTE ST 2065-1:2012). Named "aces2065-1".
+[[nodiscard]] const RgbSpace& aces2065_1();
+/// ACEScg: AP1 primaries, the ACES white, linear (Academy S-2014-004). Named "acescg".
+[[nodiscard]] const RgbSpace& acescg();
+
 /// Every built-in space, in a stable order (the order of the names in messages).
 [[nodiscard]] std::span<const RgbSpace* const> builtin_rgb_spaces();
 /// The built-in space with this name ("srgb", "display-p3", "rec2020", "adobe-rgb",
-/// "smpte-c", "ntsc1953"), or nullptr.
+/// "smpte-c", "ntsc1953", "aces2065-1", "acescg"), or nullptr.
 [[nodiscard]] const RgbSpace* find_rgb_space(std::string_view name) noexcept;
 
 }  // namespace irid

@@ -43,6 +43,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace irid {
@@ -76,6 +77,23 @@ enum class ClipMethod {
     /// smits followed by one Newton step along the gamut face toward the input's Oklab hue, at
     /// constant luminance, no longer than smits' own move.
     smits_corrected,
+    /// CSS Color Module Level 4 "Ray Trace" gamut mapping (§13.2.3 of the current draft, with
+    /// the corrections of csswg-drafts issue 14029): up to four slab intersections from the
+    /// OkLCh(L, 0, h) anchor toward the colour, L and h restored after each, then a final clip.
+    css_raytrace,
+    /// Ottosson 2021, "gamut_clip_adaptive_L0_0_5": toward L0 = an adaptive point around 0.5
+    /// in the colour's Oklab hue plane (parameter alpha), stopped exactly on the boundary.
+    oklab_adaptive,
+    /// Ottosson 2021, "gamut_clip_adaptive_L0_L_cusp": the same around the cusp's lightness.
+    oklab_cusp,
+    /// The thesis' direction (constant Y, toward the grey of equal luminance) with a soft
+    /// compression instead of the hard stop: nothing inside the threshold moves, the boundary is
+    /// reached at the limit (parameters threshold, limit, power).
+    smits_soft,
+    /// ACES 1.3 Reference Gamut Compression (Academy LMT.Academy.ReferenceGamutCompress.ctl;
+    /// OpenColorIO 2.1 FixedFunction ACES_GamutComp13), per channel in the linear RGB of the
+    /// destination. Its output is not confined to the cube unless its parameter clip is true.
+    aces_rgc,
 };
 
 /// Every method, in order.
@@ -84,6 +102,37 @@ enum class ClipMethod {
 [[nodiscard]] std::string_view clip_method_name(ClipMethod method) noexcept;
 /// Throws irid::Error listing the names when `name` is none of them.
 [[nodiscard]] ClipMethod parse_clip_method(std::string_view name);
+
+/// One parameter of a method: its name (as in `irid clip --param name=value`), default, allowed
+/// closed range and meaning. A boolean parameter takes true/false (stored as 1/0).
+struct ClipParameterInfo {
+    std::string_view name;
+    double default_value;
+    double min, max;
+    bool boolean;
+    std::string_view description;
+};
+/// The parameters of a method, in the order of messages (empty for most methods).
+[[nodiscard]] std::span<const ClipParameterInfo> clip_parameters(ClipMethod method) noexcept;
+/// Whether `ClipSettings::inverse` is allowed for the method (aces-rgc, smits-soft).
+[[nodiscard]] bool has_inverse(ClipMethod method) noexcept;
+/// Whether the method moves colours that are inside the gamut (the soft ones: aces-rgc and
+/// smits-soft compress what lies beyond their threshold).
+[[nodiscard]] bool moves_in_gamut_colours(ClipMethod method) noexcept;
+
+/// A method's parameter values, set by name, and the direction. Values not set take their
+/// defaults. Checked by GamutClipper's constructor against the method.
+struct ClipSettings {
+    std::vector<std::pair<std::string, double>> values;
+    bool inverse = false;
+
+    /// Sets `name` to `value` (the last setting of a name wins).
+    ClipSettings& set(std::string_view name, double value);
+    /// Parses "name=value" (value a number, or true/false/yes/no/on/off/1/0 for any parameter)
+    /// and sets it; throws irid::Error for a missing '=' or a value that is not a number or a
+    /// boolean. Whether the name and the value suit the method is checked by GamutClipper.
+    ClipSettings& set(std::string_view name_equals_value);
+};
 
 /// A display gamut: linear RGB of a space in [0, max]³.
 class Gamut {
@@ -155,10 +204,15 @@ template <class T>
 /// noexcept and allocates nothing.
 class GamutClipper {
 public:
-    GamutClipper(ClipMethod method, const Gamut& gamut);
+    /// Throws irid::Error for a parameter the method does not have (listing its parameters and
+    /// their ranges), a value outside its range or inconsistent with the others (naming both),
+    /// or `inverse` for a method that has none (listing those that have).
+    GamutClipper(ClipMethod method, const Gamut& gamut, const ClipSettings& settings = {});
 
-    /// Clips linear RGB of the gamut's space. In-gamut colours come back unchanged (css and
-    /// clamp included); every output is finite and inside [0, max]³.
+    /// Clips linear RGB of the gamut's space. Every output is finite. In-gamut colours come back
+    /// unchanged and every output is inside [0, max]³, except for the soft methods (which
+    /// compress colours beyond their threshold, inside or not) and for aces-rgc without clip=1
+    /// (whose curve, forward or inverse, may leave colours outside the cube, as OCIO's does).
     [[nodiscard]] Rgb clip(const Rgb& linear) const noexcept;
     /// The same on XYZ relative to the gamut's white (Y = max for the white), returning XYZ.
     /// For smits_xyz this is the thesis' XYZ form itself; the others go through RGB.
@@ -166,6 +220,31 @@ public:
 
     [[nodiscard]] ClipMethod method() const noexcept { return m_method; }
     [[nodiscard]] const Gamut& gamut() const noexcept { return m_gamut; }
+    /// The value of one of the method's parameters (set or default); throws irid::Error for a
+    /// name the method does not have.
+    [[nodiscard]] double parameter(std::string_view name) const;
+    /// Every parameter of the method with its value, in clip_parameters() order.
+    /// What a method precomputes from its parameters, for its batch kernel (layout: prepare_*).
+    [[nodiscard]] const std::array<double, 16>& derived() const noexcept { return m_derived; }
+    [[nodiscard]] const std::vector<std::pair<std::string, double>>& parameters() const noexcept {
+        return m_parameters;
+    }
+    [[nodiscard]] bool inverse() const noexcept { return m_inverse; }
+    /// Whether outputs are confined to [0, max]³ (false only for aces-rgc without clip).
+    [[nodiscard]] bool confines_to_cube() const noexcept { return m_confined; }
+
+    // The transforms the batch kernels need (batch_*.cpp), built once here.
+    [[nodiscard]] const Mat3& rgb_to_xyz() const noexcept { return m_rgb_to_xyz; }
+    [[nodiscard]] const Mat3& xyz_to_rgb() const noexcept { return m_xyz_to_rgb; }
+    /// Linear RGB → Oklab's LMS before the cube root (M1 after adapting to D65), and back.
+    [[nodiscard]] const Mat3& rgb_to_lms() const noexcept { return m_rgb_to_lms; }
+    [[nodiscard]] const Mat3& lms_to_rgb() const noexcept { return m_lms_to_rgb; }
+    /// XYZ of (max, max, max), and its Oklab lightness.
+    [[nodiscard]] const Xyz& white_xyz() const noexcept { return m_white; }
+    [[nodiscard]] double white_oklab_lightness() const noexcept { return m_white_oklab_l; }
+    /// Oklab of linear RGB of this gamut (adapted from the space's white to D65 when needed).
+    [[nodiscard]] Oklab to_oklab(const Rgb& c) const noexcept;
+    [[nodiscard]] Rgb from_oklab(const Oklab& c) const noexcept;
 
 private:
     [[nodiscard]] Rgb clip_finite(const Rgb& c) const noexcept;
@@ -176,11 +255,19 @@ private:
     [[nodiscard]] Rgb css(const Rgb& c) const noexcept;
     [[nodiscard]] Rgb oklab(const Rgb& c) const noexcept;
     [[nodiscard]] Rgb smits_corrected(const Rgb& c) const noexcept;
+    [[nodiscard]] Rgb css_raytrace(const Rgb& c) const noexcept;      // css_raytrace.cpp
+    [[nodiscard]] Rgb oklab_adaptive(const Rgb& c) const noexcept;    // oklab_projection.cpp
+    [[nodiscard]] Rgb oklab_cusp(const Rgb& c) const noexcept;        // oklab_projection.cpp
+    [[nodiscard]] Rgb smits_soft(const Rgb& c) const noexcept;        // smits_soft.cpp
+    [[nodiscard]] Rgb aces_rgc(const Rgb& c) const noexcept;          // aces_rgc.cpp
     [[nodiscard]] Rgb clamp(const Rgb& c) const noexcept;
-
-    /// Oklab of linear RGB of this gamut (adapted from the space's white to D65 when needed).
-    [[nodiscard]] Oklab to_oklab(const Rgb& c) const noexcept;
-    [[nodiscard]] Rgb from_oklab(const Oklab& c) const noexcept;
+    /// Checks the values of m_parameters that depend on each other, throwing irid::Error naming
+    /// them, and fills m_derived with what the method precomputes from them; the per-method
+    /// parts live beside each method (prepare_aces_rgc in aces_rgc.cpp, ...).
+    void prepare();
+    void prepare_aces_rgc();
+    void prepare_smits_soft();
+    void prepare_oklab_projection();
     /// The largest s in [0, 1] for which the chromaticity u' = u'n + s Δu', v' = v'n + s Δv' at
     /// luminance y is inside the gamut (exact: each face is a linear condition in s).
     [[nodiscard]] double luv_chroma_limit(double y, double du, double dv) const noexcept;
@@ -192,6 +279,11 @@ private:
     Xyz m_white;                      // XYZ of (max, max, max)
     UvPrime m_white_uv;               // its u'v', the neutral point of the CIELUV methods
     double m_white_oklab_l;           // Oklab L of (max, max, max)
+    std::vector<std::pair<std::string, double>> m_parameters;  // every parameter, resolved
+    bool m_inverse = false;
+    bool m_confined = true;
+    /// What a method precomputes from its parameters (its own layout, see prepare_*).
+    std::array<double, 16> m_derived{};
 };
 
 /// Operation counts of the thesis' RGB clip on one colour (Table 1), from the same template run

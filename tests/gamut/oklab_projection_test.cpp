@@ -1,0 +1,3 @@
+#include <irid/gamut/clip.h>
+
+#include <gtest/gtest.h>
