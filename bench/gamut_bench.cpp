@@ -1,78 +1,59 @@
-// Throughput of gamut clipping over batches of interleaved float RGB (irid::clip_batch).
+// Throughput of gamut clipping over batches of interleaved float RGB (irid::clip_batch), every
+// method, beside memcpy of the same buffers.
 //
-// The input is 2^20 fully out-of-gamut colours of linear sRGB: uniform in [-0.5, 1.5]^3
-// (std::mt19937, fixed seed), each colour redrawn until at least one channel lies outside [0, 1].
-// That is 12 MiB of floats in and 12 MiB out, six times the L2, so the fast paths stream from
-// beyond it (the shared L3 or main memory). Both buffers are allocated and written once before
-// the timed loop. One item is one colour (12 bytes read, 12 bytes written); bytes/s count the
-// input bytes.
+// Input (gamut_bench_input.h): out-of-gamut colours of linear sRGB, uniform in [-0.5, 1.5]^3,
+// each redrawn until a channel lies outside [0, 1]; the destination is the sRGB gamut [0, 1]^3.
+// Two buffers: "cache" = 2^20 colours (12 MiB in, 12 MiB out: past the L2, inside a 32 MiB L3)
+// and "dram" = 2^24 colours (192 MiB in and out: more than four times a 32 MiB L3). Both are
+// allocated and written before the timed loops. One item is one colour (12 bytes read, 12
+// written); bytes/s count the input bytes.
 //
-// Baseline in the same binary, so that the ratios hold on a noisy machine:
-//   BM_Memcpy  memcpy of the same 12 MiB buffer into the same output buffer: the cost of merely
-//              reading and writing every colour once, the floor of any clip.
+// Rows:
+//   Memcpy/{cache,dram}                 memcpy of the same input into the same output buffer:
+//                                       the floor of any clip, the baseline of every ratio
+//   Clip/<method>/{cache,dram}/{1,2}t   clip_batch with the SIMD kernel (Highway, the widest
+//                                       instruction set of this CPU, named in the label)
+//   Clip/<method>/avx2/...              the same with Highway restricted to AVX2 at run time
+//                                       (hwy::DisableTargets of the AVX-512 targets), smits and
+//                                       aces-rgc
+//   Reference/<method>                  clip_batch with simd = false: the scalar float
+//                                       specification for smits and clamp, the double
+//                                       GamutClipper::clip per colour for every other method;
+//                                       on the first 2^14 colours (compute-bound, so its
+//                                       items/s compare with the others all the same)
+//   luv-hue has no kernel (a search over lightness per colour): its Reference row only.
+//   OcioAcesGamutComp13/...             (gamut_ocio_bench.cpp, when OpenColorIO is found) OCIO
+//                                       2.1's CPU processor on the same buffers
 //
-// Then clip_batch(clipper, in, out, {threads, simd}) for:
-//   smits on 1 and 2 threads (SIMD), smits on 1 thread with the scalar float loop (simd=false),
-//   clamp on 1 thread (SIMD), and every other method on 1 thread. The methods without a SIMD path
-//   (smits-xyz, luv-lightness-hue, luv-hue, css, oklab, smits-corrected) run the double
-//   GamutClipper::clip per colour and cost tens to thousands of nanoseconds per colour, so they
-//   clip the first 2^14 colours of the same input (192 KiB) per iteration instead of all of them;
-//   being compute-bound, their items/s compare with the others all the same.
-//
-// Every benchmark is timed in wall-clock time (UseRealTime): the 2-thread one must be, and the
-// 1-thread ones are timed the same way so that "2 threads faster than 1" and the ratios to
-// memcpy compare like with like. The label names the path: the Highway target the SIMD loop
-// runs on ("simd AVX2", "simd SSE4", ...) or "scalar".
-//
-// clip_batch lives in another translation unit, so its calls cannot be folded away; the output
-// is made observable with ClobberMemory. The memcpy is inline: its pointers are escaped with
-// DoNotOptimize in the loop body itself (not captured by a lambda; see the note on GCC 12 and
+// Every row is timed in wall-clock time (UseRealTime), so that 1 and 2 threads and the ratios to
+// memcpy compare like with like. clip_batch lives in another translation unit, so its calls
+// cannot be folded away; the output is made observable with ClobberMemory. The memcpy is inline:
+// its pointers are escaped with DoNotOptimize in the loop body itself (see the note on GCC 12 and
 // Google Benchmark 1.7.1 in optics_bench.cpp).
+
+#include "gamut_bench_input.h"
 
 #include <irid/color/rgb.h>
 #include <irid/gamut/batch.h>
 #include <irid/gamut/clip.h>
 
 #include <benchmark/benchmark.h>
+#include <hwy/targets.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <random>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace {
 
-constexpr std::uint32_t seed = 20240613;
-/// Colours of the full batch: 2^20 × 12 bytes = 12 MiB in and 12 MiB out.
-constexpr std::size_t full_colours = std::size_t{1} << 20;
-/// Colours per iteration for the methods without a SIMD path (2^14 × 12 bytes = 192 KiB).
-constexpr std::size_t small_colours = std::size_t{1} << 14;
+/// Colours per iteration of the reference rows (2^14 × 12 bytes = 192 KiB).
+constexpr std::size_t reference_colours = std::size_t{1} << 14;
 
-/// The shared input: full_colours interleaved float triples, each with a channel outside [0, 1].
-const std::vector<float>& input() {
-    static const std::vector<float> in = [] {
-        std::mt19937 rng(seed);
-        std::uniform_real_distribution<float> d(-0.5f, 1.5f);
-        const auto outside = [](float v) { return v < 0.0f || v > 1.0f; };
-        std::vector<float> v(3 * full_colours);
-        for (std::size_t i = 0; i < full_colours; ++i) {
-            float r = 0.0f, g = 0.0f, b = 0.0f;
-            do {
-                r = d(rng);
-                g = d(rng);
-                b = d(rng);
-            } while (!(outside(r) || outside(g) || outside(b)));
-            v[3 * i] = r;
-            v[3 * i + 1] = g;
-            v[3 * i + 2] = b;
-        }
-        return v;
-    }();
-    return in;
-}
+/// The AVX-512 targets of Highway 1.0.3 (hwy/detect_targets.h), disabled for the AVX2 rows.
+constexpr std::int64_t avx512_targets = HWY_AVX3 | HWY_AVX3_DL;
 
 const irid::Gamut& srgb_gamut() {
     static const irid::Gamut g(irid::srgb());
@@ -90,31 +71,27 @@ void report(benchmark::State& state, std::size_t colours) {
         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-// --- baseline -----------------------------------------------------------------------------------
-
-void BM_Memcpy(benchmark::State& state) {
-    const std::vector<float>& in = input();
-    std::vector<float> out(in.size(), 0.0f);
-    const float* src = in.data();
+void memcpy_row(benchmark::State& state, std::size_t colours) {
+    const std::vector<float>& all = irid_bench::input();
+    std::vector<float> out(3 * colours, 0.0f);
+    const float* src = all.data();
     float* dst = out.data();
-    const std::size_t bytes = in.size() * sizeof(float);
+    const std::size_t bytes = 3 * colours * sizeof(float);
     for (auto _ : state) {
         benchmark::DoNotOptimize(src);
         benchmark::DoNotOptimize(dst);
         std::memcpy(dst, src, bytes);
         benchmark::ClobberMemory();
     }
-    report(state, full_colours);
+    report(state, colours);
     state.SetLabel("memcpy");
 }
-BENCHMARK(BM_Memcpy)->UseRealTime();
 
-// --- clip_batch ---------------------------------------------------------------------------------
-
-/// clip_batch of the first `colours` colours of the input with `method` on `threads` threads.
-void BM_ClipBatch(benchmark::State& state, irid::ClipMethod method, int threads, bool simd,
-                  std::size_t colours) {
-    const std::vector<float>& all = input();
+/// clip_batch of the first `colours` colours with `method` on `threads` threads.
+void clip_row(benchmark::State& state, irid::ClipMethod method, int threads, bool simd,
+              std::size_t colours, bool avx2_only) {
+    if (avx2_only) hwy::DisableTargets(avx512_targets);
+    const std::vector<float>& all = irid_bench::input();
     const std::span<const float> in(all.data(), 3 * colours);
     std::vector<float> out(in.size(), 0.0f);
     const irid::GamutClipper clipper(method, srgb_gamut());
@@ -124,32 +101,50 @@ void BM_ClipBatch(benchmark::State& state, irid::ClipMethod method, int threads,
         benchmark::ClobberMemory();
     }
     report(state, colours);
-    const bool has_simd = method == irid::ClipMethod::smits || method == irid::ClipMethod::clamp;
-    state.SetLabel(simd && has_simd ? "simd " + std::string(irid::simd_target_name())
-                                    : std::string("scalar"));
+    const bool float_spec = method == irid::ClipMethod::smits || method == irid::ClipMethod::clamp;
+    state.SetLabel(simd ? "simd " + std::string(irid::simd_target_name())
+                        : (float_spec ? "scalar float" : "double reference"));
+    if (avx2_only) hwy::DisableTargets(0);
 }
 
-using irid::ClipMethod;
-BENCHMARK_CAPTURE(BM_ClipBatch, smits_1t_simd, ClipMethod::smits, 1, true, full_colours)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ClipBatch, smits_2t_simd, ClipMethod::smits, 2, true, full_colours)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ClipBatch, smits_1t_scalar, ClipMethod::smits, 1, false, full_colours)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ClipBatch, clamp_1t_simd, ClipMethod::clamp, 1, true, full_colours)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ClipBatch, smits_xyz_1t, ClipMethod::smits_xyz, 1, true, small_colours)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ClipBatch, luv_lightness_hue_1t, ClipMethod::luv_lightness_hue, 1, true,
-                  small_colours)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ClipBatch, luv_hue_1t, ClipMethod::luv_hue, 1, true, small_colours)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ClipBatch, css_1t, ClipMethod::css, 1, true, small_colours)->UseRealTime();
-BENCHMARK_CAPTURE(BM_ClipBatch, oklab_1t, ClipMethod::oklab, 1, true, small_colours)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ClipBatch, smits_corrected_1t, ClipMethod::smits_corrected, 1, true,
-                  small_colours)
-    ->UseRealTime();
+/// Registers every row (in the order of the header).
+const bool registered = [] {
+    struct Buffer {
+        const char* name;
+        std::size_t colours;
+    };
+    const Buffer buffers[] = {{"cache", irid_bench::cache_colours},
+                              {"dram", irid_bench::dram_colours}};
+    for (const Buffer& b : buffers) {
+        benchmark::RegisterBenchmark((std::string("Memcpy/") + b.name).c_str(), memcpy_row,
+                                     b.colours)
+            ->UseRealTime();
+    }
+    for (const irid::ClipMethod m : irid::clip_methods()) {
+        const std::string name(irid::clip_method_name(m));
+        if (m != irid::ClipMethod::luv_hue) {
+            for (const Buffer& b : buffers) {
+                for (const int threads : {1, 2}) {
+                    benchmark::RegisterBenchmark(
+                        ("Clip/" + name + "/" + b.name + "/" + std::to_string(threads) + "t").c_str(),
+                        clip_row, m, threads, true, b.colours, false)
+                        ->UseRealTime();
+                }
+            }
+            if (m == irid::ClipMethod::smits || m == irid::ClipMethod::aces_rgc) {
+                for (const Buffer& b : buffers) {
+                    benchmark::RegisterBenchmark(
+                        ("Clip/" + name + "/avx2/" + b.name + "/1t").c_str(), clip_row, m, 1,
+                        true, b.colours, true)
+                        ->UseRealTime();
+                }
+            }
+        }
+        benchmark::RegisterBenchmark(("Reference/" + name).c_str(), clip_row, m, 1, false,
+                                     reference_colours, false)
+            ->UseRealTime();
+    }
+    return true;
+}();
 
 }  // namespace

@@ -71,7 +71,12 @@ read -r LR LG LB < <(awk 'BEGIN {
     printf "%.17g %.17g %.17g\n", s[1], s[2], s[3]
 }')
 
-METHODS=(clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected)
+# Every method, from the help text (the contract tests below name the ones they check).
+mapfile -t METHODS < <("$IRID" clip --help | sed -n 's/.*--method TEXT *Clipping method: //p' |
+    tr -d ' ' | tr ',' '\n')
+# The methods that keep in-gamut colours and whose output is always inside the cube.
+HARD_METHODS=(clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected
+    css-raytrace oklab-adaptive oklab-cusp)
 
 # === 1. CSV: the contract's defaults and shape ============================================
 
@@ -134,7 +139,8 @@ expect_close "$W" 1e-12
 
 # Y <= 0 gives black, Y at or above the white's gives white, for every method but clamp (which
 # works per channel).
-for m in smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+for m in smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected css-raytrace \
+    oklab-adaptive oklab-cusp smits-soft; do
     run $'-0.1,-0.1,-0.2\n-1,0.1,0.2\n0,0,-1e-3\n' clip --method "$m"
     expect_output $'R,G,B\n0,0,0\n0,0,0\n0,0,0\n'
     run $'2,1.5,1.2\n' clip --method "$m"
@@ -142,8 +148,14 @@ for m in smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
 done
 
 # Every method accepts every name and returns colours inside the cube.
+RAN="the method list read from irid clip --help"
+if [[ ${#METHODS[@]} -eq 13 && " ${METHODS[*]} " == *" aces-rgc "* ]]; then pass; else
+    fail "13 methods incl. aces-rgc" "${METHODS[*]}"; fi
+# (aces-rgc confines its output only with clip=true; section 9 checks it without.)
 for m in "${METHODS[@]}"; do
-    run "$OUT_OF_GAMUT" clip --method "$m"
+    extra=()
+    [[ $m == aces-rgc ]] && extra=(--param clip=true)
+    run "$OUT_OF_GAMUT" clip --method "$m" "${extra[@]}"
     expect_rows_where 7 'inside($1) && inside($2) && inside($3)' "$m: every channel in [0, 1]"
 done
 
@@ -164,7 +176,7 @@ expect_close "1,0.5,0" 1e-12
 # Rec.2020 green is outside sRGB (negative red there) and becomes a valid sRGB colour.
 run $'0,1,0\n' convert --from rec2020-linear --to srgb-linear
 expect_rows_where 1 '$1 < -0.5 && $2 > 1' "Rec.2020 green out of the sRGB gamut"
-for m in "${METHODS[@]}"; do
+for m in "${HARD_METHODS[@]}"; do
     run $'0,1,0\n' clip --method "$m" --from rec2020-linear
     expect_rows_where 1 'inside($1) && inside($2) && inside($3) && $2 > 0.5' \
         "$m: Rec.2020 green as a valid, green sRGB colour"
@@ -454,7 +466,7 @@ if cmp -s "$IMG/out.png" "$IMG/keep.png"; then pass; else fail "keep.png unchang
 # method (the ones that move toward a grey move it by about 1e-16 here).
 run $'0,0,1.0000000000000002\n' clip --method oklab
 expect_close "0,0,1" 1e-12
-for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+for method in "${HARD_METHODS[@]}"; do
     # Blue and red a hair outside, and a colour 1e-9 below the face g = 0 next to the blue edge.
     run $'0,0,1.0000000000000002\n1.0000000000000002,0,0\n0,-1e-9,0.75\n' clip --method "$method"
     expect_close $'0,0,1\n1,0,0\n0,0,0.75' 1e-7
@@ -476,6 +488,83 @@ expect_stdout_has "729 colours, 0 out of the rec2020 gamut"
 for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
     expect_stdout_has "| $method | 0.00 | 0.00 | 0.00 |"
 done
+
+
+# === 9. Method parameters, inverses and the ACES spaces ====================================
+# --param and --inverse are checked against the method: exit 2, the allowed names and ranges.
+run $'1.2,-0.1,0.3\n' clip --method aces-rgc --param no-such=1
+expect_usage_error "method aces-rgc has no parameter 'no-such'; its parameters: limit-cyan in ["
+run $'1.2,-0.1,0.3\n' clip --method aces-rgc --param power=0.5
+expect_usage_error "parameter power = 0.5 must be in [1, "
+run $'1.2,-0.1,0.3\n' clip --method aces-rgc --param power=abc
+expect_usage_error "value 'abc' is not a number nor true/false"
+run $'1.2,-0.1,0.3\n' clip --method aces-rgc --param power
+expect_usage_error "'power' is not of the form name=value"
+run $'1.2,-0.1,0.3\n' clip --method aces-rgc --param clip=2
+expect_usage_error "parameter clip = 2 must be true or false"
+run $'1.2,-0.1,0.3\n' clip --method smits --param alpha=1
+expect_usage_error "method smits has no parameter 'alpha'; it takes none"
+run $'1.2,-0.1,0.3\n' clip --method oklab --inverse
+expect_usage_error "method oklab has no inverse; methods with one: smits-soft, aces-rgc"
+run $'1.2,-0.1,0.3\n' clip --method smits-soft --param threshold=1.5
+expect_usage_error "parameter threshold = 1.5 must be in [0, "
+
+# aces-rgc in ACEScg, closed forms of the ACES 1.3 curve (LMT.Academy.ReferenceGamutCompress.ctl):
+# with the achromatic a = max(r, g, b), each channel's distance d = (a - c)/|a|; d below its
+# threshold is untouched; above, d' = t + s x/(1 + x^p)^(1/p), x = (d - t)/s, with
+# s = (l - t)/(((1 - t)/(l - t))^-p - 1)^(1/p), so that the limit l maps to 1; c' = a - d' |a|.
+# (1, -0.5, 0.2): d = (0, 1.5, 0.8); green (magenta: l 1.264, t 0.803, p 1.2) is compressed,
+# blue (yellow threshold 0.880) is not.
+ACES_G=$(awk 'BEGIN { l = 1.264; t = 0.803; p = 1.2; d = 1.5
+    s = (l - t) / ((((1 - t) / (l - t)) ^ -p - 1) ^ (1 / p)); x = (d - t) / s
+    printf "%.17g", 1 - (t + s * x / ((1 + x ^ p) ^ (1 / p))) }')
+run $'1,-0.5,0.2\n' clip --method aces-rgc --from acescg --to acescg
+expect_close "1,$ACES_G,0.2" 1e-12
+# Beyond the limit the curve leaves the colour outside the cube (printed exactly, as OCIO does) ...
+expect_rows_where 1 '$2 < 0 && $2 > -0.5' "compressed toward the cube but still outside"
+# ... and clip=true adds the final clip.
+run $'1,-0.5,0.2\n' clip --method aces-rgc --from acescg --to acescg --param clip=true
+expect_close "1,0,0.2" 1e-12
+# The limit maps to the face: green at distance 1.264 lands on 0; at the threshold it is untouched.
+run $'1,-0.264,1\n1,0.197,0.5\n' clip --method aces-rgc --from acescg --to acescg
+expect_close $'1,0,1\n1,0.197,0.5' 1e-12
+# The parameters are the curve's: with the magenta limit at 1.5 the colour above lands on 0.
+run $'1,-0.5,0.2\n' clip --method aces-rgc --from acescg --to acescg --param limit-magenta=1.5
+expect_close "1,0,0.2" 1e-12
+# --inverse undoes the forward curve.
+run $'1,-0.5,0.2\n0.3,0.9,-0.1\n' clip --method aces-rgc --from acescg --to acescg
+cp "$TMP/out" "$TMP/aces_forward"
+run "$(tail -n +2 "$TMP/aces_forward")"$'\n' clip --method aces-rgc --inverse --from acescg --to acescg
+expect_close $'1,-0.5,0.2\n0.3,0.9,-0.1' 1e-9
+# smits-soft: its inverse undoes it too (an in-gamut colour beyond the threshold and an
+# out-of-gamut one short of the limit), and a colour inside the threshold does not move.
+run $'0.9,0.2,0.05\n1.2,0.1,0\n0.45,0.5,0.55\n' clip --method smits-soft
+cp "$TMP/out" "$TMP/soft_forward"
+expect_rows_where 3 'inside($1) && inside($2) && inside($3)' "smits-soft inside the cube"
+run "$(tail -n +2 "$TMP/soft_forward")"$'\n' clip --method smits-soft --inverse
+expect_close $'0.9,0.2,0.05\n1.2,0.1,0\n0.45,0.5,0.55' 1e-9
+run $'0.45,0.5,0.55\n' clip --method smits-soft
+expect_close "0.45,0.5,0.55" 1e-15
+
+# The ACES spaces by name, and -linear as an alias: AP1 -> AP0 is S-2014-004's published matrix
+# (first column 0.6954522414, 0.0447945634, -0.0055258826), both with the ACES white.
+for to in aces2065-1 aces2065-1-linear; do
+    run $'1,0,0\n' convert --from acescg-linear --to "$to"
+    expect_close "0.6954522414,0.0447945634,-0.0055258826" 1e-9
+done
+
+# Images: aces-rgc clips by default (a file cannot hold what a display cannot show); clip=false
+# keeps the curve's output in an EXR.
+oiiotool --pattern constant:color=1,-0.5,0.2 2x2 3 -d float -o "$IMG/aces.exr"
+run_image clip --method aces-rgc --from acescg --to acescg "$IMG/aces.exr" "$IMG/aces-clipped.exr"
+expect_status 0
+expect_pixels "$IMG/aces-clipped.exr" 4 'abs($1 - 1) < 1e-6 && abs($2) < 1e-6 && abs($3 - 0.2) < 1e-6' \
+    "aces-rgc image clipped into the cube"
+run_image clip --method aces-rgc --from acescg --to acescg --param clip=false "$IMG/aces.exr" "$IMG/aces-raw.exr"
+expect_status 0
+expect_pixels "$IMG/aces-raw.exr" 4 "abs(\$1 - 1) < 1e-6 && abs(\$2 - ($ACES_G)) < 1e-5 && abs(\$3 - 0.2) < 1e-6" \
+    "aces-rgc image with clip=false: the curve's output"
+expect_info "$IMG/aces-raw.exr" "--param clip=0"
 
 # ===========================================================================================
 
