@@ -26,7 +26,8 @@ std::vector<ClipMethod> ramp_methods(const Options& options) {
     for (const std::string& name : options.list("methods", "all")) {
         if (name == "all") {
             for (const ClipMethod m : clip_methods()) {
-                if (std::find(methods.begin(), methods.end(), m) == methods.end()) methods.push_back(m);
+                if (std::find(methods.begin(), methods.end(), m) == methods.end())
+                    methods.push_back(m);
             }
             continue;
         }
@@ -49,7 +50,8 @@ int panel_columns(std::size_t n, double width, double height) {
     int best = 1;
     double best_error = 1e300;
     for (int cols = 1; cols <= static_cast<int>(n); ++cols) {
-        const int rows = static_cast<int>((n + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
+        const int rows = static_cast<int>((n + static_cast<std::size_t>(cols) - 1) /
+                                          static_cast<std::size_t>(cols));
         const double aspect = (width / cols) / (height / rows);
         const double error = std::abs(std::log(aspect / 1.3));
         if (error < best_error) best = cols, best_error = error;
@@ -83,7 +85,8 @@ FigureResult draw_ramps(const FigureRequest& request) {
             const double lo = -1e-9, hi = 1.0 + 1e-9;  // the report's rule
             const bool out = c.r < lo || c.g < lo || c.b < lo || c.r > hi || c.g > hi || c.b > hi;
             outside[static_cast<std::size_t>(k * steps + i)] = out;
-            if (out && exit_step[static_cast<std::size_t>(k)] == steps) exit_step[static_cast<std::size_t>(k)] = i;
+            if (out && exit_step[static_cast<std::size_t>(k)] == steps)
+                exit_step[static_cast<std::size_t>(k)] = i;
             input.push_back(c);
         }
     }
@@ -91,16 +94,21 @@ FigureResult draw_ramps(const FigureRequest& request) {
     Canvas canvas(image_format_for(request.output), request.width_px, request.height_px);
     const double fs = 12.0 * canvas.scale();
     const Rect page = page_area(canvas);
-    const std::string title = "Ramps at Y = " + shortest(luminance) + " from the grey to " +
-                              (end == RampEnd::locus ? "the spectral locus" : "the Rec.2020 boundary") +
-                              ", clipped into sRGB by each method (rows: Oklab hue)";
-    canvas.text({page.x + page.width / 2.0, page.y + fs}, title,
-                TextStyle{.size = fs * 1.1, .bold = true, .halign = HAlign::center, .valign = VAlign::middle});
+    const std::string title =
+        "Ramps at Y = " + shortest(luminance) + " from the grey to " +
+        (end == RampEnd::locus ? "the spectral locus" : "the Rec.2020 boundary") +
+        ", clipped into sRGB by each method (rows: Oklab hue)";
+    canvas.text(
+        {page.x + page.width / 2.0, page.y + fs}, title,
+        TextStyle{
+            .size = fs * 1.1, .bold = true, .halign = HAlign::center, .valign = VAlign::middle});
     const double top = page.y + 2.2 * fs;
     const int cols = panel_columns(methods.size(), page.width, page.bottom() - top);
-    const int rows = static_cast<int>((methods.size() + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
+    const int rows = static_cast<int>((methods.size() + static_cast<std::size_t>(cols) - 1) /
+                                      static_cast<std::size_t>(cols));
     const double panel_w = page.width / cols, panel_h = (page.bottom() - top) / rows;
-    const double small = std::max(7.0 * canvas.scale(), std::min(10.0 * canvas.scale(), panel_h / 12.0));
+    const double small =
+        std::max(7.0 * canvas.scale(), std::min(10.0 * canvas.scale(), panel_h / 12.0));
 
     FigureResult result;
     for (std::size_t p = 0; p < methods.size(); ++p) {
@@ -120,7 +128,8 @@ FigureResult draw_ramps(const FigureRequest& request) {
             const double b = ramp_banding(ramp);
             banding_sum += b;
             banding_max = std::max(banding_max, b);
-            if (const auto c = ramp_collapse(ramp, std::span<const bool>(outside.get() + first, steps))) {
+            if (const auto c =
+                    ramp_collapse(ramp, std::span<const bool>(outside.get() + first, steps))) {
                 collapse_sum += *c;
                 ++collapse_count;
             }
@@ -129,7 +138,8 @@ FigureResult draw_ramps(const FigureRequest& request) {
         const double banding_mean = banding_sum / hues;
         result.measurements.emplace_back(
             name, "banding mean " + fixed(banding_mean, 2) + ", max " + fixed(banding_max, 2) +
-                      (collapse_count > 0 ? ", collapse " + fixed(collapse_sum / collapse_count, 3) : std::string()));
+                      (collapse_count > 0 ? ", collapse " + fixed(collapse_sum / collapse_count, 3)
+                                          : std::string()));
 
         // Row k of the raster is hue k (0° at the bottom); column i is step i.
         std::vector<Color> colors;
@@ -137,20 +147,27 @@ FigureResult draw_ramps(const FigureRequest& request) {
         for (const Rgb& c : clipped) colors.push_back(display_color(c));
         const int col = static_cast<int>(p) % cols, row = static_cast<int>(p) / cols;
         const Rect area{page.x + col * panel_w, top + row * panel_h, panel_w, panel_h};
-        Axis x{.min = 0.0, .max = static_cast<double>(steps), .ticks = {{0.0, "grey"}, {static_cast<double>(steps), "end"}},
+        Axis x{.min = 0.0,
+               .max = static_cast<double>(steps),
+               .ticks = {{0.0, "grey"}, {static_cast<double>(steps), "end"}},
                .grid = false};
-        Axis y{.min = 0.0, .max = 360.0,
-               .ticks = {{7.5, "0°"}, {97.5, "90°"}, {187.5, "180°"}, {277.5, "270°"}}, .grid = false};
+        Axis y{.min = 0.0,
+               .max = 360.0,
+               .ticks = {{7.5, "0°"}, {97.5, "90°"}, {187.5, "180°"}, {277.5, "270°"}},
+               .grid = false};
         Plot plot(canvas, area, x, y, name, PlotOptions{.font_size = small});
         plot.raster(0.0, steps, 0.0, 360.0, steps, hues, colors);
         if (boundary) {
             // Where each hue's input leaves sRGB: a thin mark at the left edge of that step.
-            const LineStyle mark{with_alpha(palette::black, 0.75), std::max(0.8, canvas.scale()), Dash::solid};
+            const LineStyle mark{with_alpha(palette::black, 0.75), std::max(0.8, canvas.scale()),
+                                 Dash::solid};
             for (int k = 0; k < hues; ++k) {
                 const int e = exit_step[static_cast<std::size_t>(k)];
                 if (e >= steps) continue;
                 const double y0 = 15.0 * k + 3.0, y1 = 15.0 * k + 12.0;
-                plot.line(std::vector<Point>{{static_cast<double>(e), y0}, {static_cast<double>(e), y1}}, mark);
+                plot.line(
+                    std::vector<Point>{{static_cast<double>(e), y0}, {static_cast<double>(e), y1}},
+                    mark);
             }
         }
         plot.finish(LegendPosition::none);
@@ -161,10 +178,13 @@ FigureResult draw_ramps(const FigureRequest& request) {
     for (const ClipMethod m : methods) names.emplace_back(clip_method_name(m));
     result.caption =
         "The clip report's ramps (irid clip-report --set ramps; include/irid/gamut/report.h) at "
-        "luminance Y = " + shortest(luminance) + ": for each of 24 Oklab hues (rows, 0° at the "
+        "luminance Y = " +
+        shortest(luminance) +
+        ": for each of 24 Oklab hues (rows, 0° at the "
         "bottom, every 15°), 256 steps at constant Y in a straight line from the grey of that "
         "luminance (left) to " +
-        (end == RampEnd::locus ? std::string("the spectral locus") : std::string("the Rec.2020 boundary")) +
+        (end == RampEnd::locus ? std::string("the spectral locus")
+                               : std::string("the Rec.2020 boundary")) +
         " (right), evenly spaced in CIEDE2000, clipped into sRGB by each method through the batch "
         "API (aces-rgc with clip=true) and encoded as sRGB. " +
         (boundary ? "The dark marks are where each ramp leaves sRGB. " : "") +
@@ -172,8 +192,9 @@ FigureResult draw_ramps(const FigureRequest& request) {
         "one output); a soft one starts bending before it. The measurements give each method's "
         "banding (per ramp the largest ΔE2000 between neighbouring outputs over their mean, 1 = "
         "even; mean and max over the 24 ramps) and collapse (the share of out-of-gamut steps "
-        "within ΔE2000 0.5 of the next). Options: luminance=" + shortest(luminance) + ", end=" +
-        end_name + ", methods=" + join(names, ",") + ", boundary=" + (boundary ? "on" : "off") + ".";
+        "within ΔE2000 0.5 of the next). Options: luminance=" +
+        shortest(luminance) + ", end=" + end_name + ", methods=" + join(names, ",") +
+        ", boundary=" + (boundary ? "on" : "off") + ".";
     return result;
 }
 
