@@ -20,6 +20,8 @@ FigureResult draw_clip_claims(const FigureRequest& request);
 FigureResult draw_film_error(const FigureRequest& request);
 FigureResult draw_newton(const FigureRequest& request);
 FigureResult draw_morpho_angle(const FigureRequest& request);
+// gamut-report's (fig_ramps.cpp).
+FigureResult draw_ramps(const FigureRequest& request);
 
 namespace {
 
@@ -78,14 +80,21 @@ std::span<const CatalogEntry> catalog_entries() {
          draw_film_error},
         {{"hue-shift", "", "Hue change of the clipped spectrum against wavelength, per clip method",
           image_extensions,
-          "hue=oklab|luv|lab (default oklab); methods=LIST of clip methods or all (default all); "
+          "hue=oklab|luv|lab (default oklab); methods=LIST of clip methods or all (default: all "
+          "but smits-xyz and luv-lightness-hue, which draw smits' curve); "
           "luminance=Y, 0.01-0.99 (default 0.3)"},
          draw_hue_shift},
         {{"clip-claims", "", "The thesis' §4.3.4 claims for its clip, measured per method",
           table_extensions,
-          "set=spectrum|interference|rec2020|all (default spectrum); hue=oklab|lab|luv, the hue "
-          "of the face-angle table and verdict 4 (default oklab)"},
+          "set=spectrum|interference|rec2020|ramps|all (default spectrum); hue=oklab|lab|luv, the "
+          "hue of the face-angle table and verdict 4 (default oklab)"},
          draw_clip_claims},
+        {{"ramps", "", "Gradients from a grey out of the gamut, clipped by each method",
+          image_extensions,
+          "luminance=Y, 0.01-0.99 (default 0.3); end=locus|rec2020 (default locus); "
+          "methods=LIST of clip methods or all (default all); boundary=on|off, marks where each "
+          "ramp leaves sRGB (default on)"},
+         draw_ramps},
     };
     return entries;
 }

@@ -14,8 +14,8 @@
 namespace irid::figures {
 namespace {
 
-constexpr std::array<ClipReportSet, 3> all_sets{
-    ClipReportSet::spectrum, ClipReportSet::interference, ClipReportSet::rec2020};
+constexpr std::array<ClipReportSet, 4> all_sets{ClipReportSet::spectrum, ClipReportSet::interference,
+                                                ClipReportSet::rec2020, ClipReportSet::ramps};
 
 }  // namespace
 
@@ -55,6 +55,7 @@ std::string_view clip_report_set_name(ClipReportSet set) noexcept {
         case ClipReportSet::spectrum: return "spectrum";
         case ClipReportSet::interference: return "interference";
         case ClipReportSet::rec2020: return "rec2020";
+        case ClipReportSet::ramps: return "ramps";
     }
     return "";
 }
@@ -74,6 +75,7 @@ ColorSet clip_report_color_set(ClipReportSet set, const RgbSpace& destination) {
         case ClipReportSet::spectrum: return spectrum_color_set();
         case ClipReportSet::interference: return interference_color_set(destination);
         case ClipReportSet::rec2020: return rec2020_color_set(destination);
+        case ClipReportSet::ramps: return ramps_color_set(destination);
     }
     return {};
 }

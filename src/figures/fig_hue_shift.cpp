@@ -68,10 +68,20 @@ HueShiftData hue_shift_data(std::span<const ClipMethod> methods, HueMeasure hue,
 
 namespace {
 
+/// The default curves: every method but smits-xyz and luv-lightness-hue, which give smits'
+/// colours (to 3e-15, docs/GAMUT.md) and so draw the same curve; methods=all adds them.
+std::string default_methods() {
+    std::vector<std::string> names;
+    for (const ClipMethod m : clip_methods()) {
+        if (m != ClipMethod::smits_xyz && m != ClipMethod::luv_lightness_hue) names.emplace_back(clip_method_name(m));
+    }
+    return join(names, ",");
+}
+
 /// The methods of an option value ("all" or names), in the order given, without repeats.
 std::vector<ClipMethod> parse_methods(const Options& options) {
     std::vector<ClipMethod> methods;
-    for (const std::string& name : options.list("methods", "all")) {
+    for (const std::string& name : options.list("methods", default_methods())) {
         if (name == "all") {
             for (const ClipMethod m : clip_methods()) {
                 if (std::find(methods.begin(), methods.end(), m) == methods.end()) methods.push_back(m);
@@ -129,13 +139,15 @@ FigureResult draw_hue_shift(const FigureRequest& request) {
     plot.hline(0.0, {palette::grey, std::max(0.6, canvas.scale()), Dash::solid});
 
     // Methods that give the same colours (smits, smits-xyz and luv-lightness-hue) overlap: the
-    // later ones are drawn thinner and dashed so that the earlier stay visible.
+    // later ones are drawn thinner and dashed so that the earlier stay visible. The palette has 8
+    // colours; from the ninth curve on the dash moves on by one more, so that no two of the first
+    // 32 curves share both colour and dash.
     static constexpr Dash dashes[] = {Dash::solid, Dash::dashed, Dash::dotted, Dash::dash_dot};
     FigureResult result;
     for (std::size_t k = 0; k < data.curves.size(); ++k) {
         const HueShiftCurve& c = data.curves[k];
         const LineStyle style{series_color(k), (k < 4 ? 2.6 - 0.4 * static_cast<double>(k) : 1.6) * canvas.scale(),
-                              dashes[k % 4]};
+                              dashes[(k + k / 8) % 4]};
         plot.line(data.wavelength_nm, c.shift_deg, style, labels[k]);
         std::size_t undefined = 0;
         for (const double v : c.shift_deg) undefined += std::isnan(v) ? 1 : 0;
@@ -154,7 +166,9 @@ FigureResult draw_hue_shift(const FigureRequest& request) {
         " (white Y = 1) and clipped into linear sRGB [0, 1]³ by each method, as the thesis clips the "
         "spectrum at constant luminance (Smits 1990, §4.3.4). Gaps are wavelengths a method sends to "
         "white or black, which have no hue. smits, smits-xyz and luv-lightness-hue give the same "
-        "colours and overlap; in CIELUV they keep the hue exactly. Options: hue=" + hue_name +
+        "colours (the last two are left out by default; methods=all shows them overlapping); in "
+        "CIELUV they keep the hue exactly. aces-rgc is measured with clip=true, as a display gets "
+        "it. Options: hue=" + hue_name +
         ", methods=" + join(labels, ",") + ", luminance=" + shortest(luminance) + ".";
     return result;
 }

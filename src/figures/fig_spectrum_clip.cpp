@@ -4,6 +4,7 @@
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/gamut/batch.h>
+#include <irid/gamut/report.h>
 
 #include "figure_data.h"
 #include "figure_support.h"
@@ -96,7 +97,8 @@ FigureResult draw_spectrum_clip(const FigureRequest& request) {
                   ", clipped into sRGB by each method");
     FigureResult result;
     for (std::size_t k = 0; k < methods.size(); ++k) {
-        const GamutClipper clipper(methods[k], gamut);
+        // What a display gets: aces-rgc with clip=true, as in the clip report and for images.
+        const GamutClipper clipper = report_clipper(methods[k], gamut);
         const std::vector<Rgb> clipped = clip_colors_batch(clipper, spectrum);
         std::vector<Color> colors;
         colors.reserve(clipped.size());
@@ -133,7 +135,7 @@ FigureResult draw_spectrum_clip(const FigureRequest& request) {
         "luminance Y = " + shortest(luminance) +
         " (relative to the D65 white, CIE 1931 observer), none of which sRGB can show, "
         "brought into the sRGB gamut by each clip method (one strip per method, through the "
-        "batch API on float RGB) and encoded as sRGB, after Smits 1990 Figure 11 (discarding "
+        "batch API on float RGB; aces-rgc with clip=true) and encoded as sRGB, after Smits 1990 Figure 11 (discarding "
         "negative values = clamp; constant hue and lightness = smits; constant hue = "
         "luv-hue). The measurements give each method's mean relative luminance change and its "
         "CIELUV hue change over the spectrum. Options: methods=" + join(names, ",") +

@@ -163,7 +163,7 @@ ClipAnalysis analyse_clip(const ColorSet& set, const Gamut& gamut, ClipMethod me
     const double max = gamut.max();
     const double scale = 1.0 / max;
     const std::size_t n = set.colors.size();
-    const GamutClipper clipper(method, gamut);
+    const GamutClipper clipper = report_clipper(method, gamut);  // as the clip report: aces-rgc clipped
     const Meter meter(gamut);
     const std::array<double, 3> angles = face_angles_to_constant_y_deg(space);
 

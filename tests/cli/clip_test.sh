@@ -488,6 +488,43 @@ expect_stdout_has "729 colours, 0 out of the rec2020 gamut"
 for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
     expect_stdout_has "| $method | 0.00 | 0.00 | 0.00 |"
 done
+# The second table: every colour is inside, so in-gamut ΔE2000 is that of the whole set (0 for
+# the methods that leave in-gamut colours alone), and the set has no ramps ("–").
+expect_stdout_has "ΔE00 of the 729 colours inside the gamut"
+expect_stdout_has "| method | in-gamut ΔE00 mean / max | banding mean / max | collapse | collapse ½ step |"
+for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+    expect_stdout_has "| $method | 0.00 / 0.00 | – | – | – |"
+done
+
+# --- clip-report --set ramps: the gradients ---------------------------------------------------
+# 24 hues × 2 ends × 3 luminances = 144 ramps of 256 steps, every method a row of both tables.
+run '' clip-report --set ramps --to display-p3
+expect_status 0
+expect_stdout_has "Set ramps: 36864 colours, "
+expect_stdout_has " out of the display-p3 gamut."
+expect_stdout_has "over 144 ramps; the input ramps' own banding is 1.0"
+for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected \
+              css-raytrace oklab-adaptive oklab-cusp smits-soft aces-rgc; do
+    rows=$(grep -c "^| $method | " "$TMP/out")
+    RAN="irid clip-report --set ramps --to display-p3: rows of $method"
+    if [[ $rows -eq 2 ]]; then pass; else fail "2 rows (one per table)" "$rows"; fi
+done
+# The hard clips that leave in-gamut colours alone move none of them; smits sends every ramp's
+# tail to one point of the boundary, so each of its out-of-gamut steps collapses.
+for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+    expect_stdout_has "| $method | 0.00 / 0.00 | "
+done
+RAN="irid clip-report --set ramps --to display-p3: smits' collapse"
+if grep -qE '^\| smits \| 0\.00 / 0\.00 \| [0-9.]+ / [0-9.]+ \| 1\.000 \| 1\.000 \|$' "$TMP/out"; then pass; else
+    fail "| smits | 0.00 / 0.00 | B / B | 1.000 | 1.000 |" "$(grep '^| smits |' "$TMP/out" | tail -1)"
+fi
+# --set all: the four sets, then their union (39 800 colours); an unknown set lists ramps.
+run '' clip-report --set all
+expect_status 0
+expect_stdout_has "Set all: 39800 colours, "
+expect_stdout_has "The union of spectrum, interference, rec2020 and ramps."
+run '' clip-report --set gradients
+expect_usage_error "spectrum, interference, rec2020, ramps, all"
 
 
 # === 9. Method parameters, inverses and the ACES spaces ====================================

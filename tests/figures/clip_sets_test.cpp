@@ -46,13 +46,14 @@ TEST(ClipReportSets, NamesAndAll) {
         ASSERT_EQ(parsed.size(), 1u);
         EXPECT_EQ(parsed[0], s);
     }
-    EXPECT_EQ(parse_clip_report_sets("all").size(), 3u);
+    EXPECT_EQ(parse_clip_report_sets("all").size(), 4u);
+    EXPECT_EQ(parse_clip_report_sets("ramps"), std::vector<ClipReportSet>{ClipReportSet::ramps});
     try {
         (void)parse_clip_report_sets("gamut");
         FAIL();
     } catch (const Error& e) {
         const std::string message = e.what();
-        for (const char* name : {"spectrum", "interference", "rec2020", "all"}) {
+        for (const char* name : {"spectrum", "interference", "rec2020", "ramps", "all"}) {
             EXPECT_NE(message.find(name), std::string::npos) << name;
         }
     }
@@ -109,6 +110,9 @@ TEST(ClipReportSets, TheCatalogueHandsOnTheGamutLibrarysSetsAndTheFilms) {
                             rec2020_color_set(*destination));
         expect_same_colours(clip_report_color_set(ClipReportSet::interference, *destination),
                             interference_color_set(*destination));
+        const ColorSet ramps = clip_report_color_set(ClipReportSet::ramps, *destination);
+        expect_same_colours(ramps, ramps_color_set(*destination));
+        EXPECT_EQ(ramps.ramps.size(), 144u);
     }
 }
 

@@ -156,7 +156,8 @@ TEST(ClipClaimsTable, MarkdownAndHtmlHaveEveryMethodAndTheVerdicts) {
     for (std::size_t p = html.find("<table>"); p != std::string::npos; p = html.find("<table>", p + 1)) ++tables;
     EXPECT_EQ(tables, 3u);
     EXPECT_EQ(html.find("r < "), std::string::npos);
-    EXPECT_EQ(clip_claims_set("all").colors.size(), 2936u);
+    // The report's catalogue: spectrum, interference, rec2020 and ramps.
+    EXPECT_EQ(clip_claims_set("all").colors.size(), 2936u + 36864u);
     EXPECT_THROW((void)clip_claims_set("nothing"), Error);
 }
 
@@ -407,6 +408,60 @@ TEST(FilmClipFigureFiles, BadOptionsNameTheKeyAndTheAllowedValues) {
     EXPECT_FALSE(std::filesystem::exists(out));
     EXPECT_THROW((void)draw_figure({"clip-claims", temp_path("claims.png"), 200, 200, {}}), Error);
     EXPECT_THROW((void)draw_figure({"newton", temp_path("newton.md"), 200, 200, {}}), Error);
+}
+
+// --- hue-shift's defaults and the ramps figure ---------------------------------------------
+
+TEST(HueShiftFigure, DefaultsShowEveryMethodButTheTwoThatDrawSmitsCurve) {
+    const auto png = temp_path("hue-default.png");
+    const FigureResult r = draw_figure({"hue-shift", png, 480, 300, {}});
+    std::vector<std::string> want;
+    for (const ClipMethod m : clip_methods()) {
+        if (m != ClipMethod::smits_xyz && m != ClipMethod::luv_lightness_hue) want.push_back(std::string(clip_method_name(m)) + " |Δh|");
+    }
+    ASSERT_EQ(r.measurements.size(), want.size());
+    for (std::size_t k = 0; k < want.size(); ++k) EXPECT_EQ(r.measurements[k].first, want[k]);
+    // methods=all brings them back: every method is selectable.
+    const FigureResult all = draw_figure({"hue-shift", png, 480, 300, {{"methods", "all"}}});
+    EXPECT_EQ(all.measurements.size(), clip_methods().size());
+    std::filesystem::remove(png);
+}
+
+TEST(RampsFigure, OnePanelPerMethodWithTheReportsMeasures) {
+    const auto png = temp_path("ramps.png");
+    const FigureResult r = draw_figure({"ramps", png, 640, 400, {}});
+    const std::string bytes = read_file(png);
+    ASSERT_GT(bytes.size(), 24u);
+    EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+    EXPECT_EQ(be32(bytes, 16), 640u);
+    EXPECT_EQ(be32(bytes, 20), 400u);
+    ASSERT_EQ(r.measurements.size(), clip_methods().size());
+    for (std::size_t k = 0; k < clip_methods().size(); ++k) {
+        EXPECT_EQ(r.measurements[k].first, clip_method_name(clip_methods()[k]));
+        EXPECT_EQ(r.measurements[k].second.rfind("banding mean ", 0), 0u) << r.measurements[k].second;
+    }
+    EXPECT_NE(r.caption.find("end=locus"), std::string::npos);
+    // smits stops every ramp's tail at one point of the boundary: at Y = 0.3 toward the locus
+    // every hue leaves sRGB, and each of its out-of-gamut steps collapses.
+    EXPECT_NE(r.measurements[1].second.find("collapse 1.000"), std::string::npos) << r.measurements[1].second;
+    std::filesystem::remove(png);
+    const auto svg = temp_path("ramps.svg");
+    const FigureResult some = draw_figure(
+        {"ramps", svg, 640, 400, {{"methods", "clamp,aces-rgc"}, {"end", "rec2020"}, {"luminance", "0.6"}, {"boundary", "off"}}});
+    ASSERT_EQ(some.measurements.size(), 2u);
+    EXPECT_EQ(some.measurements[1].first, "aces-rgc");
+    EXPECT_NE(read_file(svg).find("</svg>"), std::string::npos);
+    std::filesystem::remove(svg);
+    for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{
+             {"methods", "smits,nope"}, {"end", "edge"}, {"luminance", "1"}, {"boundary", "maybe"}}) {
+        try {
+            (void)draw_figure({"ramps", png, 640, 400, {{key, value}}});
+            ADD_FAILURE() << key << "=" << value;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_FALSE(std::filesystem::exists(png));
 }
 
 }  // namespace

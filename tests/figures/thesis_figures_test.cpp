@@ -124,6 +124,12 @@ TEST(Chromaticity, LocusIsTheLibrarysAndEnclosesTheGamuts) {
     const double area = polygon_area(locus);
     for (const RgbSpace* space : builtin_rgb_spaces()) {
         EXPECT_TRUE(inside_polygon(locus, {space->white().x, space->white().y})) << space->name();
+        // ACES2065-1's AP0 primaries are imaginary by design (they enclose the whole locus,
+        // Academy S-2008-001): the one built-in space whose triangle is larger.
+        if (space == &aces2065_1()) {
+            EXPECT_GT(polygon_area(gamut_triangle(*space, Diagram::xy)), area);
+            continue;
+        }
         EXPECT_LT(polygon_area(gamut_triangle(*space, Diagram::xy)), area) << space->name();
     }
     // Rec.2020's primaries are monochromatic (630, 532, 467 nm), on the locus: its triangle

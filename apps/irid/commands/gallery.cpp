@@ -315,6 +315,29 @@ int run_gallery(const GalleryOptions& o) {
         }
         page.add("</table>\n");
     }
+    {
+        // The ramps: what each method does to gradients (speeds are not shown: a single pass).
+        const ClipReport rep = measure_clip_report(figures::clip_report_color_set(ClipReportSet::ramps, srgb()),
+                                                   Gamut(srgb(), 1.0), ClipReportOptions{0.0});
+        page.add(fmt::format(
+            "<p>{} — {} colours in {} ramps, {} outside {} — {}. Banding: per ramp the largest "
+            "ΔE2000 between neighbouring outputs over their mean (1 = even; the input ramps "
+            "themselves: mean {:.2f}); collapse: the share of a ramp's out-of-gamut steps whose "
+            "output is within ΔE2000 0.5 of the next step's (½ step: within half the ramp's mean "
+            "input step); the figure <i>ramps</i> above shows them.</p>\n<table>\n"
+            "<tr><th>method</th><th>in-gamut ΔE2000 mean / max</th><th>banding mean / max</th>"
+            "<th>collapse</th><th>collapse ½ step</th></tr>\n",
+            figures::html_escape(rep.set_name), rep.size, rep.ramps, rep.out_of_gamut,
+            figures::html_escape(rep.destination), figures::html_escape(rep.set_description),
+            rep.input_banding.mean));
+        for (const MethodClipReport& m : rep.methods) {
+            page.add(fmt::format("<tr><td>{}</td><td>{:.2f} / {:.2f}</td><td>{:.2f} / {:.2f}</td>"
+                                 "<td>{:.3f}</td><td>{:.3f}</td></tr>\n",
+                                 clip_method_name(m.method), m.in_gamut_moved.mean, m.in_gamut_moved.max,
+                                 m.banding.mean, m.banding.max, m.collapse.mean, m.collapse_relative.mean));
+        }
+        page.add("</table>\n");
+    }
 
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -5,8 +5,8 @@
 // The clip report (include/irid/gamut/report.h) measures the sets its caller gives it:
 // clipping knows no physics (docs/DESIGN.md: the arrows point down), so irid_gamut builds only
 // the sets that need nothing but colour science (spectrum_color_set, rec2020_color_set,
-// union_color_set). The interference set needs the film optics (irid_optics); it is made here,
-// in the layer that needs colour, optics and gamut, together with the report's catalogue of
+// ramps_color_set, union_color_set). The interference set needs the film optics (irid_optics);
+// it is made here, in the layer that needs colour, optics and gamut, together with the report's catalogue of
 // sets by name. `irid clip-report`, the clip-claims table and the gallery take their sets from
 // here and pass them to measure_clip_report / analyse_clip.
 //
@@ -19,7 +19,7 @@
 //   exposure that keeps every colour below the white's luminance (max Y = 0.96), so every colour
 //   still has a grey of its luminance inside the gamut, while the brightest also cross the upper
 //   faces (158 out of sRGB).
-// - spectrum, rec2020: irid_gamut's (see report.h).
+// - spectrum, rec2020, ramps: irid_gamut's (see report.h).
 
 #include <irid/color/rgb.h>
 #include <irid/gamut/report.h>
@@ -37,16 +37,17 @@ inline constexpr double interference_set_exposure = 5.0;
 [[nodiscard]] ColorSet interference_color_set(const RgbSpace& destination);
 
 /// The sets of the clip report.
-enum class ClipReportSet { spectrum, interference, rec2020 };
+enum class ClipReportSet { spectrum, interference, rec2020, ramps };
 
 /// Every set, in the order of the report.
 [[nodiscard]] std::span<const ClipReportSet> clip_report_sets() noexcept;
-/// "spectrum", "interference", "rec2020".
+/// "spectrum", "interference", "rec2020", "ramps".
 [[nodiscard]] std::string_view clip_report_set_name(ClipReportSet set) noexcept;
 /// One set by name, or every set for "all". Throws irid::Error listing the valid names.
 [[nodiscard]] std::vector<ClipReportSet> parse_clip_report_sets(std::string_view name);
 /// One set by its enumerator, relative to the destination's white: spectrum_color_set(),
-/// interference_color_set(destination) or rec2020_color_set(destination).
+/// interference_color_set(destination), rec2020_color_set(destination) or
+/// ramps_color_set(destination).
 [[nodiscard]] ColorSet clip_report_color_set(ClipReportSet set, const RgbSpace& destination);
 
 }  // namespace irid::figures
