@@ -12,6 +12,7 @@
 #include <irid/gamut/clip.h>
 
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <algorithm>
 #include <cmath>
@@ -366,6 +367,38 @@ TEST(AcesRgcBatch, SimdEqualsTheDoubleReferenceAndThreadsDoNotChangeABit) {
     EXPECT_EQ(cases, 32);
     std::cout << "aces-rgc SIMD vs double, largest error: " << worst_of_all[0]
               << " (not confined, relative) and " << worst_of_all[1] << " x max (clip)\n";
+}
+
+TEST(AcesRgcBatch, EveryCompiledTargetStaysWithinTheTolerance) {
+    // The best target is what the test above checks; AVX2, SSE4 and the scalar fallback of
+    // Highway's dynamic dispatch run the same code at other widths (and other Compress paths).
+    int targets = 0;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        for (const bool inverse : {false, true}) {
+            ClipSettings s;
+            s.inverse = inverse;
+            const GamutClipper g(ClipMethod::aces_rgc, Gamut(rec2020(), 4.0), s);
+            const std::vector<float> in = batch_input(4.0, 77);
+            std::vector<float> out(in.size());
+            clip_batch(g, in, out, {.threads = 1, .simd = true});
+            for (std::size_t i = 0; i < in.size() / 3; ++i) {
+                const Rgb ref = g.clip({in[3 * i], in[3 * i + 1], in[3 * i + 2]});
+                const double ach = std::max({finite_or_default(in[3 * i]),
+                                             finite_or_default(in[3 * i + 1]),
+                                             finite_or_default(in[3 * i + 2])});
+                for (int k = 0; k < 3; ++k) {
+                    const double scale = std::max({4.0, std::abs(ach), std::abs(channel(ref, k))});
+                    ASSERT_LE(std::abs(out[3 * i + static_cast<std::size_t>(k)] - channel(ref, k)),
+                              1e-5 * scale)
+                        << hwy::TargetName(target) << " inverse " << inverse << " colour " << i;
+                }
+            }
+        }
+        ++targets;
+    }
+    hwy::SetSupportedTargetsForTest(0);
+    EXPECT_GE(targets, 2);
 }
 
 TEST(AcesRgcBatch, LanesSentToTheDoubleReferenceOnTheBenchmarkInput) {
