@@ -2,10 +2,12 @@
 //
 // Per vector of colours, the scalar reference's steps (aces_rgc.cpp): the non-finite rule,
 // ach = max(r, g, b), per channel d = (ach − c)·(1/|ach|), and beyond the threshold the curve,
-// through L = ln nd (Highway's Exp, Log and Log1p, hwy/contrib/math/math-inl.h):
+// through L = ln nd:
 //   forward  D = thr + s·exp(min(L, 0) − log1p(exp(−p|L|))/p)
-//            (= thr + s·nd/(1 + nd^p)^(1/p), with no exponent above 0: no overflow), in float;
-//   inverse  D = thr + s·exp(L − log1p(−u)/p), u = exp(p L) = nd^p, for d below the asymptote
+//            (= thr + s·nd/(1 + nd^p)^(1/p), with no exponent above 0: no overflow), in float,
+//            with this file's FastLog / FastExpNonPositive (no division);
+//   inverse  D = thr + s·exp(L − log1p(−u)/p), u = exp(p L) = nd^p (Highway's Exp, Log, Log1p
+//            of hwy/contrib/math/math-inl.h), for d below the asymptote
 //            thr + s (unchanged from there on), in double: its slope (1 − u)^(−(1+p)/p) grows
 //            without bound toward the asymptote and amplifies float's rounding of d beyond
 //            1e-5 (measured: 9e-6 with float up to u = 0.9);
@@ -171,6 +173,54 @@ HWY_INLINE void Patch(const GamutClipper& clipper, const float* in, float* out, 
 
 constexpr std::size_t max_float_lanes = HWY_MAX_BYTES / sizeof(float);
 
+/// ln x for positive normal float x, without a division: x = 2^e m with m in [√½, √2),
+/// ln m = 2 atanh(t), t = (m − 1)/(m + 1) in [−0.172, 0.172], by its series
+/// 2t (1 + t²/3 + t⁴/5 + t⁶/7 + t⁸/9) (truncation below 1e-9), 1/(m + 1) by the approximate
+/// reciprocal and one Newton step, and e ln 2 with ln 2 split in two (Cody and Waite) so that
+/// e ln 2_hi is exact. Within a few 1e-8 of ln x, absolutely, over the normal range.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V FastLog(D d, V x) {
+    const hn::RebindToSigned<D> di;
+    // Offset so that the exponent field counts from √½ (0x3F3504F3 = the bits of √½).
+    const auto bits = hn::Sub(hn::BitCast(di, x), hn::Set(di, 0x3F3504F3));
+    const V e = hn::ConvertTo(d, hn::ShiftRight<23>(bits));
+    const V m = hn::BitCast(d, hn::Add(hn::And(bits, hn::Set(di, 0x007FFFFF)), hn::Set(di, 0x3F3504F3)));
+    const V one = hn::Set(d, 1.0f), two = hn::Set(d, 2.0f);
+    const V den = hn::Add(m, one);
+    V inv = hn::ApproximateReciprocal(den);
+    inv = hn::Mul(inv, hn::NegMulAdd(den, inv, two));  // Newton: y (2 − a y)
+    const V t = hn::Mul(hn::Sub(m, one), inv);
+    const V t2 = hn::Mul(t, t);
+    V series = hn::MulAdd(t2, hn::Set(d, 1.0f / 9.0f), hn::Set(d, 1.0f / 7.0f));
+    series = hn::MulAdd(series, t2, hn::Set(d, 1.0f / 5.0f));
+    series = hn::MulAdd(series, t2, hn::Set(d, 1.0f / 3.0f));
+    series = hn::Mul(series, t2);
+    const V ln_m = hn::MulAdd(hn::Mul(two, t), series, hn::Mul(two, t));
+    // ln 2 = 0.693145751953125 (exact in 16 bits) + 1.4286068203094172e-6.
+    return hn::MulAdd(e, hn::Set(d, 0.693145751953125f),
+                      hn::MulAdd(e, hn::Set(d, 1.4286068203094172e-6f), ln_m));
+}
+
+/// e^x for x <= 0 in float, 0 below −87 (where e^x is no longer a normal float and matters to no
+/// colour): x = k ln 2 + r, |r| <= ln2/2, e^r by its Taylor series to r^7/7! (truncation below
+/// 6e-9 relative), times 2^k from the exponent bits.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V FastExpNonPositive(D d, V x) {
+    const hn::RebindToSigned<D> di;
+    const V k = hn::Round(hn::Mul(x, hn::Set(d, 1.4426950408889634f)));  // x / ln 2
+    const V r = hn::NegMulAdd(k, hn::Set(d, 1.4286068203094172e-6f),
+                              hn::NegMulAdd(k, hn::Set(d, 0.693145751953125f), x));
+    V p = hn::MulAdd(r, hn::Set(d, 1.0f / 5040.0f), hn::Set(d, 1.0f / 720.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f / 120.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f / 24.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f / 6.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 0.5f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f));
+    const V scale = hn::BitCast(d, hn::ShiftLeft<23>(hn::Add(hn::ConvertTo(di, k), hn::Set(di, 127))));
+    return hn::IfThenElseZero(hn::Ge(x, hn::Set(d, -87.0f)), hn::Mul(p, scale));
+}
+
 /// The forward curve f(nd) = nd / (1 + nd^p)^(1/p) = exp(min(L, 0) − ln(1 + exp(−p|L|))/p),
 /// L = ln nd, in float (nd >= 0; exponents never above 0, so nothing overflows). ln(1 + e) for
 /// e in [0, 1] is taken as Log(1 + e): its absolute error (an ulp of 1, 6e-8) is what f needs.
@@ -179,10 +229,10 @@ HWY_INLINE V ForwardCurve(D d, V nd, V power, V inv_power) {
     using T = hn::TFromD<D>;
     const V safe = hn::Min(hn::Max(nd, hn::Set(d, std::numeric_limits<T>::min())),
                            hn::Set(d, static_cast<T>(1e30)));
-    const V L = hn::Log(d, safe);
-    const V e = hn::Exp(d, hn::Neg(hn::Mul(power, hn::Abs(L))));
-    const V l1 = hn::Log(d, hn::Add(hn::Set(d, static_cast<T>(1.0)), e));
-    return hn::Exp(d, hn::NegMulAdd(l1, inv_power, hn::Min(L, hn::Zero(d))));
+    const V L = FastLog(d, safe);
+    const V e = FastExpNonPositive(d, hn::Neg(hn::Mul(power, hn::Abs(L))));
+    const V l1 = FastLog(d, hn::Add(hn::Set(d, static_cast<T>(1.0)), e));
+    return FastExpNonPositive(d, hn::NegMulAdd(l1, inv_power, hn::Min(L, hn::Zero(d))));
 }
 
 /// Colours per block of the forward: its compressed channels are gathered into dense buffers so
@@ -207,8 +257,9 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
     const V cap = hn::Set(d, 1e30f);
     const VI lane3 = hn::Mul(hn::Iota(di, 0), hn::Set(di, 3));
     constexpr std::size_t capacity = 3 * block_colours + max_float_lanes;
-    alignas(64) float nd_buf[capacity], a_buf[capacity], b_buf[capacity];
-    alignas(64) std::int32_t at_buf[capacity];
+    // Zeroed once per call: the last vector of a pass reads past the packed values.
+    alignas(64) float nd_buf[capacity]{}, a_buf[capacity]{}, b_buf[capacity]{};
+    alignas(64) std::int32_t at_buf[capacity]{};
     alignas(64) float hard_buf[3 * block_colours];
     std::size_t hard_at[block_colours];
     alignas(64) float flag[max_float_lanes];
@@ -265,13 +316,22 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
         }
         // (2) The curve on the packed channels (the last vector's unused lanes are left over
         // values, computed and not written).
-        for (std::size_t j = 0; j < packed; j += n) {
-            const V f = ForwardCurve(d, hn::Load(d, nd_buf + j), P.power, P.inv_power);
+        const auto finish = [&](std::size_t j, V f) {
             V o = hn::MulAdd(hn::Load(d, b_buf + j), f, hn::Load(d, a_buf + j));
             o = hn::Min(hn::Max(o, hn::Neg(cap)), cap);
             if (P.confined) o = hn::Min(hn::Max(o, zero), P.max);
             hn::Store(o, d, nd_buf + j);
+        };
+        // Two vectors at a time: the curve is a chain of four dependent transcendentals, and
+        // two independent chains keep the pipeline fuller.
+        std::size_t j = 0;
+        for (; j + 2 * n <= packed + n - 1; j += 2 * n) {
+            const V f0 = ForwardCurve(d, hn::Load(d, nd_buf + j), P.power, P.inv_power);
+            const V f1 = ForwardCurve(d, hn::Load(d, nd_buf + j + n), P.power, P.inv_power);
+            finish(j, f0);
+            finish(j + n, f1);
         }
+        for (; j < packed; j += n) finish(j, ForwardCurve(d, hn::Load(d, nd_buf + j), P.power, P.inv_power));
         // (3) Back to their places.
         float* block_out = out + 3 * begin;
         for (std::size_t j = 0; j < packed; ++j) block_out[at_buf[j]] = nd_buf[j];
