@@ -61,6 +61,8 @@ struct AcesV {
     V power, inv_power, max, large;  // |ach| above `large` goes to the double reference
     bool inverse, confined;
 
+    /// From the clipper's derived values (aces_rgc.cpp); `large` is large_confined × max when
+    /// the clipper confines, else large_free.
     AcesV(D d, const GamutClipper& clipper, double large_confined, double large_free) {
         using T = hn::TFromD<D>;
         const auto& x = clipper.derived();
@@ -88,8 +90,9 @@ HWY_INLINE V FiniteOrDefault(D d, V v) {
     return hn::IfThenElse(hn::IsInf(v), hn::CopySign(hn::Set(d, static_cast<T>(1e30)), v), v);
 }
 
-/// Compresses (or, inverse, uncompresses) one channel c against ach; flags lanes for the double
-/// reference in `hard` (inverse near its asymptote, where its slope exceeds `steep`: u > 1 − ...).
+/// Compresses (or, inverse, uncompresses) one channel c against ach (inv_abs = 1/|ach|); adds to
+/// `hard` the lanes for the double reference: inverse with u = nd^p above u_max, or d at or above
+/// the asymptote by less than the factor `band`. Channels below the threshold return c.
 template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
 HWY_INLINE V Channel(D d, const AcesV<D>& P, const ChannelV<V>& C, V c, V ach, V abs_ach,
                      V inv_abs, V u_max, V band, M& hard) {
@@ -126,9 +129,10 @@ HWY_INLINE V Channel(D d, const AcesV<D>& P, const ChannelV<V>& C, V c, V ach, V
     return hn::IfThenElse(active, out, c);
 }
 
-/// One vector of colours in the precision of D (float, or double with the colours loaded and
-/// stored as floats through DF = Rebind<float, D>). Returns false when a lane needs the double
-/// reference (the results are then in r, g, b for the others and `hard` says which).
+/// One vector of colours (r, g, b in and out) in the precision of D: the non-finite rule, ach,
+/// the three channels, 0 where ach = 0, the cube when confined. `hard` receives the lanes whose
+/// results must come from the double reference (|ach| below `tiny` or above P.large, and those
+/// of Channel); their r, g, b here are meaningless.
 template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
 HWY_INLINE void Colours(D d, const AcesV<D>& P, V& r, V& g, V& b, V tiny, V u_max, V band,
                         M& hard) {
@@ -386,6 +390,8 @@ std::size_t Inverse(const GamutClipper& clipper, const float* in, float* out, st
 
 }  // namespace
 
+/// The kernel of kernels.h: the largest multiple of the vector length of `colours`, forward
+/// (float) or inverse (double) as the clipper says; returns how many colours it did.
 std::size_t ClipAcesRgc(const GamutClipper& clipper, const float* in, float* out,
                         std::size_t colours) {
     return clipper.inverse() ? Inverse(clipper, in, out, colours)
