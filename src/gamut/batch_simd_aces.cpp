@@ -338,7 +338,7 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
         for (; j < packed; j += n) finish(j, ForwardCurve(d, hn::Load(d, nd_buf + j), P.power, P.inv_power));
         // (3) Back to their places.
         float* block_out = out + 3 * begin;
-        for (std::size_t j = 0; j < packed; ++j) block_out[at_buf[j]] = nd_buf[j];
+        for (std::size_t q = 0; q < packed; ++q) block_out[at_buf[q]] = nd_buf[q];
         for (std::size_t h = 0; h < hard_count; ++h) {
             const float* c = hard_buf + 3 * h;
             const Rgb o = clipper.clip({c[0], c[1], c[2]});
