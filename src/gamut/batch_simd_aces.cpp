@@ -1,7 +1,421 @@
+// The SIMD batch kernel of aces-rgc (Google Highway, dynamic dispatch), forward and inverse.
+//
+// Per vector of colours, the scalar reference's steps (aces_rgc.cpp): the non-finite rule,
+// ach = max(r, g, b), per channel d = (ach − c)·(1/|ach|), and beyond the threshold the curve,
+// through L = ln nd:
+//   forward  D = thr + s·exp(min(L, 0) − log1p(exp(−p|L|))/p)
+//            (= thr + s·nd/(1 + nd^p)^(1/p), with no exponent above 0: no overflow), in float,
+//            with this file's FastLog / FastExpNonPositive (no division);
+//   inverse  D = thr + s·exp(L − log1p(−u)/p), u = exp(p L) = nd^p (Highway's Exp, Log, Log1p
+//            of hwy/contrib/math/math-inl.h), for d below the asymptote
+//            thr + s (unchanged from there on), in double: its slope (1 − u)^(−(1+p)/p) grows
+//            without bound toward the asymptote and amplifies float's rounding of d beyond
+//            1e-5 (measured: 9e-6 with float up to u = 0.9);
+// then ach − D·|ach|, capped at ±1e30 (a compressed channel, as the reference), and clamped
+// into [0, max] when the clipper confines. The forward packs the compressed channels of a block
+// of 512 colours into dense buffers (a third of the channels on the benchmark's input, where
+// nearly every vector has some) and runs the curve on full vectors of those only; the inverse
+// runs it per vector, skipping a channel whose lanes are all below the threshold.
+//
+// Lanes sent to the double reference (GamutClipper::clip, written over the vector's result):
+// - forward: |ach| < 1e-30 (not 0, which gives 0 here as in the reference), where 1/|ach| may
+//   overflow; |ach| > 1e30; and, when confined, ach > 16·max, where float's rounding of
+//   ach − D·|ach| (a few 1e-7 of |ach|) could exceed 1e-5·max inside the cube;
+// - inverse: u > 1 − 1e-4 (the slope beyond 2e7 would amplify even double's rounding toward
+//   1e-8), and d within 1e-9 (relative) above the asymptote, where the inverse jumps from +inf
+//   back to the identity and rounding may put d on the other side.
+// On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube, as ACEScg) the
+// forward sends no lane; the inverse a few in 10^4 (tests/gamut/aces_rgc_test.cpp counts them).
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE __BASE_FILE__
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+#include <hwy/contrib/math/math-inl.h>
+
 #include "kernels.h"
 
-namespace irid::detail {
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
 
-std::size_t clip_aces_rgc_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept { return 0; }  // PROVISIONAL
+HWY_BEFORE_NAMESPACE();
+namespace irid {
+namespace HWY_NAMESPACE {
+namespace {
 
-}  // namespace irid::detail
+namespace hn = hwy::HWY_NAMESPACE;
+
+/// The float (forward) or double (inverse) parameters of one channel's curve.
+template <class V>
+struct ChannelV {
+    V thr, scale, inv_scale, asymptote;
+};
+
+/// The parameters of a call, broadcast once, in the kernel's precision.
+template <class D>
+struct AcesV {
+    using V = hn::Vec<D>;
+    ChannelV<V> ch[3];
+    V power, inv_power, max, large;  // |ach| above `large` goes to the double reference
+    bool inverse, confined;
+
+    /// From the clipper's derived values (aces_rgc.cpp); `large` is large_confined × max when
+    /// the clipper confines, else large_free.
+    AcesV(D d, const GamutClipper& clipper, double large_confined, double large_free) {
+        using T = hn::TFromD<D>;
+        const auto& x = clipper.derived();
+        for (std::size_t k = 0; k < 3; ++k) {
+            ch[k].thr = hn::Set(d, static_cast<T>(x[k]));
+            ch[k].scale = hn::Set(d, static_cast<T>(x[3 + k]));
+            ch[k].inv_scale = hn::Set(d, static_cast<T>(1.0 / x[3 + k]));
+            ch[k].asymptote = hn::Set(d, static_cast<T>(x[8 + k]));
+        }
+        power = hn::Set(d, static_cast<T>(x[6]));
+        inv_power = hn::Set(d, static_cast<T>(x[7]));
+        const double m = clipper.gamut().max();
+        max = hn::Set(d, static_cast<T>(m));
+        inverse = clipper.inverse();
+        confined = clipper.confines_to_cube();
+        large = hn::Set(d, static_cast<T>(confined ? large_confined * m : large_free));
+    }
+};
+
+/// The non-finite rule of clip.h (NaN → 0, ±Inf → ±1e30) in either precision.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V FiniteOrDefault(D d, V v) {
+    using T = hn::TFromD<D>;
+    v = hn::IfThenZeroElse(hn::IsNaN(v), v);
+    return hn::IfThenElse(hn::IsInf(v), hn::CopySign(hn::Set(d, static_cast<T>(1e30)), v), v);
+}
+
+/// Compresses (or, inverse, uncompresses) one channel c against ach (inv_abs = 1/|ach|); adds to
+/// `hard` the lanes for the double reference: inverse with u = nd^p above u_max, or d at or above
+/// the asymptote by less than the factor `band`. Channels below the threshold return c.
+template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
+HWY_INLINE V Channel(D d, const AcesV<D>& P, const ChannelV<V>& C, V c, V ach, V abs_ach,
+                     V inv_abs, V u_max, V band, M& hard) {
+    using T = hn::TFromD<D>;
+    const V dist = hn::Mul(hn::Sub(ach, c), inv_abs);
+    M active = hn::Ge(dist, C.thr);
+    if (P.inverse) {
+        // The inverse jumps from +inf back to the identity at the asymptote: a lane within
+        // rounding of d above it may belong below it.
+        hard = hn::Or(hard, hn::And(hn::Ge(dist, C.asymptote), hn::Lt(dist, hn::Mul(C.asymptote, band))));
+        active = hn::And(active, hn::Lt(dist, C.asymptote));
+    }
+    if (hn::AllFalse(d, active)) return c;
+    // nd clamped into [smallest normal, 1e30]: Log is finite; the clamped ends change nothing
+    // that shows (below, nd compresses to thr; beyond 1e30, to thr + s, to float precision).
+    const V nd = hn::Min(hn::Max(hn::Mul(hn::Sub(dist, C.thr), C.inv_scale),
+                                 hn::Set(d, std::numeric_limits<T>::min())),
+                         hn::Set(d, static_cast<T>(1e30)));
+    const V L = hn::Log(d, nd);
+    V f;
+    if (!P.inverse) {
+        const V e = hn::Exp(d, hn::Neg(hn::Mul(P.power, hn::Abs(L))));
+        f = hn::Exp(d, hn::NegMulAdd(hn::Log1p(d, e), P.inv_power, hn::Min(L, hn::Zero(d))));
+    } else {
+        const V u = hn::Exp(d, hn::Mul(P.power, L));
+        hard = hn::Or(hard, hn::And(active, hn::Gt(u, u_max)));
+        const V safe_u = hn::Min(u, u_max);
+        f = hn::Exp(d, hn::NegMulAdd(hn::Log1p(d, hn::Neg(safe_u)), P.inv_power, L));
+    }
+    const V D_ = hn::MulAdd(C.scale, f, C.thr);
+    // Capped at ±1e30 as the reference caps a compressed channel (aces_rgc.cpp).
+    const V cap = hn::Set(d, static_cast<T>(1e30));
+    const V out = hn::Min(hn::Max(hn::NegMulAdd(D_, abs_ach, ach), hn::Neg(cap)), cap);
+    return hn::IfThenElse(active, out, c);
+}
+
+/// One vector of colours (r, g, b in and out) in the precision of D: the non-finite rule, ach,
+/// the three channels, 0 where ach = 0, the cube when confined. `hard` receives the lanes whose
+/// results must come from the double reference (|ach| below `tiny` or above P.large, and those
+/// of Channel); their r, g, b here are meaningless.
+template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
+HWY_INLINE void Colours(D d, const AcesV<D>& P, V& r, V& g, V& b, V tiny, V u_max, V band,
+                        M& hard) {
+    using T = hn::TFromD<D>;
+    r = FiniteOrDefault(d, r);
+    g = FiniteOrDefault(d, g);
+    b = FiniteOrDefault(d, b);
+    const V zero = hn::Zero(d), one = hn::Set(d, static_cast<T>(1.0));
+    const V ach = hn::Max(r, hn::Max(g, b));
+    const V abs_ach = hn::Abs(ach);
+    const M is_zero = hn::Eq(ach, zero);
+    hard = hn::AndNot(is_zero, hn::Or(hn::Lt(abs_ach, tiny), hn::Gt(abs_ach, P.large)));
+    // Zero and hard lanes divide by 1 here; their results are replaced.
+    const V inv_abs = hn::Div(one, hn::IfThenElse(hn::Or(is_zero, hard), one, abs_ach));
+    V ro = Channel(d, P, P.ch[0], r, ach, abs_ach, inv_abs, u_max, band, hard);
+    V go = Channel(d, P, P.ch[1], g, ach, abs_ach, inv_abs, u_max, band, hard);
+    V bo = Channel(d, P, P.ch[2], b, ach, abs_ach, inv_abs, u_max, band, hard);
+    r = hn::IfThenZeroElse(is_zero, ro);
+    g = hn::IfThenZeroElse(is_zero, go);
+    b = hn::IfThenZeroElse(is_zero, bo);
+    if (P.confined) {
+        r = hn::Min(hn::Max(r, zero), P.max);
+        g = hn::Min(hn::Max(g, zero), P.max);
+        b = hn::Min(hn::Max(b, zero), P.max);
+    }
+}
+
+/// Writes n colours of `result` to out, those flagged in `flag` recomputed by the double
+/// reference from `in` (read before `out`, which may be the same memory, is written).
+HWY_INLINE void Patch(const GamutClipper& clipper, const float* in, float* out, float* result,
+                      const float* flag, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k) {
+        if (flag[k] == 0.0f) continue;
+        const float* c = in + 3 * k;
+        const Rgb o = clipper.clip({c[0], c[1], c[2]});
+        result[3 * k] = static_cast<float>(o.r);
+        result[3 * k + 1] = static_cast<float>(o.g);
+        result[3 * k + 2] = static_cast<float>(o.b);
+    }
+    for (std::size_t k = 0; k < 3 * n; ++k) out[k] = result[k];
+}
+
+constexpr std::size_t max_float_lanes = HWY_MAX_BYTES / sizeof(float);
+
+/// ln x for positive normal float x, without a division: x = 2^e m with m in [√½, √2),
+/// ln m = 2 atanh(t), t = (m − 1)/(m + 1) in [−0.172, 0.172], by its series
+/// 2t (1 + t²/3 + t⁴/5 + t⁶/7 + t⁸/9) (truncation below 1e-9), 1/(m + 1) by the approximate
+/// reciprocal and one Newton step, and e ln 2 with ln 2 split in two (Cody and Waite) so that
+/// e ln 2_hi is exact. Within a few 1e-8 of ln x, absolutely, over the normal range.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V FastLog(D d, V x) {
+    const hn::RebindToSigned<D> di;
+    // Offset so that the exponent field counts from √½ (0x3F3504F3 = the bits of √½).
+    const auto bits = hn::Sub(hn::BitCast(di, x), hn::Set(di, 0x3F3504F3));
+    const V e = hn::ConvertTo(d, hn::ShiftRight<23>(bits));
+    const V m = hn::BitCast(d, hn::Add(hn::And(bits, hn::Set(di, 0x007FFFFF)), hn::Set(di, 0x3F3504F3)));
+    const V one = hn::Set(d, 1.0f), two = hn::Set(d, 2.0f);
+    const V den = hn::Add(m, one);
+    V inv = hn::ApproximateReciprocal(den);
+    inv = hn::Mul(inv, hn::NegMulAdd(den, inv, two));  // Newton: y (2 − a y)
+    const V t = hn::Mul(hn::Sub(m, one), inv);
+    const V t2 = hn::Mul(t, t);
+    V series = hn::MulAdd(t2, hn::Set(d, 1.0f / 9.0f), hn::Set(d, 1.0f / 7.0f));
+    series = hn::MulAdd(series, t2, hn::Set(d, 1.0f / 5.0f));
+    series = hn::MulAdd(series, t2, hn::Set(d, 1.0f / 3.0f));
+    series = hn::Mul(series, t2);
+    const V ln_m = hn::MulAdd(hn::Mul(two, t), series, hn::Mul(two, t));
+    // ln 2 = 0.693145751953125 (exact in 16 bits) + 1.4286068203094172e-6.
+    return hn::MulAdd(e, hn::Set(d, 0.693145751953125f),
+                      hn::MulAdd(e, hn::Set(d, 1.4286068203094172e-6f), ln_m));
+}
+
+/// e^x for x <= 0 in float, 0 below −87 (where e^x is no longer a normal float and matters to no
+/// colour): x = k ln 2 + r, |r| <= ln2/2, e^r by its Taylor series to r^7/7! (truncation below
+/// 6e-9 relative), times 2^k from the exponent bits.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V FastExpNonPositive(D d, V x) {
+    const hn::RebindToSigned<D> di;
+    const V k = hn::Round(hn::Mul(x, hn::Set(d, 1.4426950408889634f)));  // x / ln 2
+    const V r = hn::NegMulAdd(k, hn::Set(d, 1.4286068203094172e-6f),
+                              hn::NegMulAdd(k, hn::Set(d, 0.693145751953125f), x));
+    V p = hn::MulAdd(r, hn::Set(d, 1.0f / 5040.0f), hn::Set(d, 1.0f / 720.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f / 120.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f / 24.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f / 6.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 0.5f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f));
+    p = hn::MulAdd(p, r, hn::Set(d, 1.0f));
+    const V scale = hn::BitCast(d, hn::ShiftLeft<23>(hn::Add(hn::ConvertTo(di, k), hn::Set(di, 127))));
+    return hn::IfThenElseZero(hn::Ge(x, hn::Set(d, -87.0f)), hn::Mul(p, scale));
+}
+
+/// The forward curve f(nd) = nd / (1 + nd^p)^(1/p) = exp(min(L, 0) − ln(1 + exp(−p|L|))/p),
+/// L = ln nd, in float (nd >= 0; exponents never above 0, so nothing overflows). ln(1 + e) for
+/// e in [0, 1] is taken as Log(1 + e): its absolute error (an ulp of 1, 6e-8) is what f needs.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ForwardCurve(D d, V nd, V power, V inv_power) {
+    using T = hn::TFromD<D>;
+    const V safe = hn::Min(hn::Max(nd, hn::Set(d, std::numeric_limits<T>::min())),
+                           hn::Set(d, static_cast<T>(1e30)));
+    const V L = FastLog(d, safe);
+    const V e = FastExpNonPositive(d, hn::Neg(hn::Mul(power, hn::Abs(L))));
+    const V l1 = FastLog(d, hn::Add(hn::Set(d, static_cast<T>(1.0)), e));
+    return FastExpNonPositive(d, hn::NegMulAdd(l1, inv_power, hn::Min(L, hn::Zero(d))));
+}
+
+/// Colours per block of the forward: its compressed channels are gathered into dense buffers so
+/// that the curve runs on full vectors of them only (a third of the channels on the benchmark's
+/// input, nearly every vector having some).
+constexpr std::size_t block_colours = 512;
+
+/// The forward in float, in blocks: (1) per vector, the untouched channels are stored and the
+/// compressed ones packed (Compress) as nd with out = A + B·f(nd), A = ach − thr·|ach|,
+/// B = −s·|ach|, and their position; (2) the curve on the packed values; (3) the results written
+/// to their positions; then the hard lanes by the double reference.
+std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, std::size_t colours) {
+    using D = hn::ScalableTag<float>;
+    using DI = hn::RebindToSigned<D>;
+    const D d;
+    const DI di;
+    using V = hn::Vec<D>;
+    using VI = hn::Vec<DI>;
+    const std::size_t n = hn::Lanes(d);
+    const AcesV<D> P(d, clipper, 16.0, 1e30);
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), tiny = hn::Set(d, 1e-30f);
+    const V cap = hn::Set(d, 1e30f);
+    const VI lane3 = hn::Mul(hn::Iota(di, 0), hn::Set(di, 3));
+    constexpr std::size_t capacity = 3 * block_colours + max_float_lanes;
+    // Zeroed once per call: the last vector of a pass reads past the packed values.
+    alignas(64) float nd_buf[capacity]{}, a_buf[capacity]{}, b_buf[capacity]{};
+    alignas(64) std::int32_t at_buf[capacity]{};
+    alignas(64) float hard_buf[3 * block_colours];
+    std::size_t hard_at[block_colours];
+    alignas(64) float flag[max_float_lanes];
+
+    const std::size_t whole = colours / n * n;
+    for (std::size_t begin = 0; begin < whole; begin += block_colours) {
+        const std::size_t end = std::min(whole, begin + block_colours);
+        std::size_t packed = 0, hard_count = 0;
+        for (std::size_t i = begin; i < end; i += n) {
+            V c[3];
+            hn::LoadInterleaved3(d, in + 3 * i, c[0], c[1], c[2]);
+            if (HWY_UNLIKELY(!hn::AllTrue(d, hn::And(hn::And(hn::IsFinite(c[0]), hn::IsFinite(c[1])),
+                                                   hn::IsFinite(c[2]))))) {
+                for (V& v : c) v = FiniteOrDefault(d, v);
+            }
+            const V ach = hn::Max(c[0], hn::Max(c[1], c[2]));
+            const V abs_ach = hn::Abs(ach);
+            const auto is_zero = hn::Eq(ach, zero);
+            const auto hard =
+                hn::AndNot(is_zero, hn::Or(hn::Lt(abs_ach, tiny), hn::Gt(abs_ach, P.large)));
+            const auto skip = hn::Or(is_zero, hard);
+            const V inv_abs = hn::Div(one, hn::IfThenElse(skip, one, abs_ach));
+            const VI base = hn::Add(lane3, hn::Set(di, static_cast<std::int32_t>(3 * (i - begin))));
+            for (std::size_t k = 0; k < 3; ++k) {
+                const ChannelV<V>& C = P.ch[k];
+                const V dist = hn::Mul(hn::Sub(ach, c[k]), inv_abs);
+                const auto active = hn::AndNot(skip, hn::Ge(dist, C.thr));
+                if (!hn::AllFalse(d, active)) {
+                    const V nd = hn::Mul(hn::Sub(dist, C.thr), C.inv_scale);
+                    const V a = hn::NegMulAdd(C.thr, abs_ach, ach);
+                    const V b = hn::Neg(hn::Mul(C.scale, abs_ach));
+                    // Compress in registers, then a full store (the buffers have a vector of
+                    // slack): a compressing store to memory is microcoded and slow on x86.
+                    const VI at = hn::Add(base, hn::Set(di, static_cast<std::int32_t>(k)));
+                    hn::StoreU(hn::Compress(nd, active), d, nd_buf + packed);
+                    hn::StoreU(hn::Compress(a, active), d, a_buf + packed);
+                    hn::StoreU(hn::Compress(b, active), d, b_buf + packed);
+                    hn::StoreU(hn::Compress(at, hn::RebindMask(di, active)), di, at_buf + packed);
+                    packed += hn::CountTrue(d, active);
+                }
+                V v = hn::IfThenZeroElse(is_zero, c[k]);
+                if (P.confined) v = hn::Min(hn::Max(v, zero), P.max);
+                c[k] = v;
+            }
+            if (HWY_UNLIKELY(!hn::AllFalse(d, hard))) {
+                hn::Store(hn::IfThenElseZero(hard, one), d, flag);
+                for (std::size_t k = 0; k < n; ++k) {
+                    if (flag[k] == 0.0f) continue;
+                    for (std::size_t m = 0; m < 3; ++m) hard_buf[3 * hard_count + m] = in[3 * (i + k) + m];
+                    hard_at[hard_count++] = i + k;
+                }
+            }
+            hn::StoreInterleaved3(c[0], c[1], c[2], d, out + 3 * i);
+        }
+        // (2) The curve on the packed channels (the last vector's unused lanes are left over
+        // values, computed and not written).
+        const auto finish = [&](std::size_t j, V f) {
+            V o = hn::MulAdd(hn::Load(d, b_buf + j), f, hn::Load(d, a_buf + j));
+            o = hn::Min(hn::Max(o, hn::Neg(cap)), cap);
+            if (P.confined) o = hn::Min(hn::Max(o, zero), P.max);
+            hn::Store(o, d, nd_buf + j);
+        };
+        // Two vectors at a time: the curve is a chain of four dependent transcendentals, and
+        // two independent chains keep the pipeline fuller.
+        std::size_t j = 0;
+        for (; j + 2 * n <= packed + n - 1; j += 2 * n) {
+            const V f0 = ForwardCurve(d, hn::Load(d, nd_buf + j), P.power, P.inv_power);
+            const V f1 = ForwardCurve(d, hn::Load(d, nd_buf + j + n), P.power, P.inv_power);
+            finish(j, f0);
+            finish(j + n, f1);
+        }
+        for (; j < packed; j += n) finish(j, ForwardCurve(d, hn::Load(d, nd_buf + j), P.power, P.inv_power));
+        // (3) Back to their places.
+        float* block_out = out + 3 * begin;
+        for (std::size_t q = 0; q < packed; ++q) block_out[at_buf[q]] = nd_buf[q];
+        for (std::size_t h = 0; h < hard_count; ++h) {
+            const float* c = hard_buf + 3 * h;
+            const Rgb o = clipper.clip({c[0], c[1], c[2]});
+            float* dst = out + 3 * hard_at[h];
+            dst[0] = static_cast<float>(o.r);
+            dst[1] = static_cast<float>(o.g);
+            dst[2] = static_cast<float>(o.b);
+        }
+    }
+    return whole;
+}
+
+/// The inverse in double (its slope grows without bound toward the asymptote and would amplify
+/// float's rounding beyond 1e-5), colours loaded and stored as float.
+std::size_t Inverse(const GamutClipper& clipper, const float* in, float* out, std::size_t colours) {
+    using D = hn::ScalableTag<double>;
+    using DF = hn::Rebind<float, D>;
+    const D d;
+    const DF df;
+    using V = hn::Vec<D>;
+    using VF = hn::Vec<DF>;
+    const std::size_t n = hn::Lanes(d);
+    // In double the rounding of ach − D |ach| stays far below 1e-5 of max for any ach up to 1e30.
+    const AcesV<D> P(d, clipper, 1e30, 1e30);
+    const V tiny = hn::Set(d, 1e-300), u_max = hn::Set(d, 1.0 - 1e-4),
+            band = hn::Set(d, 1.0 + 1e-9);
+    std::size_t i = 0;
+    for (; i + n <= colours; i += n) {
+        VF rf, gf, bf;
+        hn::LoadInterleaved3(df, in + 3 * i, rf, gf, bf);
+        V r = hn::PromoteTo(d, rf), g = hn::PromoteTo(d, gf), b = hn::PromoteTo(d, bf);
+        hn::Mask<D> hard;
+        Colours(d, P, r, g, b, tiny, u_max, band, hard);
+        rf = hn::DemoteTo(df, r);
+        gf = hn::DemoteTo(df, g);
+        bf = hn::DemoteTo(df, b);
+        if (HWY_LIKELY(hn::AllFalse(d, hard))) {
+            hn::StoreInterleaved3(rf, gf, bf, df, out + 3 * i);
+            continue;
+        }
+        alignas(64) float result[3 * max_float_lanes];
+        alignas(64) float flag[max_float_lanes];
+        hn::StoreInterleaved3(rf, gf, bf, df, result);
+        hn::Store(hn::DemoteTo(df, hn::IfThenElseZero(hard, hn::Set(d, 1.0))), df, flag);
+        Patch(clipper, in + 3 * i, out + 3 * i, result, flag, n);
+    }
+    return i;
+}
+
+}  // namespace
+
+/// The kernel of kernels.h: the largest multiple of the vector length of `colours`, forward
+/// (float) or inverse (double) as the clipper says; returns how many colours it did.
+std::size_t ClipAcesRgc(const GamutClipper& clipper, const float* in, float* out,
+                        std::size_t colours) {
+    return clipper.inverse() ? Inverse(clipper, in, out, colours)
+                             : Forward(clipper, in, out, colours);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace irid
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+
+namespace irid {
+
+HWY_EXPORT(ClipAcesRgc);
+
+namespace detail {
+
+std::size_t clip_aces_rgc_simd(const GamutClipper& clipper, const float* in, float* out,
+                               std::size_t colours) noexcept {
+    return HWY_DYNAMIC_DISPATCH(ClipAcesRgc)(clipper, in, out, colours);
+}
+
+}  // namespace detail
+}  // namespace irid
+
+#endif  // HWY_ONCE

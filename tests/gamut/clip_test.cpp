@@ -44,7 +44,7 @@ bool on_boundary(const Rgb& c, double max, double tol = 1e-9) {
 
 TEST(ClipMethods, NamesRoundTripAndUnknownNamesListTheValidOnes) {
     for (const ClipMethod m : clip_methods()) EXPECT_EQ(parse_clip_method(clip_method_name(m)), m);
-    EXPECT_EQ(clip_methods().size(), 8u);
+    EXPECT_EQ(clip_methods().size(), 13u);
     try {
         (void)parse_clip_method("perceptual");
         FAIL();
@@ -61,7 +61,13 @@ TEST(ClipMethods, InGamutColoursAreUntouchedAndOutputsAreFiniteAndInside) {
                            {inf, -inf, 0.5}, {1e300, -1e300, 3}, {-0.0, 1e-320, 1}};
     for (const ClipMethod m : clip_methods()) {
         const GamutClipper clipper(m, gamut);
+        // The soft methods (aces-rgc, smits-soft) compress in-gamut colours beyond their
+        // threshold, and aces-rgc without clip leaves colours beyond its limit outside the cube
+        // (as OCIO's does): their contracts are tested in their own files; finiteness holds for all.
+        const bool untouched = !moves_in_gamut_colours(m);
+        const bool confined = clipper.confines_to_cube();
         for (const Rgb& c : inside) {
+            if (!untouched) break;
             const Rgb out = clipper.clip(c);
             EXPECT_EQ(out.r, c.r) << clip_method_name(m);
             EXPECT_EQ(out.g, c.g) << clip_method_name(m);
@@ -69,13 +75,17 @@ TEST(ClipMethods, InGamutColoursAreUntouchedAndOutputsAreFiniteAndInside) {
         }
         for (const Rgb& c : inputs) {
             const Rgb out = clipper.clip(c);
-            EXPECT_TRUE(gamut.contains(out)) << clip_method_name(m) << " " << c.r << "," << c.g << "," << c.b;
+            if (confined) {
+                EXPECT_TRUE(gamut.contains(out)) << clip_method_name(m) << " " << c.r << "," << c.g << "," << c.b;
+            }
         }
         for (const Rgb& c : hostile) {
             const Rgb out = clipper.clip(c);
             EXPECT_TRUE(std::isfinite(out.r) && std::isfinite(out.g) && std::isfinite(out.b))
                 << clip_method_name(m);
-            EXPECT_TRUE(gamut.contains(out)) << clip_method_name(m);
+            if (confined) {
+                EXPECT_TRUE(gamut.contains(out)) << clip_method_name(m);
+            }
         }
     }
 }
