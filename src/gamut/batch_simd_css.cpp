@@ -1,8 +1,494 @@
+// The float SIMD kernels of css (CSS Color 4 §13.2.2, binary search with local MINDE) and
+// css-raytrace (CSS Color 4 "Ray Trace" gamut mapping), Google Highway with dynamic dispatch.
+//
+// Both follow their double references (GamutClipper::css in clip.cpp, GamutClipper::css_raytrace
+// in css_raytrace.cpp) step by step in float, lane by lane, and are checked against them to
+// 1e-5 × max (tests/gamut/css_raytrace_test.cpp). What differs, and why:
+// - Hue: OkLCh(L, C, h) is formed as Oklab (L, C a0/C0, C b0/C0) with (a0, b0) and C0 the
+//   origin's Oklab a, b and chroma: cos h = a0/C0, sin h = b0/C0, the same point without trig.
+//   A lane whose origin has no hue to speak of (C0 < 1e-6) goes to the double path.
+// - The anchor OkLCh(L, 0, h) in linear RGB is L³ k with k = lms_to_rgb · (M2⁻¹ (1, 0, 0))³
+//   (the cube of a linear function of L), computed once per call in double.
+// - The origin's Oklab is computed from an LMS accurate to a few ulp of each component
+//   (compensated products and sums, AccurateLms): near an LMS component of 0 the cube root
+//   amplifies the plain float product's error without bound.
+// - css-raytrace uses the 32-bit anchor bounds of the specification's footnote 1 (1e-6), where
+//   the double reference uses the 64-bit 1e-12, and the 64-bit parallel threshold 1e-12 of
+//   footnote 7 in float as well (see parallel_epsilon_f).
+// - The binary search (css) runs a lane-masked loop until every lane has finished. Its branches
+//   compare float quantities against thresholds (in gamut or not, ΔEOK against the JND, the
+//   JND − ΔEOK against epsilon, the lightness against white and black, the search interval
+//   against epsilon): a lane where any such comparison was within float rounding of its
+//   threshold could branch differently from the double reference and end far from it, so it is
+//   recomputed with GamutClipper::clip in double ("flagged").
+// - css-raytrace flags lanes whose lightness is within rounding of white or black, whose origin
+//   has no hue, whose magnitude is beyond split_limit, and those whose rays make it sensitive to
+//   float rounding (wild_ray_t, grazing_gain).
+// - On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube) about 2 % of the
+//   lanes of either kernel are flagged (measured when the kernels were written).
+
+// No floating-point contraction: the compensated products of AccurateLms need every product
+// and sum rounded on its own (g++ would otherwise fuse them on the FMA targets). The pragma
+// comes before every #include (as in batch_simd.cpp). Explicit MulAdd calls stay fused.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE __BASE_FILE__
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "simd_common-inl.h"
+
+#include <irid/color/spaces.h>
+#include <irid/gamut/clip.h>
+
 #include "kernels.h"
 
-namespace irid::detail {
+#include <cstddef>
+#include <limits>
 
-std::size_t clip_css_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept { return 0; }  // PROVISIONAL
-std::size_t clip_css_raytrace_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept { return 0; }  // PROVISIONAL
+HWY_BEFORE_NAMESPACE();
+namespace irid {
+namespace HWY_NAMESPACE {
+namespace {
 
-}  // namespace irid::detail
+namespace hn = hwy::HWY_NAMESPACE;
+using simd::Df;
+using simd::Mf;
+using simd::Vf;
+
+/// CSS Color 4 §13.2.2: the JND and the search's resolution (as clip.cpp).
+constexpr float css_jnd_f = 0.02f;
+constexpr float css_epsilon_f = 0.0001f;
+/// CSS Color 4 Ray Trace, footnotes 1 and 7: the 32-bit thresholds.
+constexpr float raytrace_epsilon_f = 1e-6f;
+/// CSS Color 4 Ray Trace, "cast a ray": a direction component at or below this is parallel to
+/// its slab. The 64-bit 1e-12 of the specification, also in float (the contract gives
+/// 1e-6 in float only for the anchor bounds): float holds 1e-12 with its full relative
+/// precision, and with footnote 7's 1e-6 the components of the ray between two nearly equal
+/// dark colours would be dropped where the double reference keeps them, ending elsewhere.
+constexpr float parallel_epsilon_f = 1e-12f;
+/// Beyond this magnitude a channel is not split for the compensated products (4097 x would
+/// overflow near float's maximum); such a lane goes to the double path.
+constexpr float split_limit = 1e30f;
+/// Below this Oklab chroma the origin's hue is not resolved in float: the double path.
+constexpr float hueless_chroma = 1e-6f;
+/// Float rounding margins for the branch tests (flagged lanes go to the double path): the
+/// lightness (float Oklab L is within a few 1e-7 of double's), a channel against the cube's faces
+/// (relative to max: the float Oklab → RGB round trip is within a few 1e-7 max), ΔEOK against
+/// its thresholds, and the search interval against epsilon (relative).
+constexpr float lightness_margin = 1e-5f;
+constexpr float channel_margin = 1e-6f;
+constexpr float delta_margin = 1e-6f;
+constexpr float interval_margin = 1e-4f;
+/// css-raytrace: a restore pass (i > 0) whose ray meets the face at t > 2 (it crossed the cube
+/// from an anchor within rounding of the surface) or whose intersection moves by more than
+/// grazing_gain times an error of its end (a ray grazing the face: the float restore's error of
+/// about 1e-6 max would grow past 1e-5 max over the passes, which do not converge for colours
+/// near the white's lightness) sends the lane to the double path.
+constexpr float wild_ray_t = 2.0f;
+constexpr float grazing_gain = 5.0f;
+
+/// A row of rgb_to_lms as hi + lo in float (hi = float(m), lo = float(m − hi)), hi further split
+/// into hh + hl with 12-bit halves (Dekker 1971) for exact products.
+struct SplitMatrix {
+    Vf hh[9], hl[9], lo[9];
+};
+
+/// Dekker's split of a float into a high part with 12 significant bits and the rest (exact:
+/// a = hi + lo), for |a| below 1e30 (4097 a must not overflow).
+HWY_INLINE void Split(Df d, Vf a, Vf& hi, Vf& lo) {
+    const Vf t = hn::Mul(hn::Set(d, 4097.0f), a);
+    hi = hn::Sub(t, hn::Sub(t, a));
+    lo = hn::Sub(a, hi);
+}
+
+/// Knuth's TwoSum: s + err = a + b exactly.
+HWY_INLINE Vf TwoSum(Vf a, Vf b, Vf& err) {
+    const Vf s = hn::Add(a, b);
+    const Vf bb = hn::Sub(s, a);
+    err = hn::Add(hn::Sub(a, hn::Sub(s, bb)), hn::Sub(b, bb));
+    return s;
+}
+
+/// Oklab's LMS (before the cube root) of linear RGB, to within a few ulp of each component
+/// itself: compensated products and sums of the double matrix split into floats. The plain float
+/// product loses up to 1e-7 of the terms' size, which a cube root amplifies without bound near
+/// an LMS component of 0 (a colour far outside the cube on one side: its Oklab L was off by
+/// 4e-5 relative, its mapped colour by 2e-5).
+HWY_INLINE void AccurateLms(Df d, const SplitMatrix& M, Vf r, Vf g, Vf b, Vf& l, Vf& m, Vf& s) {
+    const Vf c[3] = {r, g, b};
+    Vf ch[3], cl[3];
+    for (int j = 0; j < 3; ++j) Split(d, c[j], ch[j], cl[j]);
+    Vf out[3];
+    for (int i = 0; i < 3; ++i) {
+        Vf p[3], e[3];
+        Vf small = hn::Zero(d);
+        for (int j = 0; j < 3; ++j) {
+            const int k = 3 * i + j;
+            const Vf hi = hn::Add(M.hh[k], M.hl[k]);
+            p[j] = hn::Mul(hi, c[j]);
+            // Dekker's TwoProduct: e = hi c − p exactly.
+            e[j] = hn::Add(hn::Add(hn::Add(hn::Sub(hn::Mul(M.hh[k], ch[j]), p[j]),
+                                           hn::Mul(M.hh[k], cl[j])),
+                                   hn::Mul(M.hl[k], ch[j])),
+                           hn::Mul(M.hl[k], cl[j]));
+            small = hn::Add(small, hn::Add(e[j], hn::Mul(M.lo[k], c[j])));
+        }
+        Vf r1, r2;
+        const Vf s1 = TwoSum(p[0], p[1], r1);
+        const Vf s2 = TwoSum(s1, p[2], r2);
+        out[i] = hn::Add(s2, hn::Add(hn::Add(r1, r2), small));
+    }
+    l = out[0];
+    m = out[1];
+    s = out[2];
+}
+
+/// The origin's Oklab from AccurateLms.
+HWY_INLINE void AccurateOklab(Df d, const SplitMatrix& S, const simd::OklabMatrices& M, Vf r, Vf g,
+                              Vf b, Vf& L, Vf& A, Vf& B) {
+    Vf l, m, s;
+    AccurateLms(d, S, r, g, b, l, m, s);
+    simd::Mul3(M.m2, simd::Cbrt(d, l), simd::Cbrt(d, m), simd::Cbrt(d, s), L, A, B);
+}
+
+/// What both kernels read from the clipper, once per call.
+struct Params {
+    SplitMatrix split;
+    simd::OklabMatrices M;
+    Vf max, white_l;
+    Vf k0, k1, k2;  // the anchor direction: OkLCh(L, 0, h) in linear RGB = L³ (k0, k1, k2)
+};
+
+HWY_INLINE Params LoadParams(Df d, const GamutClipper& clipper) {
+    Params p{{}, simd::LoadOklabMatrices(d, clipper), hn::Set(d, static_cast<float>(clipper.gamut().max())),
+             hn::Set(d, static_cast<float>(clipper.white_oklab_lightness())), hn::Zero(d),
+             hn::Zero(d), hn::Zero(d)};
+    const Vec3 q = oklab_m2_inverse * Vec3{1.0, 0.0, 0.0};
+    const Vec3 k = clipper.lms_to_rgb() * Vec3{q[0] * q[0] * q[0], q[1] * q[1] * q[1], q[2] * q[2] * q[2]};
+    p.k0 = hn::Set(d, static_cast<float>(k[0]));
+    p.k1 = hn::Set(d, static_cast<float>(k[1]));
+    p.k2 = hn::Set(d, static_cast<float>(k[2]));
+    const Mat3& to_lms = clipper.rgb_to_lms();
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            const double m = to_lms[i][j];
+            const auto hi = static_cast<float>(m);
+            const auto lo = static_cast<float>(m - static_cast<double>(hi));
+            // Dekker's split of hi, in float arithmetic (12 + 12 bits of its significand).
+            const float t = 4097.0f * hi;
+            const float hh = t - (t - hi);
+            const float hl = hi - hh;
+            const auto k9 = static_cast<std::size_t>(3 * i + j);
+            p.split.hh[k9] = hn::Set(d, hh);
+            p.split.hl[k9] = hn::Set(d, hl);
+            p.split.lo[k9] = hn::Set(d, lo);
+        }
+    }
+    return p;
+}
+
+/// Every channel in [0, max].
+HWY_INLINE Mf InCube(Vf r, Vf g, Vf b, Vf zero, Vf max) {
+    return hn::And(hn::And(hn::And(hn::Ge(r, zero), hn::Le(r, max)),
+                           hn::And(hn::Ge(g, zero), hn::Le(g, max))),
+                   hn::And(hn::Ge(b, zero), hn::Le(b, max)));
+}
+
+/// A channel within `margin` of 0 or of max.
+HWY_INLINE Mf NearFace(Vf v, Vf zero, Vf max, Vf margin) {
+    return hn::Or(hn::Lt(hn::Abs(hn::Sub(v, zero)), margin), hn::Lt(hn::Abs(hn::Sub(v, max)), margin));
+}
+
+HWY_INLINE Vf Clamp(Vf v, Vf zero, Vf max) {
+    return hn::Min(hn::Max(v, zero), max);
+}
+
+/// The Oklab chroma sqrt(a² + b²).
+HWY_INLINE Vf Chroma(Vf a, Vf b) {
+    return hn::Sqrt(hn::MulAdd(a, a, hn::Mul(b, b)));
+}
+
+/// Rewrites the flagged lanes of colours [i, i + lanes) of `out` with the double reference.
+HWY_INLINE void RedoInDouble(Df d, Mf flagged, const GamutClipper& clipper, const float* in,
+                             float* out, std::size_t i) {
+    if (hn::AllFalse(d, flagged)) return;
+    HWY_ALIGN float flags[hn::MaxLanes(d)];
+    hn::Store(hn::IfThenElseZero(flagged, hn::Set(d, 1.0f)), d, flags);
+    for (std::size_t lane = 0; lane < hn::Lanes(d); ++lane) {
+        if (flags[lane] == 0.0f) continue;
+        const std::size_t k = 3 * (i + lane);
+        const Rgb o = clipper.clip({in[k], in[k + 1], in[k + 2]});
+        out[k] = static_cast<float>(o.r);
+        out[k + 1] = static_cast<float>(o.g);
+        out[k + 2] = static_cast<float>(o.b);
+    }
+}
+
+/// "Cast a ray" (CSS Color 4 Ray Trace) from start (s) to end (e) through the box [0, max]³,
+/// lane by lane: returns the lanes where an intersection was found and writes it to (x, y, z).
+HWY_INLINE Mf CastRay(Df d, Vf s0, Vf s1, Vf s2, Vf e0, Vf e1, Vf e2, Vf zero, Vf max, Vf& x,
+                      Vf& y, Vf& z, Vf& t, Mf& grazing) {
+    const Vf inf = hn::Set(d, std::numeric_limits<float>::infinity());
+    const Vf eps = hn::Set(d, parallel_epsilon_f);
+    Vf tnear = hn::Neg(inf), tfar = inf;
+    Mf parallel_outside = hn::Lt(zero, zero);  // all false
+    const Vf d0 = hn::Sub(e0, s0), d1 = hn::Sub(e1, s1), d2 = hn::Sub(e2, s2);
+    Vf dk_near = zero, dk_far = zero;  // the direction's component across the face hit
+    const auto slab = [&](Vf a, Vf dir) {
+        const Mf use = hn::Gt(hn::Abs(dir), eps);
+        const Vf inv = hn::Div(hn::Set(d, 1.0f), dir);
+        const Vf t1 = hn::Mul(hn::Sub(zero, a), inv);
+        const Vf t2 = hn::Mul(hn::Sub(max, a), inv);
+        const Vf lo_t = hn::Min(t1, t2), hi_t = hn::Max(t1, t2);
+        dk_near = hn::IfThenElse(hn::And(use, hn::Gt(lo_t, tnear)), dir, dk_near);
+        dk_far = hn::IfThenElse(hn::And(use, hn::Lt(hi_t, tfar)), dir, dk_far);
+        tnear = hn::IfThenElse(use, hn::Max(lo_t, tnear), tnear);
+        tfar = hn::IfThenElse(use, hn::Min(hi_t, tfar), tfar);
+        parallel_outside = hn::Or(parallel_outside,
+                                  hn::AndNot(use, hn::Or(hn::Lt(a, zero), hn::Gt(a, max))));
+    };
+    slab(s0, d0);
+    slab(s1, d1);
+    slab(s2, d2);
+    const Mf miss = hn::Or(parallel_outside, hn::Or(hn::Gt(tnear, tfar), hn::Lt(tfar, zero)));
+    const Mf from_inside = hn::Lt(tnear, zero);
+    const Vf dk = hn::IfThenElse(from_inside, dk_far, dk_near);
+    tnear = hn::IfThenElse(from_inside, tfar, tnear);
+    // How much an error in `end` moves the intersection: t |d|∞ / |d across the face hit|, large
+    // when the ray grazes the face; `grazing` where it exceeds grazing_gain.
+    const Vf dmax = hn::Max(hn::Max(hn::Abs(d0), hn::Abs(d1)), hn::Abs(d2));
+    grazing = hn::Gt(hn::Mul(hn::Abs(tnear), dmax), hn::Mul(hn::Set(d, grazing_gain), hn::Abs(dk)));
+    const Mf found = hn::AndNot(miss, hn::IsFinite(tnear));
+    x = hn::MulAdd(d0, tnear, s0);
+    y = hn::MulAdd(d1, tnear, s1);
+    z = hn::MulAdd(d2, tnear, s2);
+    t = tnear;
+    return found;
+}
+
+}  // namespace
+
+std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float* out,
+                            std::size_t colours) {
+    const Df d;
+    const std::size_t n = hn::Lanes(d);
+    const Params p = LoadParams(d, clipper);
+    const Vf zero = hn::Zero(d);
+    const Vf low = hn::Mul(hn::Set(d, raytrace_epsilon_f), p.max);
+    const Vf high = hn::Sub(p.max, low);
+    const Vf lmargin = hn::Set(d, lightness_margin);
+    const Vf wild_t = hn::Set(d, wild_ray_t);
+    std::size_t i = 0;
+    for (; i + n <= colours; i += n) {
+        Vf r, g, b;
+        hn::LoadInterleaved3(d, in + 3 * i, r, g, b);
+        simd::FiniteOrDefault(d, r, g, b);
+        const Mf inside = InCube(r, g, b, zero, p.max);
+        if (hn::AllTrue(d, inside)) {
+            hn::StoreInterleaved3(r, g, b, d, out + 3 * i);
+            continue;
+        }
+        Vf L, A, B;
+        AccurateOklab(d, p.split, p.M, r, g, b, L, A, B);
+        const Mf huge = hn::Or(hn::Or(hn::Gt(hn::Abs(r), hn::Set(d, split_limit)),
+                                      hn::Gt(hn::Abs(g), hn::Set(d, split_limit))),
+                               hn::Gt(hn::Abs(b), hn::Set(d, split_limit)));
+        const Mf white = hn::Ge(L, p.white_l);
+        const Mf black = hn::AndNot(white, hn::Le(L, zero));
+        const Vf c0 = Chroma(A, B);
+        // cos h and sin h of the origin's hue (a hueless lane is flagged below).
+        const Vf inv_c0 = hn::Div(hn::Set(d, 1.0f), hn::Max(c0, hn::Set(d, hueless_chroma)));
+        const Vf ua = hn::Mul(A, inv_c0), ub = hn::Mul(B, inv_c0);
+        const Vf L3 = hn::Mul(hn::Mul(L, L), L);
+        Vf a0 = hn::Mul(L3, p.k0), a1 = hn::Mul(L3, p.k1), a2 = hn::Mul(L3, p.k2);
+        Vf c_r = r, c_g = g, c_b = b;
+        Vf last_r = r, last_g = g, last_b = b;
+        Mf active = hn::Not(hn::Or(inside, hn::Or(white, black)));
+        Mf wild = hn::Lt(zero, zero), grazing = wild;
+        for (int it = 0; it < 4; ++it) {
+            if (it > 0) {
+                // Back onto the chroma line: the origin's L and h, the current chroma.
+                Vf l2, a2k, b2k;
+                simd::ToOklab(d, p.M, c_r, c_g, c_b, l2, a2k, b2k);
+                const Vf c = Chroma(a2k, b2k);
+                simd::FromOklab(p.M, L, hn::Mul(c, ua), hn::Mul(c, ub), c_r, c_g, c_b);
+            }
+            Vf x, y, z, t;
+            Mf grazes;
+            const Mf found = CastRay(d, a0, a1, a2, c_r, c_g, c_b, zero, p.max, x, y, z, t, grazes);
+            if (it > 0) {
+                const Mf hit = hn::And(active, found);
+                wild = hn::Or(wild, hn::And(hit, hn::Gt(t, wild_t)));
+                grazing = hn::Or(grazing, hn::And(hit, grazes));
+            }
+            const Mf lost = hn::AndNot(found, active);
+            c_r = hn::IfThenElse(lost, last_r, c_r);
+            c_g = hn::IfThenElse(lost, last_g, c_g);
+            c_b = hn::IfThenElse(lost, last_b, c_b);
+            active = hn::And(active, found);
+            if (it > 0) {
+                const Mf below = hn::And(
+                    hn::And(hn::And(hn::Lt(low, c_r), hn::Lt(c_r, high)),
+                            hn::And(hn::Lt(low, c_g), hn::Lt(c_g, high))),
+                    hn::And(hn::Lt(low, c_b), hn::Lt(c_b, high)));
+                const Mf move = hn::And(active, below);
+                a0 = hn::IfThenElse(move, c_r, a0);
+                a1 = hn::IfThenElse(move, c_g, a1);
+                a2 = hn::IfThenElse(move, c_b, a2);
+            }
+            c_r = hn::IfThenElse(active, x, c_r);
+            c_g = hn::IfThenElse(active, y, c_g);
+            c_b = hn::IfThenElse(active, z, c_b);
+            last_r = c_r;
+            last_g = c_g;
+            last_b = c_b;
+            if (hn::AllFalse(d, active)) break;
+        }
+        Vf rr = Clamp(c_r, zero, p.max), gg = Clamp(c_g, zero, p.max), bb = Clamp(c_b, zero, p.max);
+        rr = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, rr));
+        gg = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, gg));
+        bb = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, bb));
+        rr = hn::IfThenElse(inside, r, rr);
+        gg = hn::IfThenElse(inside, g, gg);
+        bb = hn::IfThenElse(inside, b, bb);
+        hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
+        const Mf near_l = hn::Or(hn::Lt(hn::Abs(hn::Sub(L, p.white_l)), lmargin),
+                                 hn::Lt(hn::Abs(L), lmargin));
+        const Mf flagged = hn::AndNot(
+            inside, hn::Or(hn::Or(hn::Or(near_l, huge), hn::Or(wild, grazing)),
+                           hn::AndNot(hn::Or(white, black), hn::Lt(c0, hn::Set(d, hueless_chroma)))));
+        RedoInDouble(d, flagged, clipper, in, out, i);
+    }
+    return i;
+}
+
+std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, float* out,
+                                std::size_t colours) {
+    const Df d;
+    const std::size_t n = hn::Lanes(d);
+    const Params p = LoadParams(d, clipper);
+    const Vf zero = hn::Zero(d);
+    const Vf half = hn::Set(d, 0.5f);
+    const Vf jnd = hn::Set(d, css_jnd_f), eps = hn::Set(d, css_epsilon_f);
+    const Vf lmargin = hn::Set(d, lightness_margin);
+    const Vf cmargin = hn::Mul(hn::Set(d, channel_margin), p.max);
+    const Vf emargin = hn::Set(d, delta_margin);
+    const Vf imargin = hn::Set(d, interval_margin * css_epsilon_f);
+    // ΔEOK between the Oklab of clamp(candidate) and the current colour (L, ca, cb).
+    const auto delta = [&](Vf cr, Vf cg, Vf cb, Vf L, Vf ca, Vf cbk) {
+        Vf l2, a2, b2;
+        simd::ToOklab(d, p.M, cr, cg, cb, l2, a2, b2);
+        const Vf dl = hn::Sub(l2, L), da = hn::Sub(a2, ca), db = hn::Sub(b2, cbk);
+        return hn::Sqrt(hn::MulAdd(dl, dl, hn::MulAdd(da, da, hn::Mul(db, db))));
+    };
+    std::size_t i = 0;
+    for (; i + n <= colours; i += n) {
+        Vf r, g, b;
+        hn::LoadInterleaved3(d, in + 3 * i, r, g, b);
+        simd::FiniteOrDefault(d, r, g, b);
+        const Mf inside = InCube(r, g, b, zero, p.max);
+        if (hn::AllTrue(d, inside)) {
+            hn::StoreInterleaved3(r, g, b, d, out + 3 * i);
+            continue;
+        }
+        Vf L, A, B;
+        AccurateOklab(d, p.split, p.M, r, g, b, L, A, B);
+        const Mf huge = hn::Or(hn::Or(hn::Gt(hn::Abs(r), hn::Set(d, split_limit)),
+                                      hn::Gt(hn::Abs(g), hn::Set(d, split_limit))),
+                               hn::Gt(hn::Abs(b), hn::Set(d, split_limit)));
+        const Mf white = hn::Ge(L, p.white_l);
+        const Mf black = hn::AndNot(white, hn::Le(L, zero));
+        const Vf c0 = Chroma(A, B);
+        const Vf inv_c0 = hn::Div(hn::Set(d, 1.0f), hn::Max(c0, hn::Set(d, hueless_chroma)));
+        const Vf ua = hn::Mul(A, inv_c0), ub = hn::Mul(B, inv_c0);
+        Mf flagged = hn::Or(hn::Or(hn::Lt(hn::Abs(hn::Sub(L, p.white_l)), lmargin),
+                                   hn::Lt(hn::Abs(L), lmargin)), huge);
+        flagged = hn::Or(flagged, hn::AndNot(hn::Or(white, black),
+                                             hn::Lt(c0, hn::Set(d, hueless_chroma))));
+        // clipped = clip(current) at the origin's chroma; E < JND returns it.
+        Vf cr, cg, cb;
+        Vf ca = hn::Mul(c0, ua), cbk = hn::Mul(c0, ub);
+        simd::FromOklab(p.M, L, ca, cbk, cr, cg, cb);
+        Vf k_r = Clamp(cr, zero, p.max), k_g = Clamp(cg, zero, p.max), k_b = Clamp(cb, zero, p.max);
+        Vf e = delta(k_r, k_g, k_b, L, ca, cbk);
+        Mf running = hn::Not(hn::Or(inside, hn::Or(white, black)));
+        flagged = hn::Or(flagged, hn::And(running, hn::Lt(hn::Abs(hn::Sub(e, jnd)), emargin)));
+        running = hn::AndNot(hn::Lt(e, jnd), running);
+        Vf lo = zero, hi = c0;
+        Mf lo_in_gamut = hn::Not(hn::Lt(zero, zero));  // all true
+        for (;;) {
+            const Vf width = hn::Sub(hi, lo);
+            flagged = hn::Or(flagged, hn::And(running, hn::Lt(hn::Abs(hn::Sub(width, eps)), imargin)));
+            running = hn::And(running, hn::Gt(width, eps));
+            if (hn::AllFalse(d, running)) break;
+            const Vf chroma = hn::Mul(hn::Add(lo, hi), half);
+            ca = hn::Mul(chroma, ua);
+            cbk = hn::Mul(chroma, ub);
+            simd::FromOklab(p.M, L, ca, cbk, cr, cg, cb);
+            const Mf tested = hn::And(running, lo_in_gamut);
+            flagged = hn::Or(flagged, hn::And(tested, hn::Or(hn::Or(NearFace(cr, zero, p.max, cmargin),
+                                                                    NearFace(cg, zero, p.max, cmargin)),
+                                                             NearFace(cb, zero, p.max, cmargin))));
+            const Mf shortcut = hn::And(tested, InCube(cr, cg, cb, zero, p.max));
+            lo = hn::IfThenElse(shortcut, chroma, lo);
+            const Mf measured = hn::AndNot(shortcut, running);
+            if (hn::AllFalse(d, measured)) continue;
+            const Vf nr = Clamp(cr, zero, p.max), ng = Clamp(cg, zero, p.max), nb = Clamp(cb, zero, p.max);
+            k_r = hn::IfThenElse(measured, nr, k_r);
+            k_g = hn::IfThenElse(measured, ng, k_g);
+            k_b = hn::IfThenElse(measured, nb, k_b);
+            e = delta(nr, ng, nb, L, ca, cbk);
+            const Mf below = hn::And(measured, hn::Lt(e, jnd));
+            const Vf slack = hn::Sub(jnd, e);
+            flagged = hn::Or(flagged, hn::And(measured, hn::Lt(hn::Abs(hn::Sub(e, jnd)), emargin)));
+            flagged = hn::Or(flagged, hn::And(below, hn::Lt(hn::Abs(hn::Sub(slack, eps)), emargin)));
+            const Mf finished = hn::And(below, hn::Lt(slack, eps));
+            const Mf raise = hn::AndNot(finished, below);
+            lo_in_gamut = hn::AndNot(raise, lo_in_gamut);
+            lo = hn::IfThenElse(raise, chroma, lo);
+            hi = hn::IfThenElse(hn::AndNot(below, measured), chroma, hi);
+            running = hn::AndNot(finished, running);
+        }
+        Vf rr = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, k_r));
+        Vf gg = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, k_g));
+        Vf bb = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, k_b));
+        rr = hn::IfThenElse(inside, r, rr);
+        gg = hn::IfThenElse(inside, g, gg);
+        bb = hn::IfThenElse(inside, b, bb);
+        hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
+        RedoInDouble(d, hn::AndNot(inside, flagged), clipper, in, out, i);
+    }
+    return i;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace irid
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+
+namespace irid {
+
+HWY_EXPORT(ClipCssBinarySearch);
+HWY_EXPORT(ClipCssRayTrace);
+
+namespace detail {
+
+std::size_t clip_css_simd(const GamutClipper& clipper, const float* in, float* out,
+                          std::size_t colours) noexcept {
+    return HWY_DYNAMIC_DISPATCH(ClipCssBinarySearch)(clipper, in, out, colours);
+}
+
+std::size_t clip_css_raytrace_simd(const GamutClipper& clipper, const float* in, float* out,
+                                   std::size_t colours) noexcept {
+    return HWY_DYNAMIC_DISPATCH(ClipCssRayTrace)(clipper, in, out, colours);
+}
+
+}  // namespace detail
+}  // namespace irid
+
+#endif  // HWY_ONCE
