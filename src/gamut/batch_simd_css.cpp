@@ -9,9 +9,11 @@
 //   A lane whose origin has no hue to speak of (C0 < 1e-6) goes to the double path.
 // - The anchor OkLCh(L, 0, h) in linear RGB is L³ k with k = lms_to_rgb · (M2⁻¹ (1, 0, 0))³
 //   (the cube of a linear function of L), computed once per call in double.
-// - The origin's Oklab is computed from an LMS accurate to a few ulp of each component
-//   (compensated products and sums, AccurateLms): near an LMS component of 0 the cube root
-//   amplifies the plain float product's error without bound.
+// - Oklab ↔ linear RGB are computed to about an ulp of each result (ToOklabAccurate,
+//   FromOklabAccurate: compensated products and sums, the cube root and the cubes as float
+//   pairs): near an LMS component of 0 the cube root amplifies a plain float product's error
+//   without bound (a colour's Oklab L was off by 6e-5 relative), and the rays' grazing
+//   intersections amplify the restore steps' (up to 1e-6 max, grown to 2.8e-5).
 // - css-raytrace uses the 32-bit anchor bounds of the specification's footnote 1 (1e-6), where
 //   the double reference uses the 64-bit 1e-12, and the 64-bit parallel threshold 1e-12 of
 //   footnote 7 in float as well (see parallel_epsilon_f).
@@ -24,10 +26,12 @@
 // - css-raytrace flags lanes whose lightness is within rounding of white or black, whose origin
 //   has no hue, whose magnitude is beyond split_limit, and those whose rays make it sensitive to
 //   float rounding (wild_ray_t, grazing_gain).
-// - On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube) about 2 % of the
-//   lanes of either kernel are flagged (measured when the kernels were written).
+// - On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube, 2^20 colours) 0.3 %
+//   of the lanes of css-raytrace and 0.4 % of those of css are flagged, and the largest
+//   difference from the double reference was 2.6e-6 and 4.1e-7 (measured when the kernels were
+//   written).
 
-// No floating-point contraction: the compensated products of AccurateLms need every product
+// No floating-point contraction: the compensated products and sums need every product
 // and sum rounded on its own (g++ would otherwise fuse them on the FMA targets). The pragma
 // comes before every #include (as in batch_simd.cpp). Explicit MulAdd calls stay fused.
 #if defined(__GNUC__) && !defined(__clang__)
@@ -76,33 +80,46 @@ constexpr float split_limit = 1e30f;
 /// Below this Oklab chroma the origin's hue is not resolved in float: the double path.
 constexpr float hueless_chroma = 1e-6f;
 /// Float rounding margins for the branch tests (flagged lanes go to the double path): the
-/// lightness (float Oklab L is within a few 1e-7 of double's), a channel against the cube's faces
-/// (relative to max: the float Oklab → RGB round trip is within a few 1e-7 max), ΔEOK against
-/// its thresholds, and the search interval against epsilon (relative).
+/// lightness against white and black; a channel against the cube's faces, relative to max (the
+/// accurate transforms below give a channel to about an ulp, 1.2e-7 max near max); ΔEOK
+/// against its thresholds (Oklab components to about an ulp, 6e-8, so ΔEOK to about 1e-7: with
+/// a margin of 3e-8, 14 of 2^20 benchmark colours branched differently and ended up to 6e-4
+/// away; with 2e-7 none of them, 0.4 % of them flagged); and the search interval against
+/// epsilon (relative).
 constexpr float lightness_margin = 1e-5f;
-constexpr float channel_margin = 1e-6f;
-constexpr float delta_margin = 1e-6f;
+constexpr float channel_margin = 5e-7f;
+constexpr float delta_margin = 2e-7f;
 constexpr float interval_margin = 1e-4f;
 /// css-raytrace: a restore pass (i > 0) whose ray meets the face at t > 2 (it crossed the cube
 /// from an anchor within rounding of the surface) or whose intersection moves by more than
-/// grazing_gain times an error of its end (a ray grazing the face: the float restore's error of
-/// about 1e-6 max would grow past 1e-5 max over the passes, which do not converge for colours
-/// near the white's lightness) sends the lane to the double path.
+/// grazing_gain times an error of its end (a ray grazing the face: the restore's float error
+/// grows with each such pass, and the passes do not converge for colours near the white's
+/// lightness; with plain float transforms an error of 1e-6 grew to 2.8e-5) sends the lane to the
+/// double path.
 constexpr float wild_ray_t = 2.0f;
-constexpr float grazing_gain = 5.0f;
+constexpr float grazing_gain = 16.0f;
+/// css-raytrace: a lane whose anchor the float bounds (1e-6) keep where the double reference's
+/// (1e-12) would move it, while its brightest channel is below this × max, goes to the double
+/// path (such a colour's channels are within a few hundred times 1e-6 max of 0, where the two
+/// bounds make its passes differ by more than rounding).
+constexpr float dark_channel = 1e-3f;
 
-/// A row of rgb_to_lms as hi + lo in float (hi = float(m), lo = float(m − hi)), hi further split
-/// into hh + hl with 12-bit halves (Dekker 1971) for exact products.
-struct SplitMatrix {
-    Vf hh[9], hl[9], lo[9];
+/// A double 3×3 matrix (row-major) as float pairs, m = hi + lo to about 2^-48 |m|.
+struct PairMatrix {
+    Vf hi[9], lo[9];
 };
 
-/// Dekker's split of a float into a high part with 12 significant bits and the rest (exact:
-/// a = hi + lo), for |a| below 1e30 (4097 a must not overflow).
-HWY_INLINE void Split(Df d, Vf a, Vf& hi, Vf& lo) {
-    const Vf t = hn::Mul(hn::Set(d, 4097.0f), a);
-    hi = hn::Sub(t, hn::Sub(t, a));
-    lo = hn::Sub(a, hi);
+HWY_INLINE PairMatrix LoadPairMatrix(Df d, const Mat3& m) {
+    PairMatrix p;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            const auto hi = static_cast<float>(m[i][j]);
+            const auto lo = static_cast<float>(m[i][j] - static_cast<double>(hi));
+            p.hi[3 * i + j] = hn::Set(d, hi);
+            p.lo[3 * i + j] = hn::Set(d, lo);
+        }
+    }
+    return p;
 }
 
 /// Knuth's TwoSum: s + err = a + b exactly.
@@ -113,58 +130,108 @@ HWY_INLINE Vf TwoSum(Vf a, Vf b, Vf& err) {
     return s;
 }
 
-/// Oklab's LMS (before the cube root) of linear RGB, to within a few ulp of each component
-/// itself: compensated products and sums of the double matrix split into floats. The plain float
-/// product loses up to 1e-7 of the terms' size, which a cube root amplifies without bound near
-/// an LMS component of 0 (a colour far outside the cube on one side: its Oklab L was off by
-/// 4e-5 relative, its mapped colour by 2e-5).
-HWY_INLINE void AccurateLms(Df d, const SplitMatrix& M, Vf r, Vf g, Vf b, Vf& l, Vf& m, Vf& s) {
-    const Vf c[3] = {r, g, b};
-    Vf ch[3], cl[3];
-    for (int j = 0; j < 3; ++j) Split(d, c[j], ch[j], cl[j]);
-    Vf out[3];
-    for (int i = 0; i < 3; ++i) {
-        Vf p[3], e[3];
-        Vf small = hn::Zero(d);
-        for (int j = 0; j < 3; ++j) {
-            const int k = 3 * i + j;
-            const Vf hi = hn::Add(M.hh[k], M.hl[k]);
-            p[j] = hn::Mul(hi, c[j]);
-            // Dekker's TwoProduct: e = hi c − p exactly.
-            e[j] = hn::Add(hn::Add(hn::Add(hn::Sub(hn::Mul(M.hh[k], ch[j]), p[j]),
-                                           hn::Mul(M.hh[k], cl[j])),
-                                   hn::Mul(M.hl[k], ch[j])),
-                           hn::Mul(M.hl[k], cl[j]));
-            small = hn::Add(small, hn::Add(e[j], hn::Mul(M.lo[k], c[j])));
-        }
-        Vf r1, r2;
-        const Vf s1 = TwoSum(p[0], p[1], r1);
-        const Vf s2 = TwoSum(s1, p[2], r2);
-        out[i] = hn::Add(s2, hn::Add(hn::Add(r1, r2), small));
-    }
-    l = out[0];
-    m = out[1];
-    s = out[2];
+/// p + e = a b exactly (barring overflow and underflow): the fused a b − p on the x86 targets
+/// with FMA (AVX2, AVX-512), Dekker's split product (1971) on the others, which needs
+/// |a|, |b| below about 1e34 (4097 x must not overflow).
+HWY_INLINE Vf TwoProd(Df d, Vf a, Vf b, Vf& e) {
+    const Vf p = hn::Mul(a, b);
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2
+    (void)d;
+    e = hn::MulSub(a, b, p);
+#else
+    const Vf split = hn::Set(d, 4097.0f);
+    const Vf ta = hn::Mul(split, a), tb = hn::Mul(split, b);
+    const Vf ah = hn::Sub(ta, hn::Sub(ta, a)), bh = hn::Sub(tb, hn::Sub(tb, b));
+    const Vf al = hn::Sub(a, ah), bl = hn::Sub(b, bh);
+    e = hn::Add(hn::Add(hn::Add(hn::Sub(hn::Mul(ah, bh), p), hn::Mul(ah, bl)), hn::Mul(al, bh)),
+                hn::Mul(al, bl));
+#endif
+    return p;
 }
 
-/// The origin's Oklab from AccurateLms.
-HWY_INLINE void AccurateOklab(Df d, const SplitMatrix& S, const simd::OklabMatrices& M, Vf r, Vf g,
-                              Vf b, Vf& L, Vf& A, Vf& B) {
-    Vf l, m, s;
-    AccurateLms(d, S, r, g, b, l, m, s);
-    simd::Mul3(M.m2, simd::Cbrt(d, l), simd::Cbrt(d, m), simd::Cbrt(d, s), L, A, B);
+/// Row i of M times (x + xe) (x, xe: a vector as float pairs), as a pair s + se: compensated
+/// products and sums, so that the result is within about an ulp of itself however much its
+/// terms cancel (a plain float dot product loses up to 1e-7 of the terms' size).
+HWY_INLINE Vf Dot3(Df d, const PairMatrix& M, int i, const Vf (&x)[3], const Vf (&xe)[3], Vf& se) {
+    Vf p[3];
+    Vf small = hn::Zero(d);
+    for (int j = 0; j < 3; ++j) {
+        const int k = 3 * i + j;
+        Vf e;
+        p[j] = TwoProd(d, M.hi[k], x[j], e);
+        small = hn::Add(small, hn::Add(e, hn::Add(hn::Mul(M.hi[k], xe[j]), hn::Mul(M.lo[k], x[j]))));
+    }
+    Vf r1, r2;
+    const Vf s1 = TwoSum(p[0], p[1], r1);
+    const Vf s2 = TwoSum(s1, p[2], r2);
+    const Vf tail = hn::Add(hn::Add(r1, r2), small);
+    const Vf s = hn::Add(s2, tail);
+    se = hn::Sub(tail, hn::Sub(s, s2));
+    return s;
+}
+
+/// The real cube root of x as a pair y + dy, to about 2^-40 relative: simd::Cbrt (2 ulp), then
+/// one Newton step on the exact residual x − y³ (dy = (x − y³)/(3y²); a 12-bit reciprocal is
+/// ample for a correction of a few ulp). 0 stays 0.
+HWY_INLINE Vf CbrtPair(Df d, Vf x, Vf& dy) {
+    const Vf y = simd::Cbrt(d, x);
+    Vf pe, ce;
+    const Vf p = TwoProd(d, y, y, pe);
+    const Vf c = TwoProd(d, p, y, ce);
+    const Vf residual = hn::Sub(hn::Sub(x, c), hn::MulAdd(pe, y, ce));
+    const Vf inv = hn::ApproximateReciprocal(hn::Mul(hn::Set(d, 3.0f), p));
+    dy = hn::IfThenZeroElse(hn::Eq(y, hn::Zero(d)), hn::Mul(residual, inv));
+    return y;
+}
+
+/// The transforms of the kernels, as float pairs (accurate versions of simd::ToOklab and
+/// simd::FromOklab): the float rounding of plain products, which a cube root near an LMS of 0
+/// and the rays' grazing intersections amplify, would otherwise move results by more than 1e-5.
+struct Transforms {
+    PairMatrix to_lms, from_lms, m2, m2_inverse;
+};
+
+/// Oklab of linear RGB, each component within about an ulp of itself.
+HWY_INLINE void ToOklabAccurate(Df d, const Transforms& T, Vf r, Vf g, Vf b, Vf& L, Vf& A, Vf& B) {
+    const Vf zero = hn::Zero(d);
+    const Vf c[3] = {r, g, b}, ce[3] = {zero, zero, zero};
+    Vf y[3], dy[3], unused;
+    for (int i = 0; i < 3; ++i) y[i] = CbrtPair(d, Dot3(d, T.to_lms, i, c, ce, unused), dy[i]);
+    L = Dot3(d, T.m2, 0, y, dy, unused);
+    A = Dot3(d, T.m2, 1, y, dy, unused);
+    B = Dot3(d, T.m2, 2, y, dy, unused);
+}
+
+/// Linear RGB of Oklab, each channel within about an ulp of itself (the cubes as pairs).
+HWY_INLINE void FromOklabAccurate(Df d, const Transforms& T, Vf L, Vf A, Vf B, Vf& r, Vf& g, Vf& b) {
+    const Vf zero = hn::Zero(d);
+    const Vf lab[3] = {L, A, B}, labe[3] = {zero, zero, zero};
+    Vf cube[3], cube_e[3];
+    for (int i = 0; i < 3; ++i) {
+        Vf se, pe, ce;
+        const Vf s = Dot3(d, T.m2_inverse, i, lab, labe, se);
+        const Vf p = TwoProd(d, s, s, pe);
+        pe = hn::MulAdd(hn::Add(s, s), se, pe);  // (s + se)² = p + pe to second order
+        cube[i] = TwoProd(d, p, s, ce);
+        cube_e[i] = hn::MulAdd(p, se, hn::MulAdd(pe, s, ce));
+    }
+    Vf unused;
+    r = Dot3(d, T.from_lms, 0, cube, cube_e, unused);
+    g = Dot3(d, T.from_lms, 1, cube, cube_e, unused);
+    b = Dot3(d, T.from_lms, 2, cube, cube_e, unused);
 }
 
 /// What both kernels read from the clipper, once per call.
 struct Params {
-    SplitMatrix split;
-    simd::OklabMatrices M;
+    Transforms T;
     Vf max, white_l;
     Vf k0, k1, k2;  // the anchor direction: OkLCh(L, 0, h) in linear RGB = L³ (k0, k1, k2)
 };
 
 HWY_INLINE Params LoadParams(Df d, const GamutClipper& clipper) {
-    Params p{{}, simd::LoadOklabMatrices(d, clipper), hn::Set(d, static_cast<float>(clipper.gamut().max())),
+    Params p{{LoadPairMatrix(d, clipper.rgb_to_lms()), LoadPairMatrix(d, clipper.lms_to_rgb()),
+              LoadPairMatrix(d, oklab_m2), LoadPairMatrix(d, oklab_m2_inverse)},
+             hn::Set(d, static_cast<float>(clipper.gamut().max())),
              hn::Set(d, static_cast<float>(clipper.white_oklab_lightness())), hn::Zero(d),
              hn::Zero(d), hn::Zero(d)};
     const Vec3 q = oklab_m2_inverse * Vec3{1.0, 0.0, 0.0};
@@ -172,22 +239,6 @@ HWY_INLINE Params LoadParams(Df d, const GamutClipper& clipper) {
     p.k0 = hn::Set(d, static_cast<float>(k[0]));
     p.k1 = hn::Set(d, static_cast<float>(k[1]));
     p.k2 = hn::Set(d, static_cast<float>(k[2]));
-    const Mat3& to_lms = clipper.rgb_to_lms();
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            const double m = to_lms[i][j];
-            const auto hi = static_cast<float>(m);
-            const auto lo = static_cast<float>(m - static_cast<double>(hi));
-            // Dekker's split of hi, in float arithmetic (12 + 12 bits of its significand).
-            const float t = 4097.0f * hi;
-            const float hh = t - (t - hi);
-            const float hl = hi - hh;
-            const auto k9 = static_cast<std::size_t>(3 * i + j);
-            p.split.hh[k9] = hn::Set(d, hh);
-            p.split.hl[k9] = hn::Set(d, hl);
-            p.split.lo[k9] = hn::Set(d, lo);
-        }
-    }
     return p;
 }
 
@@ -280,6 +331,10 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
     const Vf zero = hn::Zero(d);
     const Vf low = hn::Mul(hn::Set(d, raytrace_epsilon_f), p.max);
     const Vf high = hn::Sub(p.max, low);
+    const Vf tol = hn::Mul(hn::Set(d, static_cast<float>(oklab_rounding_tolerance)), p.max);
+    const Vf low_d = hn::Mul(hn::Set(d, 1e-12f), p.max);
+    const Vf high_d = hn::Sub(p.max, low_d);
+    const Vf dark = hn::Mul(hn::Set(d, dark_channel), p.max);
     const Vf lmargin = hn::Set(d, lightness_margin);
     const Vf wild_t = hn::Set(d, wild_ray_t);
     std::size_t i = 0;
@@ -293,7 +348,7 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
             continue;
         }
         Vf L, A, B;
-        AccurateOklab(d, p.split, p.M, r, g, b, L, A, B);
+        ToOklabAccurate(d, p.T, r, g, b, L, A, B);
         const Mf huge = hn::Or(hn::Or(hn::Gt(hn::Abs(r), hn::Set(d, split_limit)),
                                       hn::Gt(hn::Abs(g), hn::Set(d, split_limit))),
                                hn::Gt(hn::Abs(b), hn::Set(d, split_limit)));
@@ -307,15 +362,17 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         Vf a0 = hn::Mul(L3, p.k0), a1 = hn::Mul(L3, p.k1), a2 = hn::Mul(L3, p.k2);
         Vf c_r = r, c_g = g, c_b = b;
         Vf last_r = r, last_g = g, last_b = b;
-        Mf active = hn::Not(hn::Or(inside, hn::Or(white, black)));
-        Mf wild = hn::Lt(zero, zero), grazing = wild;
+        // Within rounding of the cube (oklab_rounding_tolerance, as css_raytrace.cpp): clamped.
+        const Mf near_cube = InCube(r, g, b, hn::Neg(tol), hn::Add(p.max, tol));
+        Mf active = hn::Not(hn::Or(hn::Or(inside, near_cube), hn::Or(white, black)));
+        Mf wild = hn::Lt(zero, zero), grazing = wild, dark_path = wild;
         for (int it = 0; it < 4; ++it) {
             if (it > 0) {
                 // Back onto the chroma line: the origin's L and h, the current chroma.
                 Vf l2, a2k, b2k;
-                simd::ToOklab(d, p.M, c_r, c_g, c_b, l2, a2k, b2k);
+                ToOklabAccurate(d, p.T, c_r, c_g, c_b, l2, a2k, b2k);
                 const Vf c = Chroma(a2k, b2k);
-                simd::FromOklab(p.M, L, hn::Mul(c, ua), hn::Mul(c, ub), c_r, c_g, c_b);
+                FromOklabAccurate(d, p.T, L, hn::Mul(c, ua), hn::Mul(c, ub), c_r, c_g, c_b);
             }
             Vf x, y, z, t;
             Mf grazes;
@@ -336,6 +393,16 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
                             hn::And(hn::Lt(low, c_g), hn::Lt(c_g, high))),
                     hn::And(hn::Lt(low, c_b), hn::Lt(c_b, high)));
                 const Mf move = hn::And(active, below);
+                // The double reference's bounds (1e-12) would move the anchor where these do
+                // not: for a dark colour, whose channels are themselves near 1e-6 max, that
+                // changes its path (for a lighter one only by rounding).
+                const Mf below_double = hn::And(
+                    hn::And(hn::And(hn::Lt(low_d, c_r), hn::Lt(c_r, high_d)),
+                            hn::And(hn::Lt(low_d, c_g), hn::Lt(c_g, high_d))),
+                    hn::And(hn::Lt(low_d, c_b), hn::Lt(c_b, high_d)));
+                const Vf brightest = hn::Max(hn::Max(c_r, c_g), c_b);
+                dark_path = hn::Or(dark_path, hn::And(hn::AndNot(below, hn::And(active, below_double)),
+                                                      hn::Lt(brightest, dark)));
                 a0 = hn::IfThenElse(move, c_r, a0);
                 a1 = hn::IfThenElse(move, c_g, a1);
                 a2 = hn::IfThenElse(move, c_b, a2);
@@ -359,7 +426,7 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         const Mf near_l = hn::Or(hn::Lt(hn::Abs(hn::Sub(L, p.white_l)), lmargin),
                                  hn::Lt(hn::Abs(L), lmargin));
         const Mf flagged = hn::AndNot(
-            inside, hn::Or(hn::Or(hn::Or(near_l, huge), hn::Or(wild, grazing)),
+            inside, hn::Or(hn::Or(hn::Or(near_l, huge), hn::Or(hn::Or(wild, grazing), dark_path)),
                            hn::AndNot(hn::Or(white, black), hn::Lt(c0, hn::Set(d, hueless_chroma)))));
         RedoInDouble(d, flagged, clipper, in, out, i);
     }
@@ -381,7 +448,7 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
     // ΔEOK between the Oklab of clamp(candidate) and the current colour (L, ca, cb).
     const auto delta = [&](Vf cr, Vf cg, Vf cb, Vf L, Vf ca, Vf cbk) {
         Vf l2, a2, b2;
-        simd::ToOklab(d, p.M, cr, cg, cb, l2, a2, b2);
+        ToOklabAccurate(d, p.T, cr, cg, cb, l2, a2, b2);
         const Vf dl = hn::Sub(l2, L), da = hn::Sub(a2, ca), db = hn::Sub(b2, cbk);
         return hn::Sqrt(hn::MulAdd(dl, dl, hn::MulAdd(da, da, hn::Mul(db, db))));
     };
@@ -396,7 +463,7 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
             continue;
         }
         Vf L, A, B;
-        AccurateOklab(d, p.split, p.M, r, g, b, L, A, B);
+        ToOklabAccurate(d, p.T, r, g, b, L, A, B);
         const Mf huge = hn::Or(hn::Or(hn::Gt(hn::Abs(r), hn::Set(d, split_limit)),
                                       hn::Gt(hn::Abs(g), hn::Set(d, split_limit))),
                                hn::Gt(hn::Abs(b), hn::Set(d, split_limit)));
@@ -412,7 +479,7 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
         // clipped = clip(current) at the origin's chroma; E < JND returns it.
         Vf cr, cg, cb;
         Vf ca = hn::Mul(c0, ua), cbk = hn::Mul(c0, ub);
-        simd::FromOklab(p.M, L, ca, cbk, cr, cg, cb);
+        FromOklabAccurate(d, p.T, L, ca, cbk, cr, cg, cb);
         Vf k_r = Clamp(cr, zero, p.max), k_g = Clamp(cg, zero, p.max), k_b = Clamp(cb, zero, p.max);
         Vf e = delta(k_r, k_g, k_b, L, ca, cbk);
         Mf running = hn::Not(hn::Or(inside, hn::Or(white, black)));
@@ -428,7 +495,7 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
             const Vf chroma = hn::Mul(hn::Add(lo, hi), half);
             ca = hn::Mul(chroma, ua);
             cbk = hn::Mul(chroma, ub);
-            simd::FromOklab(p.M, L, ca, cbk, cr, cg, cb);
+            FromOklabAccurate(d, p.T, L, ca, cbk, cr, cg, cb);
             const Mf tested = hn::And(running, lo_in_gamut);
             flagged = hn::Or(flagged, hn::And(tested, hn::Or(hn::Or(NearFace(cr, zero, p.max, cmargin),
                                                                     NearFace(cg, zero, p.max, cmargin)),

@@ -18,6 +18,12 @@
 //   (1 − 1e-12) max (footnote 1: "small relative to the unit type").
 // - "between low and high" is strict (low < x < high), as colorjs.io's toGamutRayTrace
 //   (src/toGamut.js) reads it.
+// - "in gamut" (which CSS Color 4 leaves to the implementation) is this library's rule of
+//   clip.h: a colour within oklab_rounding_tolerance × max of the cube is on it to within
+//   rounding and comes back clamped (moved by at most that much). Taken literally, the ray trace
+//   moves such a colour next to the white by up to 1.3e-3 (sRGB (0.99868, 1 + 2e-16, 1) →
+//   (1, 0.99964, 0.99893): the anchor and the colour lie within rounding of the top faces,
+//   where a ray's direction is rounding), which clip.h's contract for every method forbids.
 
 #include <irid/color/spaces.h>
 #include <irid/gamut/clip.h>
@@ -73,6 +79,11 @@ Rgb GamutClipper::css_raytrace(const Rgb& origin) const noexcept {
     const Oklch origin_lch = oklab_to_oklch(to_oklab(origin));
     if (origin_lch.L >= m_white_oklab_l) return {max, max, max};
     if (origin_lch.L <= 0.0) return {0.0, 0.0, 0.0};
+    const double tol = oklab_rounding_tolerance * max;
+    if (origin.r >= -tol && origin.g >= -tol && origin.b >= -tol && origin.r <= max + tol &&
+        origin.g <= max + tol && origin.b <= max + tol) {
+        return clamp(origin);
+    }
     const double l_origin = origin_lch.L;
     const double h_origin = origin_lch.h;
     const auto to_array = [](const Rgb& c) { return std::array<double, 3>{c.r, c.g, c.b}; };
