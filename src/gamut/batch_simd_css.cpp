@@ -23,9 +23,11 @@
 //   against epsilon): a lane where any such comparison was within float rounding of its
 //   threshold could branch differently from the double reference and end far from it, so it is
 //   recomputed with GamutClipper::clip in double ("flagged").
-// - css-raytrace flags lanes whose lightness is within rounding of white or black, whose origin
-//   has no hue, whose magnitude is beyond split_limit, and those whose rays make it sensitive to
-//   float rounding (wild_ray_t, grazing_gain).
+// - css-raytrace clamps a colour within oklab_rounding_tolerance × max of the cube, as its
+//   reference does, and flags lanes whose lightness is within rounding of white or black, whose
+//   origin has no hue, whose magnitude is beyond split_limit, whose rays make them sensitive to
+//   float rounding (wild_ray_t, grazing_gain), and dark ones whose anchor the two bounds treat
+//   differently (dark_channel).
 // - On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube, 2^20 colours) 0.3 %
 //   of the lanes of css-raytrace and 0.4 % of those of css are flagged, and the largest
 //   difference from the double reference was 2.6e-6 and 4.1e-7 (measured when the kernels were
@@ -66,7 +68,7 @@ using simd::Vf;
 /// CSS Color 4 §13.2.2: the JND and the search's resolution (as clip.cpp).
 constexpr float css_jnd_f = 0.02f;
 constexpr float css_epsilon_f = 0.0001f;
-/// CSS Color 4 Ray Trace, footnotes 1 and 7: the 32-bit thresholds.
+/// CSS Color 4 Ray Trace, footnote 1: the 32-bit anchor bound (low = 1e-6 max, high = max − low).
 constexpr float raytrace_epsilon_f = 1e-6f;
 /// CSS Color 4 Ray Trace, "cast a ray": a direction component at or below this is parallel to
 /// its slab. The 64-bit 1e-12 of the specification, also in float (the contract gives
@@ -202,6 +204,30 @@ HWY_INLINE void ToOklabAccurate(Df d, const Transforms& T, Vf r, Vf g, Vf b, Vf&
     B = Dot3(d, T.m2, 2, y, dy, unused);
 }
 
+/// The Oklab chroma sqrt(a² + b²) of linear RGB, as ToOklabAccurate's a and b (L unused). For
+/// a colour in the cube (non-negative channels) of a gamut whose rgb_to_lms has no negative
+/// entry (`positive_lms`), the LMS sum has no cancellation and the plain float product is
+/// within a few ulp of each component already.
+HWY_INLINE Vf ChromaAccurate(Df d, const Transforms& T, bool positive_lms, Vf r, Vf g, Vf b) {
+    const Vf zero = hn::Zero(d);
+    const Vf c[3] = {r, g, b}, ce[3] = {zero, zero, zero};
+    Vf y[3], dy[3], unused;
+    if (positive_lms) {
+        Vf lms[3];
+        for (int i = 0; i < 3; ++i) {
+            const int k = 3 * i;
+            lms[i] = hn::MulAdd(T.to_lms.hi[k + 2], b,
+                                hn::MulAdd(T.to_lms.hi[k + 1], g, hn::Mul(T.to_lms.hi[k], r)));
+        }
+        for (int i = 0; i < 3; ++i) y[i] = CbrtPair(d, lms[i], dy[i]);
+    } else {
+        for (int i = 0; i < 3; ++i) y[i] = CbrtPair(d, Dot3(d, T.to_lms, i, c, ce, unused), dy[i]);
+    }
+    const Vf A = Dot3(d, T.m2, 1, y, dy, unused);
+    const Vf B = Dot3(d, T.m2, 2, y, dy, unused);
+    return hn::Sqrt(hn::MulAdd(A, A, hn::Mul(B, B)));
+}
+
 /// Linear RGB of Oklab, each channel within about an ulp of itself (the cubes as pairs).
 HWY_INLINE void FromOklabAccurate(Df d, const Transforms& T, Vf L, Vf A, Vf B, Vf& r, Vf& g, Vf& b) {
     const Vf zero = hn::Zero(d);
@@ -226,6 +252,7 @@ struct Params {
     Transforms T;
     Vf max, white_l;
     Vf k0, k1, k2;  // the anchor direction: OkLCh(L, 0, h) in linear RGB = L³ (k0, k1, k2)
+    bool positive_lms;  // no entry of rgb_to_lms is negative
 };
 
 HWY_INLINE Params LoadParams(Df d, const GamutClipper& clipper) {
@@ -233,7 +260,10 @@ HWY_INLINE Params LoadParams(Df d, const GamutClipper& clipper) {
               LoadPairMatrix(d, oklab_m2), LoadPairMatrix(d, oklab_m2_inverse)},
              hn::Set(d, static_cast<float>(clipper.gamut().max())),
              hn::Set(d, static_cast<float>(clipper.white_oklab_lightness())), hn::Zero(d),
-             hn::Zero(d), hn::Zero(d)};
+             hn::Zero(d), hn::Zero(d), true};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) p.positive_lms = p.positive_lms && clipper.rgb_to_lms()[i][j] >= 0.0;
+    }
     const Vec3 q = oklab_m2_inverse * Vec3{1.0, 0.0, 0.0};
     const Vec3 k = clipper.lms_to_rgb() * Vec3{q[0] * q[0] * q[0], q[1] * q[1] * q[1], q[2] * q[2] * q[2]};
     p.k0 = hn::Set(d, static_cast<float>(k[0]));
@@ -369,9 +399,7 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         for (int it = 0; it < 4; ++it) {
             if (it > 0) {
                 // Back onto the chroma line: the origin's L and h, the current chroma.
-                Vf l2, a2k, b2k;
-                ToOklabAccurate(d, p.T, c_r, c_g, c_b, l2, a2k, b2k);
-                const Vf c = Chroma(a2k, b2k);
+                const Vf c = ChromaAccurate(d, p.T, p.positive_lms, c_r, c_g, c_b);
                 FromOklabAccurate(d, p.T, L, hn::Mul(c, ua), hn::Mul(c, ub), c_r, c_g, c_b);
             }
             Vf x, y, z, t;
