@@ -181,6 +181,28 @@ TEST(CssRaytrace, KeepsLightnessAndHueAsTheSpecificationIntends) {
     }
 }
 
+TEST(CssRaytrace, AColourWithinRoundingOfTheCubeIsClamped) {
+    // clip.h's rule (css_raytrace.cpp): within oklab_rounding_tolerance × max of the cube, the
+    // colour is on it to within rounding and is only clamped (after the lightness rule).
+    int checked = 0;
+    for (const Gamut& gamut : test_gamuts()) {
+        const GamutClipper clipper(ClipMethod::css_raytrace, gamut);
+        const double max = gamut.max();
+        const double off = 0.5 * oklab_rounding_tolerance * max;
+        for (const Rgb& c : {Rgb{max + off, 0.5 * max, 0.25 * max}, Rgb{0.3 * max, -off, 0.9 * max},
+                             Rgb{max + off, max, max - 1e-3 * max}}) {
+            const double L = clipper.to_oklab(c).L;
+            if (!(L > 0.0 && L < clipper.white_oklab_lightness())) continue;  // white, black first
+            const Rgb got = clipper.clip(c);
+            EXPECT_EQ(got.r, std::clamp(c.r, 0.0, max)) << gamut.space().name();
+            EXPECT_EQ(got.g, std::clamp(c.g, 0.0, max)) << gamut.space().name();
+            EXPECT_EQ(got.b, std::clamp(c.b, 0.0, max)) << gamut.space().name();
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 20);
+}
+
 // --- the float kernels -------------------------------------------------------------------------
 
 /// ≥ 100 000 colours: out of gamut (uniform in [-0.5, 1.5]^3 × max), in gamut, negative, huge,
@@ -216,8 +238,9 @@ std::vector<float> kernel_inputs(double max) {
 }
 
 void expect_kernel_matches_double(ClipMethod method) {
-    for (const Gamut& gamut :
-         {Gamut(srgb()), Gamut(display_p3()), Gamut(rec2020()), Gamut(srgb(), 4.0)}) {
+    // ACES2065-1 too: its rgb_to_lms has negative entries (the kernels' other LMS path).
+    for (const Gamut& gamut : {Gamut(srgb()), Gamut(display_p3()), Gamut(rec2020()),
+                               Gamut(srgb(), 4.0), Gamut(aces2065_1())}) {
         const GamutClipper clipper(method, gamut);
         const std::vector<float> in = kernel_inputs(gamut.max());
         ASSERT_GE(in.size() / 3, 100000u);
@@ -229,7 +252,13 @@ void expect_kernel_matches_double(ClipMethod method) {
         double worst = 0.0;
         std::size_t worst_at = 0;
         for (std::size_t i = 0; i < in.size(); i += 3) {
-            const Rgb ref = clipper.clip({in[i], in[i + 1], in[i + 2]});
+            const Rgb c{in[i], in[i + 1], in[i + 2]};
+            if (gamut.contains(c)) {  // in-gamut colours come back bit for bit
+                EXPECT_EQ(simd[i], in[i]);
+                EXPECT_EQ(simd[i + 1], in[i + 1]);
+                EXPECT_EQ(simd[i + 2], in[i + 2]);
+            }
+            const Rgb ref = clipper.clip(c);
             const double r[3] = {ref.r, ref.g, ref.b};
             for (std::size_t k = 0; k < 3; ++k) {
                 ASSERT_TRUE(std::isfinite(simd[i + k]));
