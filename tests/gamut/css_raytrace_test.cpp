@@ -277,6 +277,32 @@ TEST(CssKernels, RayTraceFloatKernelMatchesTheDoubleReference) {
     expect_kernel_matches_double(ClipMethod::css_raytrace);
 }
 
+TEST(CssKernels, RayTraceLaneThatFindsNoIntersectionKeepsItsLastOneAmongOthers) {
+    // Display P3, L just below the white's: the anchor lies outside the cube and the second
+    // ray misses it, so the spec keeps the first intersection (footnote 5) while the other
+    // lanes of the same vector go on with their passes.
+    const Gamut gamut(display_p3());
+    const GamutClipper clipper(ClipMethod::css_raytrace, gamut);
+    std::vector<float> in;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-0.5f, 1.5f);
+    for (int k = 0; k < 64; ++k) {
+        if (k % 16 == 5) {
+            in.insert(in.end(), {0.554959655f, 1.39077878f, -0.121176034f});
+        } else {
+            for (int c = 0; c < 3; ++c) in.push_back(u(rng));
+        }
+    }
+    std::vector<float> out(in.size());
+    clip_batch(clipper, in, out, {.threads = 1, .simd = true});
+    for (std::size_t i = 0; i < in.size(); i += 3) {
+        const Rgb ref = clipper.clip({in[i], in[i + 1], in[i + 2]});
+        EXPECT_NEAR(out[i], ref.r, 1e-5);
+        EXPECT_NEAR(out[i + 1], ref.g, 1e-5);
+        EXPECT_NEAR(out[i + 2], ref.b, 1e-5);
+    }
+}
+
 TEST(CssKernels, BinarySearchFloatKernelMatchesTheDoubleReference) {
     expect_kernel_matches_double(ClipMethod::css);
 }
