@@ -31,7 +31,10 @@
 // - On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube, 2^20 colours)
 //   0.47 % of the lanes of css-raytrace and 0.41 % of those of css are flagged, and the largest
 //   difference from the double reference was 2.5e-6 and 4.1e-7 (measured when the kernels were
-//   written; Display P3 and Rec.2020 alike, ACES2065-1 2.9 % for css-raytrace).
+//   written; Display P3 and Rec.2020 alike). On ACES2065-1 css-raytrace flags 2.9 %; css
+//   flags 0.4 % but 2 of 2^20 colours near its imaginary blue end up to 2.8e-5 away (the
+//   origin's chroma, one ulp off in float, moves the candidate by an ulp, which ΔEOK there
+//   amplifies 20-fold past the margin).
 
 // No floating-point contraction: the compensated products and sums need every product
 // and sum rounded on its own (g++ would otherwise fuse them on the FMA targets). The pragma
@@ -198,15 +201,22 @@ struct Transforms {
     PairMatrix to_lms, from_lms, m2, m2_inverse;
 };
 
-/// Oklab of linear RGB, each component within about an ulp of itself.
-HWY_INLINE void ToOklabAccurate(Df d, const Transforms& T, Vf r, Vf g, Vf b, Vf& L, Vf& A, Vf& B) {
-    const Vf zero = hn::Zero(d);
-    const Vf c[3] = {r, g, b}, ce[3] = {zero, zero, zero};
+/// Oklab of linear RGB given as float pairs (r + re, ...), each component within about an ulp
+/// of itself.
+HWY_INLINE void ToOklabPair(Df d, const Transforms& T, Vf r, Vf g, Vf b, Vf re, Vf ge, Vf be,
+                            Vf& L, Vf& A, Vf& B) {
+    const Vf c[3] = {r, g, b}, ce[3] = {re, ge, be};
     Vf y[3], dy[3], unused;
     for (int i = 0; i < 3; ++i) y[i] = CbrtPair(d, Dot3(d, T.to_lms, i, c, ce, unused), dy[i]);
     L = Dot3(d, T.m2, 0, y, dy, unused);
     A = Dot3(d, T.m2, 1, y, dy, unused);
     B = Dot3(d, T.m2, 2, y, dy, unused);
+}
+
+/// Oklab of linear RGB, each component within about an ulp of itself.
+HWY_INLINE void ToOklabAccurate(Df d, const Transforms& T, Vf r, Vf g, Vf b, Vf& L, Vf& A, Vf& B) {
+    const Vf zero = hn::Zero(d);
+    ToOklabPair(d, T, r, g, b, zero, zero, zero, L, A, B);
 }
 
 /// The Oklab chroma sqrt(a² + b²) of linear RGB, as ToOklabAccurate's a and b (L unused). For
@@ -233,8 +243,10 @@ HWY_INLINE Vf ChromaAccurate(Df d, const Transforms& T, bool positive_lms, Vf r,
     return hn::Sqrt(hn::MulAdd(A, A, hn::Mul(B, B)));
 }
 
-/// Linear RGB of Oklab, each channel within about an ulp of itself (the cubes as pairs).
-HWY_INLINE void FromOklabAccurate(Df d, const Transforms& T, Vf L, Vf A, Vf B, Vf& r, Vf& g, Vf& b) {
+/// Linear RGB of Oklab as float pairs r + re, ... (the cubes as pairs too), to about 2^-40 of
+/// each channel.
+HWY_INLINE void FromOklabPair(Df d, const Transforms& T, Vf L, Vf A, Vf B, Vf& r, Vf& g, Vf& b,
+                              Vf& re, Vf& ge, Vf& be) {
     const Vf zero = hn::Zero(d);
     const Vf lab[3] = {L, A, B}, labe[3] = {zero, zero, zero};
     Vf cube[3], cube_e[3];
@@ -246,10 +258,15 @@ HWY_INLINE void FromOklabAccurate(Df d, const Transforms& T, Vf L, Vf A, Vf B, V
         cube[i] = TwoProd(d, p, s, ce);
         cube_e[i] = hn::MulAdd(p, se, hn::MulAdd(pe, s, ce));
     }
-    Vf unused;
-    r = Dot3(d, T.from_lms, 0, cube, cube_e, unused);
-    g = Dot3(d, T.from_lms, 1, cube, cube_e, unused);
-    b = Dot3(d, T.from_lms, 2, cube, cube_e, unused);
+    r = Dot3(d, T.from_lms, 0, cube, cube_e, re);
+    g = Dot3(d, T.from_lms, 1, cube, cube_e, ge);
+    b = Dot3(d, T.from_lms, 2, cube, cube_e, be);
+}
+
+/// The same, each channel rounded to float.
+HWY_INLINE void FromOklabAccurate(Df d, const Transforms& T, Vf L, Vf A, Vf B, Vf& r, Vf& g, Vf& b) {
+    Vf re, ge, be;
+    FromOklabPair(d, T, L, A, B, r, g, b, re, ge, be);
 }
 
 /// What both kernels read from the clipper, once per call.
@@ -494,9 +511,15 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
     const Vf emargin = hn::Set(d, delta_margin);
     const Vf imargin = hn::Set(d, interval_margin * css_epsilon_f);
     // ΔEOK between the Oklab of clamp(candidate) and the current colour (L, ca, cb).
-    const auto delta = [&](Vf cr, Vf cg, Vf cb, Vf L, Vf ca, Vf cbk) {
+    // clip(candidate) as float pairs: a clamped channel is its bound exactly.
+    const auto clamp_pair = [&](Vf v, Vf ve, Vf& out_e) {
+        out_e = hn::IfThenZeroElse(hn::Or(hn::Lt(v, zero), hn::Gt(v, p.max)), ve);
+        return Clamp(v, zero, p.max);
+    };
+    // ΔEOK between the Oklab of clip(candidate) (pairs) and the current colour (L, ca, cbk).
+    const auto delta = [&](Vf cr, Vf cg, Vf cb, Vf cre, Vf cge, Vf cbe, Vf L, Vf ca, Vf cbk) {
         Vf l2, a2, b2;
-        ToOklabAccurate(d, p.T, cr, cg, cb, l2, a2, b2);
+        ToOklabPair(d, p.T, cr, cg, cb, cre, cge, cbe, l2, a2, b2);
         const Vf dl = hn::Sub(l2, L), da = hn::Sub(a2, ca), db = hn::Sub(b2, cbk);
         return hn::Sqrt(hn::MulAdd(dl, dl, hn::MulAdd(da, da, hn::Mul(db, db))));
     };
@@ -525,11 +548,12 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
         flagged = hn::Or(flagged, hn::AndNot(hn::Or(white, black),
                                              hn::Lt(c0, hn::Set(d, hueless_chroma))));
         // clipped = clip(current) at the origin's chroma; E < JND returns it.
-        Vf cr, cg, cb;
+        Vf cr, cg, cb, cre, cge, cbe;
         Vf ca = hn::Mul(c0, ua), cbk = hn::Mul(c0, ub);
-        FromOklabAccurate(d, p.T, L, ca, cbk, cr, cg, cb);
-        Vf k_r = Clamp(cr, zero, p.max), k_g = Clamp(cg, zero, p.max), k_b = Clamp(cb, zero, p.max);
-        Vf e = delta(k_r, k_g, k_b, L, ca, cbk);
+        FromOklabPair(d, p.T, L, ca, cbk, cr, cg, cb, cre, cge, cbe);
+        Vf kre, kge, kbe;
+        Vf k_r = clamp_pair(cr, cre, kre), k_g = clamp_pair(cg, cge, kge), k_b = clamp_pair(cb, cbe, kbe);
+        Vf e = delta(k_r, k_g, k_b, kre, kge, kbe, L, ca, cbk);
         Mf running = hn::Not(hn::Or(inside, hn::Or(white, black)));
         flagged = hn::Or(flagged, hn::And(running, hn::Lt(hn::Abs(hn::Sub(e, jnd)), emargin)));
         running = hn::AndNot(hn::Lt(e, jnd), running);
@@ -543,7 +567,7 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
             const Vf chroma = hn::Mul(hn::Add(lo, hi), half);
             ca = hn::Mul(chroma, ua);
             cbk = hn::Mul(chroma, ub);
-            FromOklabAccurate(d, p.T, L, ca, cbk, cr, cg, cb);
+            FromOklabPair(d, p.T, L, ca, cbk, cr, cg, cb, cre, cge, cbe);
             const Mf tested = hn::And(running, lo_in_gamut);
             flagged = hn::Or(flagged, hn::And(tested, hn::Or(hn::Or(NearFace(cr, zero, p.max, cmargin),
                                                                     NearFace(cg, zero, p.max, cmargin)),
@@ -552,11 +576,13 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
             lo = hn::IfThenElse(shortcut, chroma, lo);
             const Mf measured = hn::AndNot(shortcut, running);
             if (hn::AllFalse(d, measured)) continue;
-            const Vf nr = Clamp(cr, zero, p.max), ng = Clamp(cg, zero, p.max), nb = Clamp(cb, zero, p.max);
+            Vf nre, nge, nbe;
+            const Vf nr = clamp_pair(cr, cre, nre), ng = clamp_pair(cg, cge, nge),
+                     nb = clamp_pair(cb, cbe, nbe);
             k_r = hn::IfThenElse(measured, nr, k_r);
             k_g = hn::IfThenElse(measured, ng, k_g);
             k_b = hn::IfThenElse(measured, nb, k_b);
-            e = delta(nr, ng, nb, L, ca, cbk);
+            e = delta(nr, ng, nb, nre, nge, nbe, L, ca, cbk);
             const Mf below = hn::And(measured, hn::Lt(e, jnd));
             const Vf slack = hn::Sub(jnd, e);
             flagged = hn::Or(flagged, hn::And(measured, hn::Lt(hn::Abs(hn::Sub(e, jnd)), emargin)));
