@@ -119,6 +119,7 @@ struct PairMatrix {
     Vf hi[9], lo[9];
 };
 
+/// The pairs of a double matrix, broadcast.
 HWY_INLINE PairMatrix LoadPairMatrix(Df d, const Mat3& m) {
     PairMatrix p;
     for (int i = 0; i < 3; ++i) {
@@ -277,6 +278,8 @@ struct Params {
     bool positive_lms;  // no entry of rgb_to_lms is negative
 };
 
+/// Reads the clipper once per call: its transforms as pairs, the cube, the white's lightness,
+/// the anchor direction k and whether rgb_to_lms is non-negative.
 HWY_INLINE Params LoadParams(Df d, const GamutClipper& clipper) {
     Params p{{LoadPairMatrix(d, clipper.rgb_to_lms()), LoadPairMatrix(d, clipper.lms_to_rgb()),
               LoadPairMatrix(d, oklab_m2), LoadPairMatrix(d, oklab_m2_inverse)},
@@ -294,11 +297,11 @@ HWY_INLINE Params LoadParams(Df d, const GamutClipper& clipper) {
     return p;
 }
 
-/// Every channel in [0, max].
-HWY_INLINE Mf InCube(Vf r, Vf g, Vf b, Vf zero, Vf max) {
-    return hn::And(hn::And(hn::And(hn::Ge(r, zero), hn::Le(r, max)),
-                           hn::And(hn::Ge(g, zero), hn::Le(g, max))),
-                   hn::And(hn::Ge(b, zero), hn::Le(b, max)));
+/// Every channel in [lo, hi] (the cube, or the cube widened by a tolerance).
+HWY_INLINE Mf InCube(Vf r, Vf g, Vf b, Vf lo, Vf hi) {
+    return hn::And(hn::And(hn::And(hn::Ge(r, lo), hn::Le(r, hi)),
+                           hn::And(hn::Ge(g, lo), hn::Le(g, hi))),
+                   hn::And(hn::Ge(b, lo), hn::Le(b, hi)));
 }
 
 /// A channel within `margin` of 0 or of max.
@@ -306,6 +309,7 @@ HWY_INLINE Mf NearFace(Vf v, Vf zero, Vf max, Vf margin) {
     return hn::Or(hn::Lt(hn::Abs(hn::Sub(v, zero)), margin), hn::Lt(hn::Abs(hn::Sub(v, max)), margin));
 }
 
+/// std::clamp(v, 0, max) for non-NaN v.
 HWY_INLINE Vf Clamp(Vf v, Vf zero, Vf max) {
     return hn::Min(hn::Max(v, zero), max);
 }
@@ -332,7 +336,9 @@ HWY_INLINE void RedoInDouble(Df d, Mf flagged, const GamutClipper& clipper, cons
 }
 
 /// "Cast a ray" (CSS Color 4 Ray Trace) from start (s) to end (e) through the box [0, max]³,
-/// lane by lane: returns the lanes where an intersection was found and writes it to (x, y, z).
+/// lane by lane, as css_raytrace.cpp's cast_ray: returns the lanes where an intersection was
+/// found and writes it to (x, y, z), its parameter along the ray to t, and in `grazing` the
+/// lanes where it moves by more than grazing_gain times an error of `end`.
 HWY_INLINE Mf CastRay(Df d, Vf s0, Vf s1, Vf s2, Vf e0, Vf e1, Vf e2, Vf zero, Vf max, Vf& x,
                       Vf& y, Vf& z, Vf& t, Mf& grazing) {
     const Vf inf = hn::Set(d, std::numeric_limits<float>::infinity());
@@ -375,6 +381,9 @@ HWY_INLINE Mf CastRay(Df d, Vf s0, Vf s1, Vf s2, Vf e0, Vf e1, Vf e2, Vf zero, V
 
 }  // namespace
 
+/// css-raytrace on the largest multiple of the vector length of `colours` interleaved float RGB
+/// colours from `in` to `out` (may be equal); returns how many (kernels.h). Each lane follows
+/// GamutClipper::css_raytrace in float; flagged lanes are redone with GamutClipper::clip.
 std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float* out,
                             std::size_t colours) {
     const Df d;
@@ -498,6 +507,8 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
     return i;
 }
 
+/// css (the binary search) likewise: a lane-masked search until every lane has finished, each
+/// lane following GamutClipper::css in float; flagged lanes are redone with GamutClipper::clip.
 std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, float* out,
                                 std::size_t colours) {
     const Df d;
