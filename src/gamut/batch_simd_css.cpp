@@ -1,8 +1,646 @@
+// The float SIMD kernels of css (CSS Color 4 §13.2.2, binary search with local MINDE) and
+// css-raytrace (CSS Color 4 "Ray Trace" gamut mapping), Google Highway with dynamic dispatch.
+//
+// Both follow their double references (GamutClipper::css in clip.cpp, GamutClipper::css_raytrace
+// in css_raytrace.cpp) step by step in float, lane by lane, and are checked against them to
+// 1e-5 × max (tests/gamut/css_raytrace_test.cpp). What differs, and why:
+// - Hue: OkLCh(L, C, h) is formed as Oklab (L, C a0/C0, C b0/C0) with (a0, b0) and C0 the
+//   origin's Oklab a, b and chroma: cos h = a0/C0, sin h = b0/C0, the same point without trig.
+//   A lane whose origin has no hue to speak of (C0 < 1e-6) goes to the double path.
+// - The anchor OkLCh(L, 0, h) in linear RGB is L³ k with k = lms_to_rgb · (M2⁻¹ (1, 0, 0))³
+//   (the cube of a linear function of L), computed once per call in double.
+// - Oklab ↔ linear RGB are computed to about an ulp of each result (ToOklabAccurate,
+//   FromOklabAccurate: compensated products and sums, the cube root and the cubes as float
+//   pairs): near an LMS component of 0 the cube root amplifies a plain float product's error
+//   without bound (a colour's Oklab L was off by 6e-5 relative), and the rays' grazing
+//   intersections amplify the restore steps' (up to 1e-6 max, grown to 2.8e-5).
+// - css-raytrace uses the 32-bit anchor bounds of the specification's footnote 1 (1e-6), where
+//   the double reference uses the 64-bit 1e-12, and the 64-bit parallel threshold 1e-12 of
+//   footnote 7 in float as well (see parallel_epsilon_f).
+// - The binary search (css) runs a lane-masked loop until every lane has finished. Its branches
+//   compare float quantities against thresholds (in gamut or not, ΔEOK against the JND, the
+//   JND − ΔEOK against epsilon, the lightness against white and black, the search interval
+//   against epsilon): a lane where any such comparison was within float rounding of its
+//   threshold could branch differently from the double reference and end far from it, so it is
+//   recomputed with GamutClipper::clip in double ("flagged").
+// - css-raytrace clamps a colour within oklab_rounding_tolerance × max of the cube, as its
+//   reference does, and flags lanes whose lightness is within rounding of white or black, whose
+//   origin has no hue, whose magnitude is beyond split_limit, whose rays or restores make them
+//   sensitive to float rounding (wild_ray_t, grazing_gain, diverging_ratio), and dark ones whose
+//   anchor the two bounds treat differently (dark_channel).
+// - On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube, 2^20 colours)
+//   0.47 % of the lanes of css-raytrace and 0.41 % of those of css are flagged, and the largest
+//   difference from the double reference was 2.5e-6 and 4.1e-7 (measured when the kernels were
+//   written; Display P3 and Rec.2020 alike). On ACES2065-1 css-raytrace flags 2.9 %; css
+//   flags 0.4 % but 2 of 2^20 colours near its imaginary blue end up to 2.8e-5 away (the
+//   origin's chroma, one ulp off in float, moves the candidate by an ulp, which ΔEOK there
+//   amplifies 20-fold past the margin).
+
+// No floating-point contraction: the compensated products and sums need every product
+// and sum rounded on its own (g++ would otherwise fuse them on the FMA targets). The pragma
+// comes before every #include (as in batch_simd.cpp). Explicit MulAdd calls stay fused.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE __BASE_FILE__
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "simd_common-inl.h"
+
+#include <irid/color/spaces.h>
+#include <irid/gamut/clip.h>
+
 #include "kernels.h"
 
-namespace irid::detail {
+#include <cstddef>
+#include <limits>
 
-std::size_t clip_css_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept { return 0; }  // PROVISIONAL
-std::size_t clip_css_raytrace_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept { return 0; }  // PROVISIONAL
+HWY_BEFORE_NAMESPACE();
+namespace irid {
+namespace HWY_NAMESPACE {
+namespace {
 
-}  // namespace irid::detail
+namespace hn = hwy::HWY_NAMESPACE;
+using simd::Df;
+using simd::Mf;
+using simd::Vf;
+
+/// CSS Color 4 §13.2.2: the JND and the search's resolution (as clip.cpp).
+constexpr float css_jnd_f = 0.02f;
+constexpr float css_epsilon_f = 0.0001f;
+/// CSS Color 4 Ray Trace, footnote 1: the 32-bit anchor bound (low = 1e-6 max, high = max − low).
+constexpr float raytrace_epsilon_f = 1e-6f;
+/// CSS Color 4 Ray Trace, "cast a ray": a direction component at or below this is parallel to
+/// its slab. The 64-bit 1e-12 of the specification, also in float (the contract gives
+/// 1e-6 in float only for the anchor bounds): float holds 1e-12 with its full relative
+/// precision, and with footnote 7's 1e-6 the components of the ray between two nearly equal
+/// dark colours would be dropped where the double reference keeps them, ending elsewhere.
+constexpr float parallel_epsilon_f = 1e-12f;
+/// Beyond this magnitude a channel is not split for the compensated products (4097 x would
+/// overflow near float's maximum); such a lane goes to the double path.
+constexpr float split_limit = 1e30f;
+/// Below this Oklab chroma the origin's hue is not resolved in float: the double path.
+constexpr float hueless_chroma = 1e-6f;
+/// Float rounding margins for the branch tests (flagged lanes go to the double path): the
+/// lightness against white and black; a channel against the cube's faces, relative to max (the
+/// accurate transforms below give a channel to about an ulp, 1.2e-7 max near max); ΔEOK
+/// against its thresholds (Oklab components to about an ulp, 6e-8, so ΔEOK to about 1e-7: with
+/// a margin of 3e-8, 14 of 2^20 benchmark colours branched differently and ended up to 6e-4
+/// away; with 2e-7 none of them, 0.4 % of them flagged); and the search interval against
+/// epsilon (relative).
+constexpr float lightness_margin = 1e-5f;
+constexpr float channel_margin = 5e-7f;
+constexpr float delta_margin = 2e-7f;
+constexpr float interval_margin = 1e-4f;
+/// css-raytrace: a restore pass (i > 0) whose ray meets the face at t > 2 (it crossed the cube
+/// from an anchor within rounding of the surface) or whose intersection moves by more than
+/// grazing_gain times an error of its end (a ray grazing the face: the restore's float error
+/// grows with each such pass, and the passes do not converge for colours near the white's
+/// lightness; with plain float transforms an error of 1e-6 grew to 2.8e-5) sends the lane to the
+/// double path.
+constexpr float wild_ray_t = 2.0f;
+constexpr float grazing_gain = 16.0f;
+/// css-raytrace: a restore pass that moves the point more than diverging_ratio times as far as
+/// the one before (the passes diverge and amplify rounding: ACES2065-1's restores near its
+/// imaginary blue grew an error of 7e-7 to 2.3e-5 in one pass) sends the lane to the double
+/// path.
+constexpr float diverging_ratio = 2.0f;
+/// css-raytrace: a lane whose anchor the float bounds (1e-6) keep where the double reference's
+/// (1e-12) would move it, while its brightest channel is below this × max, goes to the double
+/// path (such a colour's channels are within a few hundred times 1e-6 max of 0, where the two
+/// bounds make its passes differ by more than rounding).
+constexpr float dark_channel = 1e-3f;
+
+/// A double 3×3 matrix (row-major) as float pairs, m = hi + lo to about 2^-48 |m|.
+struct PairMatrix {
+    Vf hi[9], lo[9];
+};
+
+/// The pairs of a double matrix, broadcast.
+HWY_INLINE PairMatrix LoadPairMatrix(Df d, const Mat3& m) {
+    PairMatrix p;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            const auto hi = static_cast<float>(m[i][j]);
+            const auto lo = static_cast<float>(m[i][j] - static_cast<double>(hi));
+            p.hi[3 * i + j] = hn::Set(d, hi);
+            p.lo[3 * i + j] = hn::Set(d, lo);
+        }
+    }
+    return p;
+}
+
+/// Knuth's TwoSum: s + err = a + b exactly.
+HWY_INLINE Vf TwoSum(Vf a, Vf b, Vf& err) {
+    const Vf s = hn::Add(a, b);
+    const Vf bb = hn::Sub(s, a);
+    err = hn::Add(hn::Sub(a, hn::Sub(s, bb)), hn::Sub(b, bb));
+    return s;
+}
+
+/// p + e = a b exactly (barring overflow and underflow): the fused a b − p on the x86 targets
+/// with FMA (AVX2, AVX-512), Dekker's split product (1971) on the others, which needs
+/// |a|, |b| below about 1e34 (4097 x must not overflow).
+HWY_INLINE Vf TwoProd(Df d, Vf a, Vf b, Vf& e) {
+    const Vf p = hn::Mul(a, b);
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2
+    (void)d;
+    e = hn::MulSub(a, b, p);
+#else
+    const Vf split = hn::Set(d, 4097.0f);
+    const Vf ta = hn::Mul(split, a), tb = hn::Mul(split, b);
+    const Vf ah = hn::Sub(ta, hn::Sub(ta, a)), bh = hn::Sub(tb, hn::Sub(tb, b));
+    const Vf al = hn::Sub(a, ah), bl = hn::Sub(b, bh);
+    e = hn::Add(hn::Add(hn::Add(hn::Sub(hn::Mul(ah, bh), p), hn::Mul(ah, bl)), hn::Mul(al, bh)),
+                hn::Mul(al, bl));
+#endif
+    return p;
+}
+
+/// Row i of M times (x + xe) (x, xe: a vector as float pairs), as a pair s + se: compensated
+/// products and sums, so that the result is within about an ulp of itself however much its
+/// terms cancel (a plain float dot product loses up to 1e-7 of the terms' size).
+HWY_INLINE Vf Dot3(Df d, const PairMatrix& M, int i, const Vf (&x)[3], const Vf (&xe)[3], Vf& se) {
+    Vf p[3];
+    Vf small = hn::Zero(d);
+    for (int j = 0; j < 3; ++j) {
+        const int k = 3 * i + j;
+        Vf e;
+        p[j] = TwoProd(d, M.hi[k], x[j], e);
+        small = hn::Add(small, hn::Add(e, hn::Add(hn::Mul(M.hi[k], xe[j]), hn::Mul(M.lo[k], x[j]))));
+    }
+    Vf r1, r2;
+    const Vf s1 = TwoSum(p[0], p[1], r1);
+    const Vf s2 = TwoSum(s1, p[2], r2);
+    const Vf tail = hn::Add(hn::Add(r1, r2), small);
+    const Vf s = hn::Add(s2, tail);
+    se = hn::Sub(tail, hn::Sub(s, s2));
+    return s;
+}
+
+/// The real cube root of x as a pair y + dy, to about 2^-40 relative: simd::Cbrt (2 ulp), then
+/// one Newton step on the exact residual x − y³ (dy = (x − y³)/(3y²); a 12-bit reciprocal is
+/// ample for a correction of a few ulp). 0 stays 0.
+HWY_INLINE Vf CbrtPair(Df d, Vf x, Vf& dy) {
+    const Vf y = simd::Cbrt(d, x);
+    Vf pe, ce;
+    const Vf p = TwoProd(d, y, y, pe);
+    const Vf c = TwoProd(d, p, y, ce);
+    const Vf residual = hn::Sub(hn::Sub(x, c), hn::MulAdd(pe, y, ce));
+    const Vf inv = hn::ApproximateReciprocal(hn::Mul(hn::Set(d, 3.0f), p));
+    dy = hn::IfThenZeroElse(hn::Eq(y, hn::Zero(d)), hn::Mul(residual, inv));
+    return y;
+}
+
+/// The transforms of the kernels, as float pairs (accurate versions of simd::ToOklab and
+/// simd::FromOklab): the float rounding of plain products, which a cube root near an LMS of 0
+/// and the rays' grazing intersections amplify, would otherwise move results by more than 1e-5.
+struct Transforms {
+    PairMatrix to_lms, from_lms, m2, m2_inverse;
+};
+
+/// Oklab of linear RGB given as float pairs (r + re, ...), each component within about an ulp
+/// of itself.
+HWY_INLINE void ToOklabPair(Df d, const Transforms& T, Vf r, Vf g, Vf b, Vf re, Vf ge, Vf be,
+                            Vf& L, Vf& A, Vf& B) {
+    const Vf c[3] = {r, g, b}, ce[3] = {re, ge, be};
+    Vf y[3], dy[3], unused;
+    for (int i = 0; i < 3; ++i) y[i] = CbrtPair(d, Dot3(d, T.to_lms, i, c, ce, unused), dy[i]);
+    L = Dot3(d, T.m2, 0, y, dy, unused);
+    A = Dot3(d, T.m2, 1, y, dy, unused);
+    B = Dot3(d, T.m2, 2, y, dy, unused);
+}
+
+/// Oklab of linear RGB, each component within about an ulp of itself.
+HWY_INLINE void ToOklabAccurate(Df d, const Transforms& T, Vf r, Vf g, Vf b, Vf& L, Vf& A, Vf& B) {
+    const Vf zero = hn::Zero(d);
+    ToOklabPair(d, T, r, g, b, zero, zero, zero, L, A, B);
+}
+
+/// The Oklab chroma sqrt(a² + b²) of linear RGB, as ToOklabAccurate's a and b (L unused). For
+/// a colour in the cube (non-negative channels) of a gamut whose rgb_to_lms has no negative
+/// entry (`positive_lms`), the LMS sum has no cancellation and the plain float product is
+/// within a few ulp of each component already.
+HWY_INLINE Vf ChromaAccurate(Df d, const Transforms& T, bool positive_lms, Vf r, Vf g, Vf b) {
+    const Vf zero = hn::Zero(d);
+    const Vf c[3] = {r, g, b}, ce[3] = {zero, zero, zero};
+    Vf y[3], dy[3], unused;
+    if (positive_lms) {
+        Vf lms[3];
+        for (int i = 0; i < 3; ++i) {
+            const int k = 3 * i;
+            lms[i] = hn::MulAdd(T.to_lms.hi[k + 2], b,
+                                hn::MulAdd(T.to_lms.hi[k + 1], g, hn::Mul(T.to_lms.hi[k], r)));
+        }
+        for (int i = 0; i < 3; ++i) y[i] = CbrtPair(d, lms[i], dy[i]);
+    } else {
+        for (int i = 0; i < 3; ++i) y[i] = CbrtPair(d, Dot3(d, T.to_lms, i, c, ce, unused), dy[i]);
+    }
+    const Vf A = Dot3(d, T.m2, 1, y, dy, unused);
+    const Vf B = Dot3(d, T.m2, 2, y, dy, unused);
+    return hn::Sqrt(hn::MulAdd(A, A, hn::Mul(B, B)));
+}
+
+/// Linear RGB of Oklab as float pairs r + re, ... (the cubes as pairs too), to about 2^-40 of
+/// each channel.
+HWY_INLINE void FromOklabPair(Df d, const Transforms& T, Vf L, Vf A, Vf B, Vf& r, Vf& g, Vf& b,
+                              Vf& re, Vf& ge, Vf& be) {
+    const Vf zero = hn::Zero(d);
+    const Vf lab[3] = {L, A, B}, labe[3] = {zero, zero, zero};
+    Vf cube[3], cube_e[3];
+    for (int i = 0; i < 3; ++i) {
+        Vf se, pe, ce;
+        const Vf s = Dot3(d, T.m2_inverse, i, lab, labe, se);
+        const Vf p = TwoProd(d, s, s, pe);
+        pe = hn::MulAdd(hn::Add(s, s), se, pe);  // (s + se)² = p + pe to second order
+        cube[i] = TwoProd(d, p, s, ce);
+        cube_e[i] = hn::MulAdd(p, se, hn::MulAdd(pe, s, ce));
+    }
+    r = Dot3(d, T.from_lms, 0, cube, cube_e, re);
+    g = Dot3(d, T.from_lms, 1, cube, cube_e, ge);
+    b = Dot3(d, T.from_lms, 2, cube, cube_e, be);
+}
+
+/// The same, each channel rounded to float.
+HWY_INLINE void FromOklabAccurate(Df d, const Transforms& T, Vf L, Vf A, Vf B, Vf& r, Vf& g, Vf& b) {
+    Vf re, ge, be;
+    FromOklabPair(d, T, L, A, B, r, g, b, re, ge, be);
+}
+
+/// What both kernels read from the clipper, once per call.
+struct Params {
+    Transforms T;
+    Vf max, white_l;
+    Vf k0, k1, k2;  // the anchor direction: OkLCh(L, 0, h) in linear RGB = L³ (k0, k1, k2)
+    bool positive_lms;  // no entry of rgb_to_lms is negative
+};
+
+/// Reads the clipper once per call: its transforms as pairs, the cube, the white's lightness,
+/// the anchor direction k and whether rgb_to_lms is non-negative.
+HWY_INLINE Params LoadParams(Df d, const GamutClipper& clipper) {
+    Params p{{LoadPairMatrix(d, clipper.rgb_to_lms()), LoadPairMatrix(d, clipper.lms_to_rgb()),
+              LoadPairMatrix(d, oklab_m2), LoadPairMatrix(d, oklab_m2_inverse)},
+             hn::Set(d, static_cast<float>(clipper.gamut().max())),
+             hn::Set(d, static_cast<float>(clipper.white_oklab_lightness())), hn::Zero(d),
+             hn::Zero(d), hn::Zero(d), true};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) p.positive_lms = p.positive_lms && clipper.rgb_to_lms()[i][j] >= 0.0;
+    }
+    const Vec3 q = oklab_m2_inverse * Vec3{1.0, 0.0, 0.0};
+    const Vec3 k = clipper.lms_to_rgb() * Vec3{q[0] * q[0] * q[0], q[1] * q[1] * q[1], q[2] * q[2] * q[2]};
+    p.k0 = hn::Set(d, static_cast<float>(k[0]));
+    p.k1 = hn::Set(d, static_cast<float>(k[1]));
+    p.k2 = hn::Set(d, static_cast<float>(k[2]));
+    return p;
+}
+
+/// Every channel in [lo, hi] (the cube, or the cube widened by a tolerance).
+HWY_INLINE Mf InCube(Vf r, Vf g, Vf b, Vf lo, Vf hi) {
+    return hn::And(hn::And(hn::And(hn::Ge(r, lo), hn::Le(r, hi)),
+                           hn::And(hn::Ge(g, lo), hn::Le(g, hi))),
+                   hn::And(hn::Ge(b, lo), hn::Le(b, hi)));
+}
+
+/// A channel within `margin` of 0 or of max.
+HWY_INLINE Mf NearFace(Vf v, Vf zero, Vf max, Vf margin) {
+    return hn::Or(hn::Lt(hn::Abs(hn::Sub(v, zero)), margin), hn::Lt(hn::Abs(hn::Sub(v, max)), margin));
+}
+
+/// std::clamp(v, 0, max) for non-NaN v.
+HWY_INLINE Vf Clamp(Vf v, Vf zero, Vf max) {
+    return hn::Min(hn::Max(v, zero), max);
+}
+
+/// The Oklab chroma sqrt(a² + b²).
+HWY_INLINE Vf Chroma(Vf a, Vf b) {
+    return hn::Sqrt(hn::MulAdd(a, a, hn::Mul(b, b)));
+}
+
+/// Rewrites the flagged lanes of colours [i, i + lanes) of `out` with the double reference.
+HWY_INLINE void RedoInDouble(Df d, Mf flagged, const GamutClipper& clipper, const float* in,
+                             float* out, std::size_t i) {
+    if (hn::AllFalse(d, flagged)) return;
+    HWY_ALIGN float flags[hn::MaxLanes(d)];
+    hn::Store(hn::IfThenElseZero(flagged, hn::Set(d, 1.0f)), d, flags);
+    for (std::size_t lane = 0; lane < hn::Lanes(d); ++lane) {
+        if (flags[lane] == 0.0f) continue;
+        const std::size_t k = 3 * (i + lane);
+        const Rgb o = clipper.clip({in[k], in[k + 1], in[k + 2]});
+        out[k] = static_cast<float>(o.r);
+        out[k + 1] = static_cast<float>(o.g);
+        out[k + 2] = static_cast<float>(o.b);
+    }
+}
+
+/// "Cast a ray" (CSS Color 4 Ray Trace) from start (s) to end (e) through the box [0, max]³,
+/// lane by lane, as css_raytrace.cpp's cast_ray: returns the lanes where an intersection was
+/// found and writes it to (x, y, z), its parameter along the ray to t, and in `grazing` the
+/// lanes where it moves by more than grazing_gain times an error of `end`.
+HWY_INLINE Mf CastRay(Df d, Vf s0, Vf s1, Vf s2, Vf e0, Vf e1, Vf e2, Vf zero, Vf max, Vf& x,
+                      Vf& y, Vf& z, Vf& t, Mf& grazing) {
+    const Vf inf = hn::Set(d, std::numeric_limits<float>::infinity());
+    const Vf eps = hn::Set(d, parallel_epsilon_f);
+    Vf tnear = hn::Neg(inf), tfar = inf;
+    Mf parallel_outside = hn::Lt(zero, zero);  // all false
+    const Vf d0 = hn::Sub(e0, s0), d1 = hn::Sub(e1, s1), d2 = hn::Sub(e2, s2);
+    Vf dk_near = zero, dk_far = zero;  // the direction's component across the face hit
+    const auto slab = [&](Vf a, Vf dir) {
+        const Mf use = hn::Gt(hn::Abs(dir), eps);
+        const Vf inv = hn::Div(hn::Set(d, 1.0f), dir);
+        const Vf t1 = hn::Mul(hn::Sub(zero, a), inv);
+        const Vf t2 = hn::Mul(hn::Sub(max, a), inv);
+        const Vf lo_t = hn::Min(t1, t2), hi_t = hn::Max(t1, t2);
+        dk_near = hn::IfThenElse(hn::And(use, hn::Gt(lo_t, tnear)), dir, dk_near);
+        dk_far = hn::IfThenElse(hn::And(use, hn::Lt(hi_t, tfar)), dir, dk_far);
+        tnear = hn::IfThenElse(use, hn::Max(lo_t, tnear), tnear);
+        tfar = hn::IfThenElse(use, hn::Min(hi_t, tfar), tfar);
+        parallel_outside = hn::Or(parallel_outside,
+                                  hn::AndNot(use, hn::Or(hn::Lt(a, zero), hn::Gt(a, max))));
+    };
+    slab(s0, d0);
+    slab(s1, d1);
+    slab(s2, d2);
+    const Mf miss = hn::Or(parallel_outside, hn::Or(hn::Gt(tnear, tfar), hn::Lt(tfar, zero)));
+    const Mf from_inside = hn::Lt(tnear, zero);
+    const Vf dk = hn::IfThenElse(from_inside, dk_far, dk_near);
+    tnear = hn::IfThenElse(from_inside, tfar, tnear);
+    // How much an error in `end` moves the intersection: t |d|∞ / |d across the face hit|, large
+    // when the ray grazes the face; `grazing` where it exceeds grazing_gain.
+    const Vf dmax = hn::Max(hn::Max(hn::Abs(d0), hn::Abs(d1)), hn::Abs(d2));
+    grazing = hn::Gt(hn::Mul(hn::Abs(tnear), dmax), hn::Mul(hn::Set(d, grazing_gain), hn::Abs(dk)));
+    const Mf found = hn::AndNot(miss, hn::IsFinite(tnear));
+    x = hn::MulAdd(d0, tnear, s0);
+    y = hn::MulAdd(d1, tnear, s1);
+    z = hn::MulAdd(d2, tnear, s2);
+    t = tnear;
+    return found;
+}
+
+}  // namespace
+
+/// css-raytrace on the largest multiple of the vector length of `colours` interleaved float RGB
+/// colours from `in` to `out` (may be equal); returns how many (kernels.h). Each lane follows
+/// GamutClipper::css_raytrace in float; flagged lanes are redone with GamutClipper::clip.
+std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float* out,
+                            std::size_t colours) {
+    const Df d;
+    const std::size_t n = hn::Lanes(d);
+    const Params p = LoadParams(d, clipper);
+    const Vf zero = hn::Zero(d);
+    const Vf low = hn::Mul(hn::Set(d, raytrace_epsilon_f), p.max);
+    const Vf high = hn::Sub(p.max, low);
+    const Vf tol = hn::Mul(hn::Set(d, static_cast<float>(oklab_rounding_tolerance)), p.max);
+    const Vf low_d = hn::Mul(hn::Set(d, 1e-12f), p.max);
+    const Vf high_d = hn::Sub(p.max, low_d);
+    const Vf dark = hn::Mul(hn::Set(d, dark_channel), p.max);
+    const Vf lmargin = hn::Set(d, lightness_margin);
+    const Vf wild_t = hn::Set(d, wild_ray_t);
+    std::size_t i = 0;
+    for (; i + n <= colours; i += n) {
+        Vf r, g, b;
+        hn::LoadInterleaved3(d, in + 3 * i, r, g, b);
+        simd::FiniteOrDefault(d, r, g, b);
+        const Mf inside = InCube(r, g, b, zero, p.max);
+        if (hn::AllTrue(d, inside)) {
+            hn::StoreInterleaved3(r, g, b, d, out + 3 * i);
+            continue;
+        }
+        Vf L, A, B;
+        ToOklabAccurate(d, p.T, r, g, b, L, A, B);
+        const Mf huge = hn::Or(hn::Or(hn::Gt(hn::Abs(r), hn::Set(d, split_limit)),
+                                      hn::Gt(hn::Abs(g), hn::Set(d, split_limit))),
+                               hn::Gt(hn::Abs(b), hn::Set(d, split_limit)));
+        const Mf white = hn::Ge(L, p.white_l);
+        const Mf black = hn::AndNot(white, hn::Le(L, zero));
+        const Vf c0 = Chroma(A, B);
+        // cos h and sin h of the origin's hue (a hueless lane is flagged below).
+        const Vf inv_c0 = hn::Div(hn::Set(d, 1.0f), hn::Max(c0, hn::Set(d, hueless_chroma)));
+        const Vf ua = hn::Mul(A, inv_c0), ub = hn::Mul(B, inv_c0);
+        const Vf L3 = hn::Mul(hn::Mul(L, L), L);
+        Vf a0 = hn::Mul(L3, p.k0), a1 = hn::Mul(L3, p.k1), a2 = hn::Mul(L3, p.k2);
+        Vf c_r = r, c_g = g, c_b = b;
+        Vf last_r = r, last_g = g, last_b = b;
+        // Within rounding of the cube (oklab_rounding_tolerance, as css_raytrace.cpp): clamped.
+        const Mf near_cube = InCube(r, g, b, hn::Neg(tol), hn::Add(p.max, tol));
+        Mf active = hn::Not(hn::Or(hn::Or(inside, near_cube), hn::Or(white, black)));
+        Mf wild = hn::Lt(zero, zero), grazing = wild, dark_path = wild, diverging = wild;
+        Vf last_moved = zero;
+        for (int it = 0; it < 4; ++it) {
+            if (it > 0) {
+                // Back onto the chroma line: the origin's L and h, the current chroma.
+                // Only the lanes still in the loop: a lane that left it (no intersection)
+                // keeps its last intersection.
+                const Vf c = ChromaAccurate(d, p.T, p.positive_lms, c_r, c_g, c_b);
+                Vf nr, ng, nb;
+                FromOklabAccurate(d, p.T, L, hn::Mul(c, ua), hn::Mul(c, ub), nr, ng, nb);
+                // How far the restore moved the intersection: growing from pass to pass, the
+                // passes diverge and amplify rounding (seen on ACES2065-1's imaginary blue).
+                const Vf moved = hn::Max(hn::Max(hn::Abs(hn::Sub(nr, c_r)), hn::Abs(hn::Sub(ng, c_g))),
+                                         hn::Abs(hn::Sub(nb, c_b)));
+                if (it > 1) {
+                    diverging = hn::Or(diverging, hn::And(active, hn::Gt(moved, hn::Mul(hn::Set(d, diverging_ratio), last_moved))));
+                }
+                last_moved = moved;
+                c_r = hn::IfThenElse(active, nr, c_r);
+                c_g = hn::IfThenElse(active, ng, c_g);
+                c_b = hn::IfThenElse(active, nb, c_b);
+            }
+            Vf x, y, z, t;
+            Mf grazes;
+            const Mf found = CastRay(d, a0, a1, a2, c_r, c_g, c_b, zero, p.max, x, y, z, t, grazes);
+            if (it > 0) {
+                const Mf hit = hn::And(active, found);
+                wild = hn::Or(wild, hn::And(hit, hn::Gt(t, wild_t)));
+                grazing = hn::Or(grazing, hn::And(hit, grazes));
+            }
+            const Mf lost = hn::AndNot(found, active);
+            c_r = hn::IfThenElse(lost, last_r, c_r);
+            c_g = hn::IfThenElse(lost, last_g, c_g);
+            c_b = hn::IfThenElse(lost, last_b, c_b);
+            active = hn::And(active, found);
+            if (it > 0) {
+                const Mf below = hn::And(
+                    hn::And(hn::And(hn::Lt(low, c_r), hn::Lt(c_r, high)),
+                            hn::And(hn::Lt(low, c_g), hn::Lt(c_g, high))),
+                    hn::And(hn::Lt(low, c_b), hn::Lt(c_b, high)));
+                const Mf move = hn::And(active, below);
+                // The double reference's bounds (1e-12) would move the anchor where these do
+                // not: for a dark colour, whose channels are themselves near 1e-6 max, that
+                // changes its path (for a lighter one only by rounding).
+                const Mf below_double = hn::And(
+                    hn::And(hn::And(hn::Lt(low_d, c_r), hn::Lt(c_r, high_d)),
+                            hn::And(hn::Lt(low_d, c_g), hn::Lt(c_g, high_d))),
+                    hn::And(hn::Lt(low_d, c_b), hn::Lt(c_b, high_d)));
+                const Vf brightest = hn::Max(hn::Max(c_r, c_g), c_b);
+                dark_path = hn::Or(dark_path, hn::And(hn::AndNot(below, hn::And(active, below_double)),
+                                                      hn::Lt(brightest, dark)));
+                a0 = hn::IfThenElse(move, c_r, a0);
+                a1 = hn::IfThenElse(move, c_g, a1);
+                a2 = hn::IfThenElse(move, c_b, a2);
+            }
+            c_r = hn::IfThenElse(active, x, c_r);
+            c_g = hn::IfThenElse(active, y, c_g);
+            c_b = hn::IfThenElse(active, z, c_b);
+            last_r = c_r;
+            last_g = c_g;
+            last_b = c_b;
+            if (hn::AllFalse(d, active)) break;
+        }
+        Vf rr = Clamp(c_r, zero, p.max), gg = Clamp(c_g, zero, p.max), bb = Clamp(c_b, zero, p.max);
+        rr = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, rr));
+        gg = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, gg));
+        bb = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, bb));
+        rr = hn::IfThenElse(inside, r, rr);
+        gg = hn::IfThenElse(inside, g, gg);
+        bb = hn::IfThenElse(inside, b, bb);
+        hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
+        const Mf near_l = hn::Or(hn::Lt(hn::Abs(hn::Sub(L, p.white_l)), lmargin),
+                                 hn::Lt(hn::Abs(L), lmargin));
+        const Mf flagged = hn::AndNot(
+            inside, hn::Or(hn::Or(hn::Or(near_l, huge), hn::Or(hn::Or(wild, grazing), hn::Or(dark_path, diverging))),
+                           hn::AndNot(hn::Or(white, black), hn::Lt(c0, hn::Set(d, hueless_chroma)))));
+        RedoInDouble(d, flagged, clipper, in, out, i);
+    }
+    return i;
+}
+
+/// css (the binary search) likewise: a lane-masked search until every lane has finished, each
+/// lane following GamutClipper::css in float; flagged lanes are redone with GamutClipper::clip.
+std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, float* out,
+                                std::size_t colours) {
+    const Df d;
+    const std::size_t n = hn::Lanes(d);
+    const Params p = LoadParams(d, clipper);
+    const Vf zero = hn::Zero(d);
+    const Vf half = hn::Set(d, 0.5f);
+    const Vf jnd = hn::Set(d, css_jnd_f), eps = hn::Set(d, css_epsilon_f);
+    const Vf lmargin = hn::Set(d, lightness_margin);
+    const Vf cmargin = hn::Mul(hn::Set(d, channel_margin), p.max);
+    const Vf emargin = hn::Set(d, delta_margin);
+    const Vf imargin = hn::Set(d, interval_margin * css_epsilon_f);
+    // ΔEOK between the Oklab of clamp(candidate) and the current colour (L, ca, cb).
+    // clip(candidate) as float pairs: a clamped channel is its bound exactly.
+    const auto clamp_pair = [&](Vf v, Vf ve, Vf& out_e) {
+        out_e = hn::IfThenZeroElse(hn::Or(hn::Lt(v, zero), hn::Gt(v, p.max)), ve);
+        return Clamp(v, zero, p.max);
+    };
+    // ΔEOK between the Oklab of clip(candidate) (pairs) and the current colour (L, ca, cbk).
+    const auto delta = [&](Vf cr, Vf cg, Vf cb, Vf cre, Vf cge, Vf cbe, Vf L, Vf ca, Vf cbk) {
+        Vf l2, a2, b2;
+        ToOklabPair(d, p.T, cr, cg, cb, cre, cge, cbe, l2, a2, b2);
+        const Vf dl = hn::Sub(l2, L), da = hn::Sub(a2, ca), db = hn::Sub(b2, cbk);
+        return hn::Sqrt(hn::MulAdd(dl, dl, hn::MulAdd(da, da, hn::Mul(db, db))));
+    };
+    std::size_t i = 0;
+    for (; i + n <= colours; i += n) {
+        Vf r, g, b;
+        hn::LoadInterleaved3(d, in + 3 * i, r, g, b);
+        simd::FiniteOrDefault(d, r, g, b);
+        const Mf inside = InCube(r, g, b, zero, p.max);
+        if (hn::AllTrue(d, inside)) {
+            hn::StoreInterleaved3(r, g, b, d, out + 3 * i);
+            continue;
+        }
+        Vf L, A, B;
+        ToOklabAccurate(d, p.T, r, g, b, L, A, B);
+        const Mf huge = hn::Or(hn::Or(hn::Gt(hn::Abs(r), hn::Set(d, split_limit)),
+                                      hn::Gt(hn::Abs(g), hn::Set(d, split_limit))),
+                               hn::Gt(hn::Abs(b), hn::Set(d, split_limit)));
+        const Mf white = hn::Ge(L, p.white_l);
+        const Mf black = hn::AndNot(white, hn::Le(L, zero));
+        const Vf c0 = Chroma(A, B);
+        const Vf inv_c0 = hn::Div(hn::Set(d, 1.0f), hn::Max(c0, hn::Set(d, hueless_chroma)));
+        const Vf ua = hn::Mul(A, inv_c0), ub = hn::Mul(B, inv_c0);
+        Mf flagged = hn::Or(hn::Or(hn::Lt(hn::Abs(hn::Sub(L, p.white_l)), lmargin),
+                                   hn::Lt(hn::Abs(L), lmargin)), huge);
+        flagged = hn::Or(flagged, hn::AndNot(hn::Or(white, black),
+                                             hn::Lt(c0, hn::Set(d, hueless_chroma))));
+        // clipped = clip(current) at the origin's chroma; E < JND returns it.
+        Vf cr, cg, cb, cre, cge, cbe;
+        Vf ca = hn::Mul(c0, ua), cbk = hn::Mul(c0, ub);
+        FromOklabPair(d, p.T, L, ca, cbk, cr, cg, cb, cre, cge, cbe);
+        Vf kre, kge, kbe;
+        Vf k_r = clamp_pair(cr, cre, kre), k_g = clamp_pair(cg, cge, kge), k_b = clamp_pair(cb, cbe, kbe);
+        Vf e = delta(k_r, k_g, k_b, kre, kge, kbe, L, ca, cbk);
+        Mf running = hn::Not(hn::Or(inside, hn::Or(white, black)));
+        flagged = hn::Or(flagged, hn::And(running, hn::Lt(hn::Abs(hn::Sub(e, jnd)), emargin)));
+        running = hn::AndNot(hn::Lt(e, jnd), running);
+        Vf lo = zero, hi = c0;
+        Mf lo_in_gamut = hn::Not(hn::Lt(zero, zero));  // all true
+        for (;;) {
+            const Vf width = hn::Sub(hi, lo);
+            flagged = hn::Or(flagged, hn::And(running, hn::Lt(hn::Abs(hn::Sub(width, eps)), imargin)));
+            running = hn::And(running, hn::Gt(width, eps));
+            if (hn::AllFalse(d, running)) break;
+            const Vf chroma = hn::Mul(hn::Add(lo, hi), half);
+            ca = hn::Mul(chroma, ua);
+            cbk = hn::Mul(chroma, ub);
+            FromOklabPair(d, p.T, L, ca, cbk, cr, cg, cb, cre, cge, cbe);
+            const Mf tested = hn::And(running, lo_in_gamut);
+            flagged = hn::Or(flagged, hn::And(tested, hn::Or(hn::Or(NearFace(cr, zero, p.max, cmargin),
+                                                                    NearFace(cg, zero, p.max, cmargin)),
+                                                             NearFace(cb, zero, p.max, cmargin))));
+            const Mf shortcut = hn::And(tested, InCube(cr, cg, cb, zero, p.max));
+            lo = hn::IfThenElse(shortcut, chroma, lo);
+            const Mf measured = hn::AndNot(shortcut, running);
+            if (hn::AllFalse(d, measured)) continue;
+            Vf nre, nge, nbe;
+            const Vf nr = clamp_pair(cr, cre, nre), ng = clamp_pair(cg, cge, nge),
+                     nb = clamp_pair(cb, cbe, nbe);
+            k_r = hn::IfThenElse(measured, nr, k_r);
+            k_g = hn::IfThenElse(measured, ng, k_g);
+            k_b = hn::IfThenElse(measured, nb, k_b);
+            e = delta(nr, ng, nb, nre, nge, nbe, L, ca, cbk);
+            const Mf below = hn::And(measured, hn::Lt(e, jnd));
+            const Vf slack = hn::Sub(jnd, e);
+            flagged = hn::Or(flagged, hn::And(measured, hn::Lt(hn::Abs(hn::Sub(e, jnd)), emargin)));
+            flagged = hn::Or(flagged, hn::And(below, hn::Lt(hn::Abs(hn::Sub(slack, eps)), emargin)));
+            const Mf finished = hn::And(below, hn::Lt(slack, eps));
+            const Mf raise = hn::AndNot(finished, below);
+            lo_in_gamut = hn::AndNot(raise, lo_in_gamut);
+            lo = hn::IfThenElse(raise, chroma, lo);
+            hi = hn::IfThenElse(hn::AndNot(below, measured), chroma, hi);
+            running = hn::AndNot(finished, running);
+        }
+        Vf rr = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, k_r));
+        Vf gg = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, k_g));
+        Vf bb = hn::IfThenZeroElse(black, hn::IfThenElse(white, p.max, k_b));
+        rr = hn::IfThenElse(inside, r, rr);
+        gg = hn::IfThenElse(inside, g, gg);
+        bb = hn::IfThenElse(inside, b, bb);
+        hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
+        RedoInDouble(d, hn::AndNot(inside, flagged), clipper, in, out, i);
+    }
+    return i;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace irid
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+
+namespace irid {
+
+HWY_EXPORT(ClipCssBinarySearch);
+HWY_EXPORT(ClipCssRayTrace);
+
+namespace detail {
+
+std::size_t clip_css_simd(const GamutClipper& clipper, const float* in, float* out,
+                          std::size_t colours) noexcept {
+    return HWY_DYNAMIC_DISPATCH(ClipCssBinarySearch)(clipper, in, out, colours);
+}
+
+std::size_t clip_css_raytrace_simd(const GamutClipper& clipper, const float* in, float* out,
+                                   std::size_t colours) noexcept {
+    return HWY_DYNAMIC_DISPATCH(ClipCssRayTrace)(clipper, in, out, colours);
+}
+
+}  // namespace detail
+}  // namespace irid
+
+#endif  // HWY_ONCE
