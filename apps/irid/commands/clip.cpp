@@ -476,7 +476,8 @@ void add_clip_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--method", o->method, "Clipping method: " + method_names());
     cmd->add_option("--param", o->params,
                     "A method's parameter, name=value (repeatable): " + parameter_help() +
-                        ". Images get aces-rgc's clip=true unless given");
+                        ". Images get aces-rgc's clip=true unless given")
+        ->allow_extra_args(false);  // one name=value per --param; IN and OUT stay positional
     cmd->add_flag("--inverse", o->inverse,
                   "Apply the method's inverse (aces-rgc, smits-soft: undo a compression)");
     o->from_option = cmd->add_option("--from", o->from,
