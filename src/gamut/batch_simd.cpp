@@ -59,26 +59,31 @@ HWY_INLINE V clamp_to_cube(V v, V zero, V max) {
     return hn::IfThenElse(hn::Gt(v, max), max, v);
 }
 
-/// The same for a clipped channel c + t (w − c), which is never NaN nor -0 (c = -0 is not below
-/// 0, so it only moves by +t w): Min and Max give the same bits in fewer instructions.
+/// The same for a clipped channel w + s (c − w), which is never NaN nor -0 (w > 0, and a sum that
+/// is exactly 0 rounds to +0): Min and Max give the same bits in fewer instructions.
 HWY_INLINE V clamp_clipped(V v, V zero, V max) {
     return hn::Min(hn::Max(v, zero), max);
 }
 
-/// One channel's plane crossing in smits_clip_rgb: t_i = (c − bound)/(c − w) where the channel is
-/// below 0 (bound 0, numerator c itself) or above max, kept when larger than t.
-/// `face` records which channel gave the largest t so far (the first on ties, as the scalar loop).
-HWY_INLINE V crossing(V c, V w, V max, hn::Mask<D> low, hn::Mask<D> high, V t, V index, V& face) {
-    const V num = hn::IfThenElse(low, c, hn::Sub(c, max));
-    const V ti = hn::Div(num, hn::Sub(c, w));
-    const auto larger = hn::And(hn::Or(low, high), hn::Gt(ti, t));
-    face = hn::IfThenElse(larger, index, face);
-    return hn::IfThenElse(larger, ti, t);
+/// One channel's plane crossing in smits_clip_rgb: the fraction s_i = n/d with n = w or
+/// room = max − w and d = |c − w| (= w − c below 0, c − w above max: the same IEEE values as the
+/// scalar code's), taken when n D < N d (cross-multiplication). The kept N/D starts as 1/0
+/// (s = ∞), which every crossed channel beats (d > 0): the scalar code's "first crossed channel
+/// as it is". A channel not crossed gets d = 0 and never beats anything (n D >= 0 = N d).
+/// Returns whether it was taken.
+HWY_INLINE hn::Mask<D> crossing(V e, V w, V room, hn::Mask<D> low, hn::Mask<D> crossed, V& num,
+                                V& den) {
+    const V n = hn::IfThenElse(low, w, room);
+    const V d = hn::IfThenElseZero(crossed, hn::Abs(e));
+    const auto take = hn::Lt(hn::Mul(n, den), hn::Mul(num, d));
+    num = hn::IfThenElse(take, n, num);
+    den = hn::IfThenElse(take, d, den);
+    return take;
 }
 
 /// The channel of the face the colour was moved onto is exactly that face's bound.
-HWY_INLINE V on_face(V v, V face, V index, hn::Mask<D> low, V zero, V max) {
-    return hn::IfThenElse(hn::Eq(face, index), hn::IfThenElse(low, zero, max), v);
+HWY_INLINE V on_face(V v, hn::Mask<D> face, hn::Mask<D> low, V zero, V max) {
+    return hn::IfThenElse(face, hn::IfThenElse(low, zero, max), v);
 }
 
 }  // namespace
@@ -91,6 +96,7 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
     const V max = hn::Set(d, p.max);
     const V l0 = hn::Set(d, p.lum0), l1 = hn::Set(d, p.lum1), l2 = hn::Set(d, p.lum2);
     const V inv = hn::Set(d, p.inv_lum_sum);
+    const V one = hn::Set(d, 1.0f);
     std::size_t i = 0;
     for (; i + n <= colours; i += n) {
         V r, g, b;
@@ -99,8 +105,9 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
         // Outcodes.
         const auto low_r = hn::Lt(r, zero), low_g = hn::Lt(g, zero), low_b = hn::Lt(b, zero);
         const auto high_r = hn::Gt(r, max), high_g = hn::Gt(g, max), high_b = hn::Gt(b, max);
-        const auto outside =
-            hn::Or(hn::Or(hn::Or(low_r, high_r), hn::Or(low_g, high_g)), hn::Or(low_b, high_b));
+        const auto cross_r = hn::Or(low_r, high_r), cross_g = hn::Or(low_g, high_g),
+                   cross_b = hn::Or(low_b, high_b);
+        const auto outside = hn::Or(hn::Or(cross_r, cross_g), cross_b);
         if (hn::AllFalse(d, outside)) {  // in-gamut colours cost only the comparisons
             hn::StoreInterleaved3(r, g, b, d, out + 3 * i);
             continue;
@@ -108,21 +115,25 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
         // The grey of equal luminance, in the scalar code's order: (A r + B g) + C b.
         const V y = hn::Add(hn::Add(hn::Mul(l0, r), hn::Mul(l1, g)), hn::Mul(l2, b));
         const V w = hn::Mul(y, inv);
-        V t = zero;
-        V face = hn::Set(d, -1.0f);
-        const V i0 = zero, i1 = hn::Set(d, 1.0f), i2 = hn::Set(d, 2.0f);
-        t = crossing(r, w, max, low_r, high_r, t, i0, face);
-        t = crossing(g, w, max, low_g, high_g, t, i1, face);
-        t = crossing(b, w, max, low_b, high_b, t, i2, face);
-        V rr = on_face(hn::Add(r, hn::Mul(t, hn::Sub(w, r))), face, i0, low_r, zero, max);
-        V gg = on_face(hn::Add(g, hn::Mul(t, hn::Sub(w, g))), face, i1, low_g, zero, max);
-        V bb = on_face(hn::Add(b, hn::Mul(t, hn::Sub(w, b))), face, i2, low_b, zero, max);
-        // w >= max → white; Y <= 0 (or NaN) → black, tested first in the scalar code so it wins.
-        const auto white = hn::Not(hn::Lt(w, max));
-        const auto black = hn::Not(hn::Gt(y, zero));
-        rr = hn::IfThenZeroElse(black, hn::IfThenElse(white, max, rr));
-        gg = hn::IfThenZeroElse(black, hn::IfThenElse(white, max, gg));
-        bb = hn::IfThenZeroElse(black, hn::IfThenElse(white, max, bb));
+        // Y <= 0 (black) and w >= max (white) give the grey w itself, which the final clamp
+        // turns into 0 or max: the scalar code's black and white (+0, as its clamp gives).
+        // (y and w are never NaN: the channels are finite and the weights sum to about 1, so
+        // Le and Ge are the scalar code's !(y > 0) and !(w < max).)
+        const auto grey = hn::Or(hn::Le(y, zero), hn::Ge(w, max));
+        const V er = hn::Sub(r, w), eg = hn::Sub(g, w), eb = hn::Sub(b, w);
+        const V room = hn::Sub(max, w);
+        V num = one, den = zero;
+        const auto take_r = crossing(er, w, room, low_r, cross_r, num, den);
+        const auto take_g = crossing(eg, w, room, low_g, cross_g, num, den);
+        const auto take_b = crossing(eb, w, room, low_b, cross_b, num, den);
+        const V s = hn::Div(num, den);  // the one division
+        // The face of the kept fraction: the last channel taken.
+        const auto face_b = hn::AndNot(grey, take_b);
+        const auto face_g = hn::AndNot(hn::Or(grey, take_b), take_g);
+        const auto face_r = hn::AndNot(hn::Or(hn::Or(grey, take_g), take_b), take_r);
+        V rr = on_face(hn::IfThenElse(grey, w, hn::Add(w, hn::Mul(s, er))), face_r, low_r, zero, max);
+        V gg = on_face(hn::IfThenElse(grey, w, hn::Add(w, hn::Mul(s, eg))), face_g, low_g, zero, max);
+        V bb = on_face(hn::IfThenElse(grey, w, hn::Add(w, hn::Mul(s, eb))), face_b, low_b, zero, max);
         // In-gamut lanes unchanged, the others kept inside [0, max]³.
         rr = hn::IfThenElse(outside, clamp_clipped(rr, zero, max), r);
         gg = hn::IfThenElse(outside, clamp_clipped(gg, zero, max), g);
