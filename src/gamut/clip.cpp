@@ -260,7 +260,8 @@ GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut, const ClipSett
     m_white_oklab_l = to_oklab({max, max, max}).L;
     m_white_uv = xyz_to_uv_prime(m_white);
     prepare();
-    m_confined = method != ClipMethod::aces_rgc || parameter("clip") != 0.0;
+    m_confined = (method != ClipMethod::aces_rgc || parameter("clip") != 0.0) &&
+                 !(method == ClipMethod::smits_soft && m_inverse);
 }
 
 void GamutClipper::prepare() {
@@ -299,7 +300,10 @@ Rgb GamutClipper::clip(const Rgb& linear) const noexcept {
         const Rgb out = aces_rgc(c);
         return confines_to_cube() ? clamp(out) : out;
     }
-    if (m_method == ClipMethod::smits_soft) return clamp(smits_soft(c));
+    if (m_method == ClipMethod::smits_soft) {
+        const Rgb out = smits_soft(c);
+        return confines_to_cube() ? clamp(out) : out;  // the inverse expands beyond the cube
+    }
     if (m_gamut.contains(c)) return c;
     Rgb out = clip_finite(c);
     // Rounding may leave a result a few ulps outside a face; the contract is [0, max]³.

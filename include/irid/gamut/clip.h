@@ -86,9 +86,14 @@ enum class ClipMethod {
     oklab_adaptive,
     /// Ottosson 2021, "gamut_clip_adaptive_L0_L_cusp": the same around the cusp's lightness.
     oklab_cusp,
-    /// The thesis' direction (constant Y, toward the grey of equal luminance) with a soft
-    /// compression instead of the hard stop: nothing inside the threshold moves, the boundary is
-    /// reached at the limit (parameters threshold, limit, power).
+    /// The thesis' direction (constant Y, toward the grey w of equal luminance) with a soft
+    /// compression instead of the hard stop (smits_soft.cpp). The relative distance
+    /// r = max_i of (c_i − w)/(max − w) for c_i > w and (w − c_i)/w for c_i < w (1 where the ray
+    /// from w through c leaves the cube) becomes r' = r up to `threshold` (nothing inside it
+    /// moves), ACES 1.3's power curve (`power`) above it, reaching 1 (the boundary) exactly at
+    /// `limit`, and 1 (smits' own answer) beyond; the output is w + (r'/r)(c − w), so luminance
+    /// is kept exactly. Y <= 0 → black, w >= max → white. The inverse undoes the curve for
+    /// r' < 1 and maps the boundary, and every colour beyond it along its ray, to the limit.
     smits_soft,
     /// ACES 1.3 Reference Gamut Compression (Academy LMT.Academy.ReferenceGamutCompress.ctl;
     /// OpenColorIO 2.1 FixedFunction ACES_GamutComp13), per channel in the linear RGB of the
@@ -220,8 +225,9 @@ public:
 
     /// Clips linear RGB of the gamut's space. Every output is finite. In-gamut colours come back
     /// unchanged and every output is inside [0, max]³, except for the soft methods (which
-    /// compress colours beyond their threshold, inside or not) and for aces-rgc without clip=1
-    /// (whose curve, forward or inverse, may leave colours outside the cube, as OCIO's does).
+    /// compress colours beyond their threshold, inside or not), for aces-rgc without clip=1
+    /// (whose curve, forward or inverse, may leave colours outside the cube, as OCIO's does) and
+    /// for the inverse of smits-soft (confines_to_cube()).
     [[nodiscard]] Rgb clip(const Rgb& linear) const noexcept;
     /// The same on XYZ relative to the gamut's white (Y = max for the white), returning XYZ.
     /// For smits_xyz this is the thesis' XYZ form itself; the others go through RGB.
@@ -239,7 +245,8 @@ public:
         return m_parameters;
     }
     [[nodiscard]] bool inverse() const noexcept { return m_inverse; }
-    /// Whether outputs are confined to [0, max]³ (false only for aces-rgc without clip).
+    /// Whether outputs are confined to [0, max]³ (false only for aces-rgc without clip and for
+    /// the inverse of smits-soft, which expands toward the limit).
     [[nodiscard]] bool confines_to_cube() const noexcept { return m_confined; }
 
     // The transforms the batch kernels need (batch_*.cpp), built once here.
