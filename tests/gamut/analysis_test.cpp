@@ -249,6 +249,8 @@ TEST(ClipAnalysis, HueStatisticsAgreeWithTheClipReport) {
     for (const ColorSet& set : report_sets()) {
         const ClipReport report = measure_clip_report(set, Gamut(srgb()), ClipReportOptions{0.0});
         for (const MethodClipReport& m : report.methods) {
+            // The soft methods also move colours in the gamut, which then do not contribute 0.
+            if (moves_in_gamut_colours(m.method)) continue;
             SCOPED_TRACE(set.name + " " + std::string(clip_method_name(m.method)));
             const ClipClaimsSummary s = analyse_clip(set, Gamut(srgb()), m.method).summary;
             EXPECT_EQ(s.clipped, report.out_of_gamut);
@@ -312,6 +314,7 @@ TEST(ClipAnalysis, InGamutColoursAreUnchangedAndNotSummarised) {
     ColorSet inside{"inside", "", {}};
     for (const double v : {0.1, 0.5, 0.9}) inside.colors.push_back(srgb().to_xyz({v, 0.3, 1.0 - v}));
     for (const ClipMethod m : clip_methods()) {
+        if (moves_in_gamut_colours(m)) continue;  // the soft methods move them by design
         const ClipAnalysis a = analyse_clip(inside, Gamut(srgb()), m);
         EXPECT_EQ(a.summary.clipped, 0u);
         EXPECT_EQ(a.summary.max_abs_delta_l_ab, 0.0);

@@ -186,6 +186,8 @@ TEST(ClipNearTheGamut,
         const Mat3& to_xyz = gamut.space().to_xyz_matrix();
         const Mat3& from_xyz = gamut.space().from_xyz_matrix();
         for (const ClipMethod method : clip_methods()) {
+            // The soft methods compress colours near the boundary by design (clip.h).
+            if (moves_in_gamut_colours(method)) continue;
             const GamutClipper clipper(method, gamut);
             Verdict rgb, xyz;
             for (const std::array<double, 3>& c : colours) {
@@ -221,6 +223,8 @@ TEST(ClipNearTheGamut,
         }
         ASSERT_GT(in.size(), 30000u);
         for (const ClipMethod method : clip_methods()) {
+            // The soft methods compress colours near the boundary by design (clip.h).
+            if (moves_in_gamut_colours(method)) continue;
             const GamutClipper clipper(method, gamut);
             for (const bool simd : {false, true}) {
                 std::vector<float> out(in.size());

@@ -44,7 +44,7 @@ bool on_boundary(const Rgb& c, double max, double tol = 1e-9) {
 
 TEST(ClipMethods, NamesRoundTripAndUnknownNamesListTheValidOnes) {
     for (const ClipMethod m : clip_methods()) EXPECT_EQ(parse_clip_method(clip_method_name(m)), m);
-    EXPECT_EQ(clip_methods().size(), 8u);
+    EXPECT_EQ(clip_methods().size(), 13u);
     try {
         (void)parse_clip_method("perceptual");
         FAIL();
@@ -62,6 +62,7 @@ TEST(ClipMethods, InGamutColoursAreUntouchedAndOutputsAreFiniteAndInside) {
     for (const ClipMethod m : clip_methods()) {
         const GamutClipper clipper(m, gamut);
         for (const Rgb& c : inside) {
+            if (moves_in_gamut_colours(m)) break;  // the soft methods move them by design
             const Rgb out = clipper.clip(c);
             EXPECT_EQ(out.r, c.r) << clip_method_name(m);
             EXPECT_EQ(out.g, c.g) << clip_method_name(m);

@@ -129,6 +129,7 @@ TEST(ClipReport, InGamutColoursMeasureZero) {
     const ClipReport report = quick_report(inside);
     EXPECT_EQ(report.out_of_gamut, 0u);
     for (const MethodClipReport& m : report.methods) {
+        if (moves_in_gamut_colours(m.method)) continue;  // the soft methods move them by design
         SCOPED_TRACE(std::string(clip_method_name(m.method)));
         EXPECT_EQ(m.delta_e2000.max, 0.0);
         EXPECT_EQ(m.hue_lab.max, 0.0);
