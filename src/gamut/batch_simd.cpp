@@ -42,12 +42,13 @@ HWY_INLINE V finite_or_default(D d, V v) {
     return hn::IfThenElse(hn::IsInf(v), hn::CopySign(hn::Set(d, 1e30f), v), v);
 }
 
-/// The rule on three channels, skipped (a few comparisons) when they are all finite.
+/// The rule on three channels, skipped when they are all finite: v − v is 0 for a finite v and
+/// NaN for NaN and ±Inf, and a sum with a NaN is NaN, so one comparison of
+/// (r − r) + (g − g) + (b − b) with 0 tests the three channels (5 arithmetic operations, fewer
+/// than three IsFinite on AVX2, where each is a few integer operations).
 HWY_INLINE void finite_or_default(D d, V& r, V& g, V& b) {
-    if (HWY_LIKELY(
-            hn::AllTrue(d, hn::And(hn::And(hn::IsFinite(r), hn::IsFinite(g)), hn::IsFinite(b))))) {
-        return;
-    }
+    const V sum = hn::Add(hn::Add(hn::Sub(r, r), hn::Sub(g, g)), hn::Sub(b, b));
+    if (HWY_LIKELY(hn::AllTrue(d, hn::Eq(sum, hn::Zero(d))))) return;
     r = finite_or_default(d, r);
     g = finite_or_default(d, g);
     b = finite_or_default(d, b);
@@ -134,10 +135,15 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
         V rr = on_face(hn::IfThenElse(grey, w, hn::Add(w, hn::Mul(s, er))), face_r, low_r, zero, max);
         V gg = on_face(hn::IfThenElse(grey, w, hn::Add(w, hn::Mul(s, eg))), face_g, low_g, zero, max);
         V bb = on_face(hn::IfThenElse(grey, w, hn::Add(w, hn::Mul(s, eb))), face_b, low_b, zero, max);
-        // In-gamut lanes unchanged, the others kept inside [0, max]³.
-        rr = hn::IfThenElse(outside, clamp_clipped(rr, zero, max), r);
-        gg = hn::IfThenElse(outside, clamp_clipped(gg, zero, max), g);
-        bb = hn::IfThenElse(outside, clamp_clipped(bb, zero, max), b);
+        // The lanes kept inside [0, max]³, and in-gamut lanes (if any) unchanged.
+        rr = clamp_clipped(rr, zero, max);
+        gg = clamp_clipped(gg, zero, max);
+        bb = clamp_clipped(bb, zero, max);
+        if (!hn::AllTrue(d, outside)) {
+            rr = hn::IfThenElse(outside, rr, r);
+            gg = hn::IfThenElse(outside, gg, g);
+            bb = hn::IfThenElse(outside, bb, b);
+        }
         hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
     }
     return i;
