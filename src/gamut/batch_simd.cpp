@@ -123,18 +123,20 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
         const auto grey = hn::Or(hn::Le(y, zero), hn::Ge(w, max));
         const V er = hn::Sub(r, w), eg = hn::Sub(g, w), eb = hn::Sub(b, w);
         const V room = hn::Sub(max, w);
-        V num = one, den = zero;
-        const auto take_r = crossing(er, w, room, low_r, cross_r, num, den);
+        // Red against the initial 1/0 is taken exactly where it is crossed (d > 0), so its
+        // fraction is set without the products.
+        V num = hn::IfThenElse(cross_r, hn::IfThenElse(low_r, w, room), one);
+        V den = hn::IfThenElseZero(cross_r, hn::Abs(er));
         const auto take_g = crossing(eg, w, room, low_g, cross_g, num, den);
         const auto take_b = crossing(eb, w, room, low_b, cross_b, num, den);
         const V s = hn::Div(num, den);  // the one division
         // The face of the kept fraction: the last channel taken.
-        const auto face_b = hn::AndNot(grey, take_b);
-        const auto face_g = hn::AndNot(hn::Or(grey, take_b), take_g);
-        const auto face_r = hn::AndNot(hn::Or(hn::Or(grey, take_g), take_b), take_r);
-        V rr = on_face(hn::IfThenElse(grey, w, hn::Add(w, hn::Mul(s, er))), face_r, low_r, zero, max);
-        V gg = on_face(hn::IfThenElse(grey, w, hn::Add(w, hn::Mul(s, eg))), face_g, low_g, zero, max);
-        V bb = on_face(hn::IfThenElse(grey, w, hn::Add(w, hn::Mul(s, eb))), face_b, low_b, zero, max);
+        const auto face_b = take_b;
+        const auto face_g = hn::AndNot(take_b, take_g);
+        const auto face_r = hn::AndNot(hn::Or(take_g, take_b), cross_r);
+        V rr = hn::IfThenElse(grey, w, on_face(hn::Add(w, hn::Mul(s, er)), face_r, low_r, zero, max));
+        V gg = hn::IfThenElse(grey, w, on_face(hn::Add(w, hn::Mul(s, eg)), face_g, low_g, zero, max));
+        V bb = hn::IfThenElse(grey, w, on_face(hn::Add(w, hn::Mul(s, eb)), face_b, low_b, zero, max));
         // The lanes kept inside [0, max]³, and in-gamut lanes (if any) unchanged.
         rr = clamp_clipped(rr, zero, max);
         gg = clamp_clipped(gg, zero, max);
