@@ -10,7 +10,7 @@
 // would no longer be far below the tolerance, and luminance near 0 can be a cancellation of
 // large terms). Per kernel, the few cases the comment of each kernel names. On the benchmark's
 // input (2^20 colours uniform in [-0.5, 1.5]^3, redrawn until out of sRGB) the hard lanes are:
-// smits-xyz 0, luv-lightness-hue 0.8 %, smits-corrected 17 %, smits-soft 0 (forward and inverse).
+// smits-xyz 0, luv-lightness-hue 0.8 %, smits-corrected 6 %, smits-soft 0 (forward and inverse).
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE __BASE_FILE__
@@ -296,13 +296,14 @@ std::size_t ClipLuvLightnessHue(const GamutClipper& clipper, const float* in, fl
 /// near 2), so a hue to about 3e-7/C rad, and the step τ = Δh/slope errs by that over the
 /// slope: where the hue turns slowly along the face the step is ill-conditioned in float.
 /// Hard (sent to the double reference): a smits point with a second channel within 1e-4 max of
-/// a face (an edge: the reference may step along two faces); an Oklab chroma below 0.05 at the
+/// a face (an edge: the reference may step along two faces); an Oklab chroma below 0.005 at the
 /// input or at the smits point; a cone response (LMS) of the input, the smits point or the
 /// stepped point below 0.003 max in magnitude (the cube root is steep there: an input with S
-/// at -2.7e-7 has its a off by 5e-5 in float); a hue slope below 0.8 rad per unit of
-/// |d| (the direction's length); a step whose hue error is within 2e-5 rad of the smits
-/// point's. On the benchmark's input (uniform in [-0.5, 1.5]^3, out of sRGB) 17 % of the lanes
-/// are hard, and the largest difference to the reference on 200 000 such colours is 7.9e-6.
+/// at -2.7e-7 has its a off by 5e-5 in float); C · |slope| below 0.1 |d| (C the smaller chroma,
+/// the slope in rad per unit of τ, d the direction: the estimated error of the step above about
+/// 3e-6); a step whose hue error is within 2e-5 rad of the smits point's. On the benchmark's
+/// input (uniform in [-0.5, 1.5]^3, out of sRGB) 6 % of the lanes are hard, and the largest
+/// difference to the reference on 200 000 such colours is 5.6e-6.
 std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, float* out,
                                std::size_t colours) {
     const Df d;
@@ -323,11 +324,11 @@ std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, flo
     const Vf zero = hn::Zero(d), max = P.max;
     const Vf huge = hn::Mul(max, hn::Set(d, 16.0f));
     const Vf edge = hn::Mul(max, hn::Set(d, 1e-4f));
-    const Vf min_chroma2 = hn::Set(d, 0.05f * 0.05f);
+    const Vf min_chroma2 = hn::Set(d, 0.005f * 0.005f);
     const Vf min_lms_bound = hn::Mul(max, hn::Set(d, 0.003f));
     const Vf third = hn::Set(d, 1.0f / 3.0f);
     const Vf tie = hn::Set(d, 2e-5f);
-    const Vf slow = hn::Set(d, 0.8f);
+    const Vf slow = hn::Set(d, 0.1f);
     return RunKernel(clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& rr, Vf& gg, Vf& bb) {
         const Mf outside = Outside(r, g, b, zero, max);
         Vf p[3];
@@ -402,9 +403,12 @@ std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, flo
         rr = hn::IfThenElse(outside, Clamp(o[0], zero, max), r);
         gg = hn::IfThenElse(outside, Clamp(o[1], zero, max), g);
         bb = hn::IfThenElse(outside, Clamp(o[2], zero, max), b);
+        // The step's float error, about 3e-7/C rad of hue over the slope along d, times |d|:
+        // kept to about 3e-6 of the cube by C · |slope| >= 0.1 |d|.
+        const Vf chroma = hn::Sqrt(hn::Min(t_c2, p_c2));
         const Mf ill = hn::Or(hn::Or(hn::Lt(t_c2, min_chroma2), hn::Lt(p_c2, min_chroma2)),
                               hn::Or(hn::Lt(min_lms, min_lms_bound),
-                                     hn::Or(hn::Lt(hn::Abs(slope), hn::Mul(nrm, slow)),
+                                     hn::Or(hn::Lt(hn::Mul(chroma, hn::Abs(slope)), hn::Mul(nrm, slow)),
                                             hn::Lt(hn::Abs(hn::Sub(moved_error, best_error)), tie))));
         const Mf hard = hn::Or(Huge(r, g, b, huge),
                                hn::AndNot(grey, hn::Or(hn::Gt(near_count, hn::Set(d, 1.0f)), ill)));
