@@ -134,9 +134,12 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
         const auto face_b = take_b;
         const auto face_g = hn::AndNot(take_b, take_g);
         const auto face_r = hn::AndNot(hn::Or(take_g, take_b), cross_r);
-        V rr = hn::IfThenElse(grey, w, on_face(hn::Add(w, hn::Mul(s, er)), face_r, low_r, zero, max));
-        V gg = hn::IfThenElse(grey, w, on_face(hn::Add(w, hn::Mul(s, eg)), face_g, low_g, zero, max));
-        V bb = hn::IfThenElse(grey, w, on_face(hn::Add(w, hn::Mul(s, eb)), face_b, low_b, zero, max));
+        V rr = on_face(hn::Add(w, hn::Mul(s, er)), face_r, low_r, zero, max);
+        V gg = on_face(hn::Add(w, hn::Mul(s, eg)), face_g, low_g, zero, max);
+        V bb = on_face(hn::Add(w, hn::Mul(s, eb)), face_b, low_b, zero, max);
+        rr = hn::IfThenElse(grey, w, rr);
+        gg = hn::IfThenElse(grey, w, gg);
+        bb = hn::IfThenElse(grey, w, bb);
         // The lanes kept inside [0, max]³, and in-gamut lanes (if any) unchanged.
         rr = clamp_clipped(rr, zero, max);
         gg = clamp_clipped(gg, zero, max);

@@ -14,9 +14,9 @@
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE __BASE_FILE__
+#include <hwy/contrib/math/math-inl.h>
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
-#include <hwy/contrib/math/math-inl.h>
 
 #include "simd_common-inl.h"
 
@@ -46,8 +46,8 @@ constexpr std::size_t max_lanes = HWY_MAX_BYTES / sizeof(float);
 /// the hard lanes, store, then the hard lanes recomputed by the double reference. The input is
 /// kept in registers, so `in` may equal `out`.
 template <class Body>
-std::size_t RunKernel(const GamutClipper& clipper, const float* in, float* out,
-                      std::size_t colours, const Body& body) {
+std::size_t RunKernel(const GamutClipper& clipper, const float* in, float* out, std::size_t colours,
+                      const Body& body) {
     const Df d;
     const std::size_t n = hn::Lanes(d);
     std::size_t i = 0;
@@ -93,7 +93,9 @@ HWY_INLINE Mf Outside(Vf r, Vf g, Vf b, Vf zero, Vf max) {
     return hn::Or(low, high);
 }
 
-HWY_INLINE Vf Clamp(Vf v, Vf zero, Vf max) { return hn::Min(hn::Max(v, zero), max); }
+HWY_INLINE Vf Clamp(Vf v, Vf zero, Vf max) {
+    return hn::Min(hn::Max(v, zero), max);
+}
 
 /// The float parameters of the thesis' RGB clip (smits_clip_rgb).
 struct SmitsParams {
@@ -101,10 +103,12 @@ struct SmitsParams {
 };
 HWY_INLINE SmitsParams LoadSmits(Df d, const Gamut& gamut) {
     const Vec3& l = gamut.luminance_row();
-    return {hn::Set(d, static_cast<float>(l[0])), hn::Set(d, static_cast<float>(l[1])),
+    return {hn::Set(d, static_cast<float>(l[0])),
+            hn::Set(d, static_cast<float>(l[1])),
             hn::Set(d, static_cast<float>(l[2])),
             hn::Set(d, static_cast<float>(1.0 / (l[0] + l[1] + l[2]))),
-            hn::Set(d, static_cast<float>(gamut.max())), hn::Zero(d)};
+            hn::Set(d, static_cast<float>(gamut.max())),
+            hn::Zero(d)};
 }
 
 /// smits_clip_rgb in float (with divisions: only within 1e-5 of the reference is needed here),
@@ -166,7 +170,8 @@ std::size_t ClipSmitsXyz(const GamutClipper& clipper, const float* in, float* ou
                          std::size_t colours) {
     const Df d;
     const Mat3& m = clipper.rgb_to_xyz();
-    const Vf m10 = hn::Set(d, static_cast<float>(m[1][0])), m11 = hn::Set(d, static_cast<float>(m[1][1])),
+    const Vf m10 = hn::Set(d, static_cast<float>(m[1][0])),
+             m11 = hn::Set(d, static_cast<float>(m[1][1])),
              m12 = hn::Set(d, static_cast<float>(m[1][2]));
     const Vf inv_wy = hn::Set(d, static_cast<float>(1.0 / clipper.white_xyz().Y));
     const Vf zero = hn::Zero(d), one = hn::Set(d, 1.0f);
@@ -250,7 +255,8 @@ std::size_t ClipLuvLightnessHue(const GamutClipper& clipper, const float* in, fl
             const Vf n1 = hn::MulAdd(a[i], u, hn::MulAdd(bcoef[i], v, c[i]));
             // Lower face: n0 + s (n1 − n0) >= 0.
             const Mf lower = hn::And(hn::Lt(n1, zero), hn::Gt(n0[i], zero));
-            limit = hn::IfThenElse(lower, hn::Min(limit, hn::Div(n0[i], hn::Sub(n0[i], n1))), limit);
+            limit =
+                hn::IfThenElse(lower, hn::Min(limit, hn::Div(n0[i], hn::Sub(n0[i], n1))), limit);
             // Upper face: y N(s) − 4 max v'(s) <= 0.
             const Vf g0 = hn::MulAdd(Y, n0[i], g0k[i]);
             const Vf g1 = hn::NegMulAdd(four_max, v, hn::Mul(Y, n1));
@@ -261,9 +267,9 @@ std::size_t ClipLuvLightnessHue(const GamutClipper& clipper, const float* in, fl
         const Vf uu = hn::MulAdd(s, du, vnu), vv = hn::MulAdd(s, dv, vnv);
         const Vf y_over_4v = hn::Div(Y, hn::Mul(hn::Set(d, 4.0f), vv));
         const Vf ox = hn::Mul(hn::Mul(hn::Set(d, 9.0f), uu), y_over_4v);
-        const Vf oz = hn::Mul(
-            hn::NegMulAdd(hn::Set(d, 20.0f), vv, hn::NegMulAdd(hn::Set(d, 3.0f), uu, hn::Set(d, 12.0f))),
-            y_over_4v);
+        const Vf oz = hn::Mul(hn::NegMulAdd(hn::Set(d, 20.0f), vv,
+                                            hn::NegMulAdd(hn::Set(d, 3.0f), uu, hn::Set(d, 12.0f))),
+                              y_over_4v);
         Vf o0, o1, o2;
         simd::Mul3(to_rgb, ox, Y, oz, o0, o1, o2);
         const Mf black = hn::Le(Y, zero), white_lane = hn::Ge(Y, white_y);
@@ -278,8 +284,8 @@ std::size_t ClipLuvLightnessHue(const GamutClipper& clipper, const float* in, fl
         // Within 1e-4 max of the cube the reference moves a colour by a few times its distance
         // (boundary_test); float's round trip through u'v' would add about 1e-6.
         const Mf near = hn::Not(Outside(r, g, b, hn::Neg(near_tol), hn::Add(max, near_tol)));
-        const Mf hard = hn::Or(hn::Or(Huge(r, g, b, huge), near),
-                               hn::AndNot(grey, hn::Le(den, no_chroma)));
+        const Mf hard =
+            hn::Or(hn::Or(Huge(r, g, b, huge), near), hn::AndNot(grey, hn::Le(den, no_chroma)));
         return hn::And(outside, hard);
     });
 }
@@ -342,7 +348,8 @@ std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, flo
             const Mf near = hn::Or(hn::Le(p[k], edge), hn::Ge(p[k], hn::Sub(max, edge)));
             near_count = hn::Add(near_count, hn::IfThenElseZero(near, hn::Set(d, 1.0f)));
         }
-        const Mf black = hn::And(hn::Eq(p[0], zero), hn::And(hn::Eq(p[1], zero), hn::Eq(p[2], zero)));
+        const Mf black =
+            hn::And(hn::Eq(p[0], zero), hn::And(hn::Eq(p[1], zero), hn::Eq(p[2], zero)));
         const Mf white = hn::And(hn::Eq(p[0], max), hn::And(hn::Eq(p[1], max), hn::Eq(p[2], max)));
         const Mf grey = hn::Or(black, white);
         // Oklab of the target (the input) and of p, and the hue error of p.
@@ -356,14 +363,18 @@ std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, flo
         simd::Mul3(M.m2, rl, rm, rs, pl, pa, pb);
         const Vf t_c2 = hn::MulAdd(ta, ta, hn::Mul(tb, tb));
         const Vf p_c2 = hn::MulAdd(pa, pa, hn::Mul(pb, pb));
-        const Vf dh = Atan2(d, hn::NegMulAdd(pb, ta, hn::Mul(pa, tb)), hn::MulAdd(pa, ta, hn::Mul(pb, tb)));
+        const Vf dh =
+            Atan2(d, hn::NegMulAdd(pb, ta, hn::Mul(pa, tb)), hn::MulAdd(pa, ta, hn::Mul(pb, tb)));
         const Vf best_error = hn::Abs(dh);
         // The face and its direction.
         Vf dvec[3] = {zero, zero, zero};
         Vf nrm = hn::Set(d, 1.0f);
         for (int k = 0; k < 3; ++k) {
             for (int j = 0; j < 3; ++j) {
-                dvec[j] = hn::IfThenElse(on[k], hn::Set(d, dir[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)]), dvec[j]);
+                dvec[j] = hn::IfThenElse(
+                    on[k],
+                    hn::Set(d, dir[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)]),
+                    dvec[j]);
             }
             nrm = hn::IfThenElse(on[k], hn::Set(d, norm[static_cast<std::size_t>(k)]), nrm);
         }
@@ -406,10 +417,11 @@ std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, flo
         // The step's float error, about 3e-7/C rad of hue over the slope along d, times |d|:
         // kept to about 3e-6 of the cube by C · |slope| >= 0.1 |d|.
         const Vf chroma = hn::Sqrt(hn::Min(t_c2, p_c2));
-        const Mf ill = hn::Or(hn::Or(hn::Lt(t_c2, min_chroma2), hn::Lt(p_c2, min_chroma2)),
-                              hn::Or(hn::Lt(min_lms, min_lms_bound),
-                                     hn::Or(hn::Lt(hn::Mul(chroma, hn::Abs(slope)), hn::Mul(nrm, slow)),
-                                            hn::Lt(hn::Abs(hn::Sub(moved_error, best_error)), tie))));
+        const Mf ill =
+            hn::Or(hn::Or(hn::Lt(t_c2, min_chroma2), hn::Lt(p_c2, min_chroma2)),
+                   hn::Or(hn::Lt(min_lms, min_lms_bound),
+                          hn::Or(hn::Lt(hn::Mul(chroma, hn::Abs(slope)), hn::Mul(nrm, slow)),
+                                 hn::Lt(hn::Abs(hn::Sub(moved_error, best_error)), tie))));
         const Mf hard = hn::Or(Huge(r, g, b, huge),
                                hn::AndNot(grey, hn::Or(hn::Gt(near_count, hn::Set(d, 1.0f)), ill)));
         return hn::And(outside, hard);
@@ -427,7 +439,8 @@ std::size_t ClipSmitsSoft(const GamutClipper& clipper, const float* in, float* o
     const SmitsParams P = LoadSmits(d, clipper.gamut());
     const std::array<double, 16>& k = clipper.derived();
     const Vf thr = hn::Set(d, static_cast<float>(k[0])), lim = hn::Set(d, static_cast<float>(k[1]));
-    const Vf pw = hn::Set(d, static_cast<float>(k[2])), scale = hn::Set(d, static_cast<float>(k[3]));
+    const Vf pw = hn::Set(d, static_cast<float>(k[2])),
+             scale = hn::Set(d, static_cast<float>(k[3]));
     const Vf inv_scale = hn::Set(d, static_cast<float>(1.0 / k[3]));
     const Vf inv_pw = hn::Set(d, static_cast<float>(k[4]));
     const bool inverse = clipper.inverse();

@@ -51,10 +51,11 @@ void GamutClipper::prepare_smits_soft() {
     const double base = std::pow((1.0 - threshold) / (limit - threshold), -power) - 1.0;
     const double scale = (limit - threshold) / std::pow(base, 1.0 / power);
     if (!(std::isfinite(base) && base > 0.0 && std::isfinite(scale) && scale > 0.0)) {
-        throw Error("method smits-soft: threshold " + format_shortest(threshold) + ", limit " +
-                    format_shortest(limit) + " and power " + format_shortest(power) +
-                    " give no finite compression curve (((1 - threshold)/(limit - threshold))^-power"
-                    " overflows); lower the power or bring the limit nearer the threshold");
+        throw Error(
+            "method smits-soft: threshold " + format_shortest(threshold) + ", limit " +
+            format_shortest(limit) + " and power " + format_shortest(power) +
+            " give no finite compression curve (((1 - threshold)/(limit - threshold))^-power"
+            " overflows); lower the power or bring the limit nearer the threshold");
     }
     m_derived = {};
     m_derived[0] = threshold;

@@ -33,7 +33,8 @@ Ray ray(const Gamut& g, const Rgb& c) {
     const double w = luminance(g, c) / (l[0] + l[1] + l[2]);
     const double max = g.max();
     double r = 0.0;
-    for (const double v : {c.r, c.g, c.b}) r = std::max(r, v > w ? (v - w) / (max - w) : (w - v) / w);
+    for (const double v : {c.r, c.g, c.b})
+        r = std::max(r, v > w ? (v - w) / (max - w) : (w - v) / w);
     return {w, r};
 }
 
@@ -124,8 +125,9 @@ TEST(SmitsSoft, FollowsTheClosedFormOfTheCurveAtPowerOne) {
     // s = (l − t)(1 − t)/(l − 1) (from f(l) = 1); e.g. t = 0.5, l = 2: s = 0.75 and
     // f(1.25) = 0.5 + 0.75 · 1/2 = 0.875.
     const Gamut gamut(srgb());
-    const GamutClipper clipper(ClipMethod::smits_soft, gamut,
-                               ClipSettings{}.set("threshold", 0.5).set("limit", 2.0).set("power", 1.0));
+    const GamutClipper clipper(
+        ClipMethod::smits_soft, gamut,
+        ClipSettings{}.set("threshold", 0.5).set("limit", 2.0).set("power", 1.0));
     for (const Vec3& d : directions(gamut, 200, 9)) {
         EXPECT_NEAR(ray(gamut, clipper.clip(at_distance(gamut, 0.5, d, 1.25))).r, 0.875, 1e-12);
         for (const double r : {0.6, 0.9, 1.3, 1.9}) {
@@ -141,7 +143,9 @@ TEST(SmitsSoft, CurveIsContinuousIncreasingAndSmoothAtTheThreshold) {
     const GamutClipper clipper(ClipMethod::smits_soft, gamut);
     const double t = clipper.parameter("threshold"), l = clipper.parameter("limit");
     const Vec3 d = directions(gamut, 1, 21)[0];
-    const auto f = [&](double r) { return ray(gamut, clipper.clip(at_distance(gamut, 0.3, d, r))).r; };
+    const auto f = [&](double r) {
+        return ray(gamut, clipper.clip(at_distance(gamut, 0.3, d, r))).r;
+    };
     double last = 0.0;
     for (int k = 1; k <= 2000; ++k) {
         const double r = 2.0 * l * k / 2000.0;
@@ -214,8 +218,9 @@ TEST(SmitsSoft, BlackAndWhiteAndNonFiniteInputs) {
 TEST(SmitsSoft, InconsistentParametersThrowNamingThem) {
     // Each value is in its range, but ((1 − 0.9999)/(1000 − 0.9999))^−100 overflows.
     try {
-        const GamutClipper c(ClipMethod::smits_soft, Gamut(srgb()),
-                             ClipSettings{}.set("threshold", 0.9999).set("limit", 1000.0).set("power", 100.0));
+        const GamutClipper c(
+            ClipMethod::smits_soft, Gamut(srgb()),
+            ClipSettings{}.set("threshold", 0.9999).set("limit", 1000.0).set("power", 100.0));
         FAIL() << "no throw";
     } catch (const Error& e) {
         const std::string m = e.what();
@@ -223,9 +228,12 @@ TEST(SmitsSoft, InconsistentParametersThrowNamingThem) {
         EXPECT_NE(m.find("limit"), std::string::npos) << m;
         EXPECT_NE(m.find("power"), std::string::npos) << m;
     }
-    EXPECT_THROW(GamutClipper(ClipMethod::smits_soft, Gamut(srgb()), ClipSettings{}.set("limit", 1.0)), Error);
-    EXPECT_NO_THROW(GamutClipper(ClipMethod::smits_soft, Gamut(srgb()),
-                                 ClipSettings{}.set("threshold", 0.0).set("limit", 1000.0).set("power", 100.0)));
+    EXPECT_THROW(
+        GamutClipper(ClipMethod::smits_soft, Gamut(srgb()), ClipSettings{}.set("limit", 1.0)),
+        Error);
+    EXPECT_NO_THROW(GamutClipper(
+        ClipMethod::smits_soft, Gamut(srgb()),
+        ClipSettings{}.set("threshold", 0.0).set("limit", 1000.0).set("power", 100.0)));
 }
 
 }  // namespace
