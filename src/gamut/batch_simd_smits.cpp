@@ -14,9 +14,12 @@
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE __BASE_FILE__
-#include <hwy/contrib/math/math-inl.h>
+// foreach_target.h first, then highway.h, then the -inl.h headers (not sorted).
+// clang-format off
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
+#include <hwy/contrib/math/math-inl.h>
+// clang-format on
 
 #include "simd_common-inl.h"
 
@@ -316,7 +319,6 @@ std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, flo
     const simd::OklabMatrices M = simd::LoadOklabMatrices(d, clipper);
     const SmitsParams P = LoadSmits(d, clipper.gamut());
     const Vec3& lum = clipper.gamut().luminance_row();
-    const double max_d = clipper.gamut().max();
     // The direction along face k that keeps the face and the luminance, d = e_k × (A, B, C),
     // and its length.
     std::array<std::array<float, 3>, 3> dir{};
