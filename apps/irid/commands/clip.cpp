@@ -111,12 +111,14 @@ int run_count_ops() {
     out +=
         "\nOperations per colour of the thesis' RGB clip, ours (thesis). Ours: counted by running "
         "the clip's code on a number type that counts its operations, for sRGB colours inside the "
-        "gamut and crossing one, two and three planes; additions include subtractions. Our "
-        "comparisons are the 6 outcode tests, 2 luminance tests (Y <= 0 gives black, a grey "
-        "above the maximum gives white) and one per crossed plane (keeping the largest "
-        "parameter). Thesis: Smits 1990, Table 1: 5-7 comparisons, 9-11 additions, 7 "
-        "multiplications, 1-3 divisions per clipped colour, shown here against one, two and "
-        "three crossed planes; an in-gamut colour costs only comparisons.\n";
+        "gamut and crossing one, two and three planes (red above 1, then green and blue below 0); "
+        "additions include subtractions. Ours compares the crossed planes' parameters by "
+        "cross-multiplication and divides once: 2 multiplications and 1 comparison per plane "
+        "after the first instead of a division per plane. Our comparisons are the 6 outcode "
+        "tests, 2 luminance tests (Y <= 0 gives black, a grey above the maximum gives white) and "
+        "one per plane after the first. Thesis: Smits 1990, Table 1: 5-7 comparisons, 9-11 "
+        "additions, 7 multiplications, 1-3 divisions per clipped colour, shown here against one, "
+        "two and three crossed planes; an in-gamut colour costs only comparisons.\n";
     write_stdout(out);
     return exit_success;
 }

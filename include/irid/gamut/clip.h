@@ -86,9 +86,14 @@ enum class ClipMethod {
     oklab_adaptive,
     /// Ottosson 2021, "gamut_clip_adaptive_L0_L_cusp": the same around the cusp's lightness.
     oklab_cusp,
-    /// The thesis' direction (constant Y, toward the grey of equal luminance) with a soft
-    /// compression instead of the hard stop: nothing inside the threshold moves, the boundary is
-    /// reached at the limit (parameters threshold, limit, power).
+    /// The thesis' direction (constant Y, toward the grey w of equal luminance) with a soft
+    /// compression instead of the hard stop (smits_soft.cpp). The relative distance
+    /// r = max_i of (c_i − w)/(max − w) for c_i > w and (w − c_i)/w for c_i < w (1 where the ray
+    /// from w through c leaves the cube) becomes r' = r up to `threshold` (nothing inside it
+    /// moves), ACES 1.3's power curve (`power`) above it, reaching 1 (the boundary) exactly at
+    /// `limit`, and 1 (smits' own answer) beyond; the output is w + (r'/r)(c − w), so luminance
+    /// is kept exactly. Y <= 0 → black, w >= max → white. The inverse undoes the curve for
+    /// r' < 1 and maps the boundary, and every colour beyond it along its ray, to the limit.
     smits_soft,
     /// ACES 1.3 Reference Gamut Compression (Academy LMT.Academy.ReferenceGamutCompress.ctl;
     /// OpenColorIO 2.1 FixedFunction ACES_GamutComp13), per channel in the linear RGB of the
@@ -166,37 +171,46 @@ private:
 /// `lum` is the luminance row (A, B, C), `inv_lum_sum` = 1/(A + B + C), `max` the cube's size.
 /// Steps: outcodes (a channel below 0 or above max); none → unchanged (comparisons only).
 /// Otherwise the grey of equal luminance w = (A r + B g + C b)/(A + B + C); Y <= 0 → black,
-/// w >= max → white; else for every channel out of range the parameter t of the segment
-/// c + t (w − c) where it meets that face, t = (c − bound)/(c − w), keeping the largest t (the
-/// intersection farthest from the input), and the point c + t (w − c), whose channel on that
-/// face is set exactly to the face's bound (0 or max) rather than to within rounding.
+/// w >= max → white; else the colour moves along the segment w + s (c − w), s from 1 (the
+/// colour) down to 0 (the grey): every channel out of range meets its face at
+/// s_i = (0 − w)/(c_i − w) = w/(w − c_i) below 0 and s_i = (max − w)/(c_i − w) above max, and
+/// the smallest s_i (the intersection farthest from the input, where the segment enters the
+/// cube) gives the point w + s (c − w), whose channel on that face is set exactly to the face's
+/// bound (0 or max) rather than to within rounding.
+///
+/// Each s_i is kept as a fraction n/d of two positive numbers (0 < w < max here): n = w,
+/// d = w − c_i below 0; n = max − w (computed once), d = c_i − w (the interpolation's own
+/// difference) above max. The first crossed channel is taken as it is; a later one replaces the
+/// kept N/D when n D < N d (cross-multiplication), and the one division s = N/D comes last.
+/// So a colour costs 1 division whatever the planes crossed, 2 multiplications and 1 comparison
+/// per crossed plane after the first, and 9 to 11 additions (Table 1, count_smits_operations).
+/// The products stay finite for every input below 3e32 (n <= max <= 1e6, d < 2 × 1.7e32), in
+/// particular for 1e30, what ±Inf becomes.
 template <class T>
 [[nodiscard]] std::array<T, 3> smits_clip_rgb(const std::array<T, 3>& c, const std::array<T, 3>& lum,
                                               const T& inv_lum_sum, const T& max) noexcept {
     const T zero(0.0);
-    const bool low0 = c[0] < zero, low1 = c[1] < zero, low2 = c[2] < zero;
-    const bool high0 = c[0] > max, high1 = c[1] > max, high2 = c[2] > max;
-    if (!(low0 || low1 || low2 || high0 || high1 || high2)) return c;
+    const bool low[3] = {c[0] < zero, c[1] < zero, c[2] < zero};
+    const bool high[3] = {c[0] > max, c[1] > max, c[2] > max};
+    if (!(low[0] || low[1] || low[2] || high[0] || high[1] || high[2])) return c;
     const T y = lum[0] * c[0] + lum[1] * c[1] + lum[2] * c[2];
     if (!(y > zero)) return {zero, zero, zero};
     const T w = y * inv_lum_sum;
     if (!(w < max)) return {max, max, max};
-    T t = zero;
-    int face = -1;  // the channel whose face gave the largest t
-    const bool low[3] = {low0, low1, low2};
-    const bool high[3] = {high0, high1, high2};
+    const std::array<T, 3> e{c[0] - w, c[1] - w, c[2] - w};
+    const T room = (high[0] || high[1] || high[2]) ? max - w : zero;
+    T num = zero, den = zero;  // the kept s = num/den
+    int face = -1;             // the channel whose face gave it
     for (int i = 0; i < 3; ++i) {
-        if (low[i]) {
-            const T ti = c[i] / (c[i] - w);  // (c − 0)/(c − w)
-            if (ti > t) t = ti, face = i;
-        } else if (high[i]) {
-            const T ti = (c[i] - max) / (c[i] - w);
-            if (ti > t) t = ti, face = i;
-        }
+        if (!(low[i] || high[i])) continue;
+        const T n = low[i] ? w : room;
+        const T d = low[i] ? w - c[i] : e[i];
+        if (face < 0 || n * den < num * d) num = n, den = d, face = i;
     }
-    std::array<T, 3> out{c[0] + t * (w - c[0]), c[1] + t * (w - c[1]), c[2] + t * (w - c[2])};
+    const T s = num / den;
+    std::array<T, 3> out{w + s * e[0], w + s * e[1], w + s * e[2]};
     // The point is on that face: say so exactly rather than to within rounding.
-    if (face >= 0) out[face] = low[face] ? zero : max;
+    out[face] = low[face] ? zero : max;
     return out;
 }
 
@@ -211,8 +225,9 @@ public:
 
     /// Clips linear RGB of the gamut's space. Every output is finite. In-gamut colours come back
     /// unchanged and every output is inside [0, max]³, except for the soft methods (which
-    /// compress colours beyond their threshold, inside or not) and for aces-rgc without clip=1
-    /// (whose curve, forward or inverse, may leave colours outside the cube, as OCIO's does).
+    /// compress colours beyond their threshold, inside or not), for aces-rgc without clip=1
+    /// (whose curve, forward or inverse, may leave colours outside the cube, as OCIO's does) and
+    /// for the inverse of smits-soft (confines_to_cube()).
     [[nodiscard]] Rgb clip(const Rgb& linear) const noexcept;
     /// The same on XYZ relative to the gamut's white (Y = max for the white), returning XYZ.
     /// For smits_xyz this is the thesis' XYZ form itself; the others go through RGB.
@@ -230,7 +245,8 @@ public:
         return m_parameters;
     }
     [[nodiscard]] bool inverse() const noexcept { return m_inverse; }
-    /// Whether outputs are confined to [0, max]³ (false only for aces-rgc without clip).
+    /// Whether outputs are confined to [0, max]³ (false only for aces-rgc without clip and for
+    /// the inverse of smits-soft, which expands toward the limit).
     [[nodiscard]] bool confines_to_cube() const noexcept { return m_confined; }
 
     // The transforms the batch kernels need (batch_*.cpp), built once here.
