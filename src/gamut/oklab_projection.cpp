@@ -36,9 +36,11 @@ using Cubic = std::array<double, 4>;  // c0 + c1 s + c2 s² + c3 s³
 double eval(const Cubic& c, double s) noexcept { return c[0] + s * (c[1] + s * (c[2] + s * c[3])); }
 
 /// The roots in [0, 1] of the cubic where it changes sign, in increasing order (at most three;
-/// returns how many): [0, 1] is cut at the derivative's roots into monotonic pieces and each
-/// piece whose ends have opposite signs is bisected to a double's resolution. A root where the
-/// cubic only touches 0 is skipped (it changes no side of a face).
+/// returns how many): [0, 1] is cut at the derivative's roots into monotonic pieces and the root
+/// of each piece whose ends have opposite signs is found to a double's resolution by Newton
+/// steps kept inside the shrinking bracket (bisection when a step would leave it), to the
+/// bracket's end beyond the root. A root where the cubic only touches 0 is skipped (it changes
+/// no side of a face).
 int sign_changes(const Cubic& c, std::array<double, 3>& roots) noexcept {
     std::array<double, 4> cuts{0.0, 1.0, 1.0, 1.0};
     int n = 1;
@@ -63,10 +65,30 @@ int sign_changes(const Cubic& c, std::array<double, 3>& roots) noexcept {
         double lo = cuts[static_cast<std::size_t>(k)], hi = cuts[static_cast<std::size_t>(k + 1)];
         const bool negative_at_lo = eval(c, lo) < 0.0;
         if (negative_at_lo == (eval(c, hi) < 0.0)) continue;
+        double x = 0.5 * (lo + hi);
+        bool settled = false;  // once Newton has settled, bisection closes the bracket
         for (int it = 0; it < 200; ++it) {
+            const double fx = eval(c, x);
+            ((fx < 0.0) == negative_at_lo ? lo : hi) = x;
             const double mid = 0.5 * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            ((eval(c, mid) < 0.0) == negative_at_lo ? lo : hi) = mid;
+            if (mid <= lo || mid >= hi) break;  // lo and hi adjacent doubles
+            double next = mid;
+            if (!settled) {
+                const double slope = c[1] + x * (2.0 * c[2] + 3.0 * x * c[3]);
+                const double newton = x - fx / slope;
+                if (newton > lo && newton < hi) next = newton;
+                if (std::abs(next - x) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(x)) {
+                    settled = true;
+                    // Bracket the settled point tightly, then bisect what is left.
+                    const double e = 8.0 * std::numeric_limits<double>::epsilon() * std::abs(x);
+                    const double below = std::max(lo, next - e), above = std::min(hi, next + e);
+                    ((eval(c, below) < 0.0) == negative_at_lo ? lo : hi) = below;
+                    ((eval(c, above) < 0.0) == negative_at_lo ? lo : hi) = above;
+                    next = 0.5 * (lo + hi);
+                    if (next <= lo || next >= hi) break;
+                }
+            }
+            x = next;
         }
         roots[static_cast<std::size_t>(found++)] = hi;
     }
