@@ -401,8 +401,10 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             be = hn::Mul(hn::Set(d, 6.0f), be);
             ga = hn::Mul(hn::Set(d, 3.0f), ga);
             f0[ch] = v0;
-            // The grey must be clearly inside.
-            hard = hn::Or(hard, hn::Not(hn::Gt(v0, near)));
+            // The grey must be inside, and not within `near` of max (near the white's L on
+            // Display P3 and Adobe RGB the neutral axis leaves the cube). Its channels are all
+            // about (L0 / L_white)³ max, so a positive one is positive, however dark.
+            hard = hn::Or(hard, hn::Not(hn::Gt(v0, zero)));
             hard = hn::Or(hard, hn::Not(hn::Lt(v0, hn::Sub(s.max, near))));
             // Derivative roots (stable form), kept when finite and in (0, 1), else 0.
             const V disc = hn::Sub(hn::Mul(be, be), hn::Mul(hn::Set(d, 4.0f), hn::Mul(al, ga)));
@@ -491,7 +493,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             bound = hn::IfThenElse(hn::And(on, leaves_high[ch]), s.max, bound);
         }
         // Exits nearly tangent to the face (the root ill-conditioned), and anything not finite.
-        hard = hn::Or(hard, hn::Lt(hn::Mul(hn::Set(d, 16.0f), slope), total));
+        hard = hn::Or(hard, hn::Lt(hn::Mul(hn::Set(d, 1024.0f), slope), total));
         hard = hn::Or(hard, hn::Not(hn::IsFinite(t)));
         // The point at t (the final step in double), its exit channel exactly on its bound,
         // inside [0, max]³.
