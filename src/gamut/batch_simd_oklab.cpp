@@ -484,7 +484,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             next = hn::IfThenElse(inside_bracket, next, hn::Mul(half, hn::Add(lo, hi)));
             const V step = hn::Abs(hn::Sub(next, t));
             t = next;
-            const M moving = hn::And(active, hn::Gt(step, hn::Mul(hn::Set(d, 1e-6f), t)));
+            const M moving = hn::And(active, hn::Gt(step, hn::Mul(hn::Set(d, 1e-4f), t)));
             if (hn::AllFalse(d, moving)) break;
         }
         V bound = zero;
