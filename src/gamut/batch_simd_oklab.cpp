@@ -386,7 +386,8 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
         // Classification of each channel (step 1).
         const V c1[3] = {r, g, b};
         V f0[3];
-        M leaves[3], leaves_high[3];
+        V first_out[3], value_out[3];  // where each channel is first seen out, and its value there
+        M leaves[3], leaves_high[3], returns[3];
         for (int ch = 0; ch < 3; ++ch) {
             // f' = α + β t + γ t²: α = 3 Σ F Q P², β = 6 Σ F Q² P, γ = 3 Σ F Q³.
             V al = zero, be = zero, ga = zero, v0 = zero;
@@ -433,23 +434,44 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             const auto breaks = [&](const State& a, const State& next) {
                 return hn::Or(hn::AndNot(next.low, a.low), hn::AndNot(next.high, a.high));
             };
-            hard = hn::Or(hard, hn::Or(breaks(x1, x2), breaks(x2, x3)));
-            leaves[ch] = hn::Or(x3.low, x3.high);
-            leaves_high[ch] = x3.high;
+            returns[ch] = hn::Or(breaks(x1, x2), breaks(x2, x3));
+            const M out1 = hn::Or(x1.low, x1.high), out2 = hn::Or(x2.low, x2.high);
+            leaves[ch] = hn::Or(hn::Or(out1, out2), hn::Or(x3.low, x3.high));
+            // The side it first leaves through, where it is first seen out and its value there.
+            leaves_high[ch] = hn::Or(x1.high, hn::AndNot(out1, hn::Or(x2.high, hn::AndNot(out2, x3.high))));
+            first_out[ch] = hn::IfThenElse(out1, t1, hn::IfThenElse(out2, t2, one));
+            value_out[ch] = hn::IfThenElse(out1, v1, hn::IfThenElse(out2, v2, c1[ch]));
+        }
+        // A channel that leaves and comes back: the segment's first exit is still where it last
+        // leaves the cube when another channel, which leaves for good, is out from a point
+        // o_j at or before the returning channel's first-out point o_i (then some channel is out
+        // all along from the first exit to the colour). The search is then kept to [0, o_i],
+        // where every channel crosses its bound at most once. Otherwise the lane is hard.
+        V for_good = hn::Set(d, 2.0f), hi0 = one;
+        for (int ch = 0; ch < 3; ++ch) {
+            const M good = hn::AndNot(returns[ch], leaves[ch]);
+            for_good = hn::IfThenElse(hn::And(good, hn::Lt(first_out[ch], for_good)),
+                                      first_out[ch], for_good);
+        }
+        for (int ch = 0; ch < 3; ++ch) {
+            hard = hn::Or(hard, hn::AndNot(hn::Le(for_good, first_out[ch]), returns[ch]));
+            hi0 = hn::IfThenElse(hn::And(returns[ch], hn::Lt(first_out[ch], hi0)), first_out[ch],
+                                 hi0);
         }
         // Step 2: the root of E(t) = max over leaving channels of their excess.
         const V minus_big = hn::Set(d, -1e30f);
         V t = one;
         for (int ch = 0; ch < 3; ++ch) {
-            // Chord estimate (bound − f(0)) / (f(1) − f(0)) of each leaving channel.
+            // Chord estimate o (bound − f(0)) / (f(o) − f(0)) of each leaving channel, o its
+            // first-out point.
             const V bound = hn::IfThenElse(leaves_high[ch], s.max, zero);
-            const V denom = hn::Sub(c1[ch], f0[ch]);
+            const V denom = hn::Sub(value_out[ch], f0[ch]);
             const V safe = hn::IfThenElse(hn::Eq(denom, zero), one, denom);
-            const V est = hn::Div(hn::Sub(bound, f0[ch]), safe);
+            const V est = hn::Mul(first_out[ch], hn::Div(hn::Sub(bound, f0[ch]), safe));
             t = hn::IfThenElse(hn::And(leaves[ch], hn::Lt(est, t)), est, t);
         }
-        t = hn::Min(hn::Max(t, zero), one);
-        V lo = zero, hi = one;
+        t = hn::Min(hn::Max(t, zero), hi0);
+        V lo = zero, hi = hi0;
         const M active = hn::AndNot(hn::Or(hn::Or(black, white), hard), outside);
         V excess = zero, slope = one, total = one;
         V exit_ch = zero;
