@@ -3,26 +3,35 @@
 //
 // All three move an out-of-gamut colour along the segment from (L0, 0, 0) to its Oklab (L, a, b)
 // and stop where it last leaves the cube (oklab: L0 = L; oklab-adaptive: Ottosson's L0 around
-// half the white's L; oklab-cusp: around the cusp's L). Along (L0 + t (L − L0), t a, t b) each RGB
-// channel is a cubic in t, f_i(t) = Σ_j lms_to_rgb_ij (P_j + t Q_j)³. Per lane, in float:
-// 1. Each channel's cubic is classified from its values at t = 0 (the grey, which must be
-//    inside), at its derivative's roots in (0, 1) and at t = 1 (the colour itself). Between
-//    those points it is monotonic, so the values tell exactly whether the channel's inside set is
-//    [0, b_i] (it leaves once and never comes back): the "easy" case. Then the segment's exit is
-//    min b_i, the single root of E(t) = max over the leaving channels of their excess (negative
-//    before, positive after).
-// 2. E's root by Newton steps safeguarded by bisection of the bracket [0, 1], from the chord
-//    estimate; the exit channel is then set exactly to its bound.
-// 3. Lanes that are hard are recomputed by the double reference (GamutClipper::clip): a channel
-//    that comes back or whose extremum is within 1e-5 max of a bound, a grey outside or within
-//    rounding of a face (near the white's L on Display P3 and Adobe RGB), a colour within 2 ×
-//    the rounding tolerance of the cube (clip.h's rule), L within 1e-5 of 0 or of the white's,
-//    a chroma over 16 times the white's L, an exit where the leaving channel's slope is under
-//    1/32 of the channels' total (its root would be ill-conditioned in float), and for
-//    oklab-cusp a cusp not at S_max or whose Halley iteration did not settle.
+// half the white's L; oklab-cusp: around the cusp's L), as their double references do
+// (GamutClipper::oklab in clip.cpp, oklab_projection.cpp). Along (L0 + t (L − L0), t a, t b) each
+// RGB channel is a cubic in t, f_i(t) = Σ_j lms_to_rgb_ij (P_j + t Q_j)³. Per lane, in float:
+// 1. Each channel's cubic is sampled at t = 0 (the grey, which must be inside), at its
+//    derivative's roots in (0, 1) and at t = 1 (the colour itself). Between those points it is
+//    monotonic, so the samples say whether it leaves once for good (its inside set is [0, b_i])
+//    or leaves and comes back. When every channel that leaves does so for good, the exit is
+//    min b_i; a channel that comes back is allowed when another channel, out for good, is out
+//    from a sample at or before the returning one's first out sample (some channel is then out
+//    all the way from the first exit to the colour), and the search is kept before that sample.
+// 2. The exit by Newton steps on the leaving channels (the smallest step of theirs, kept in the
+//    bracket, else bisection), from the chord estimate, to 1e-4 relative; then, in double, the
+//    colour's Oklab (a Newton step on each float cube root), L0, one Newton step on the exit
+//    channel and the point's RGB, its exit channel set exactly to its bound and the whole clamped
+//    to [0, max]³. (In float alone the channels' rounding near the bound, 1e-6 max where their
+//    terms cancel, would move the exit by 1e-6 max / f'.)
+// 3. Hard lanes are recomputed by the double reference (GamutClipper::clip): a channel coming
+//    back without the condition above, an interior extremum within 1e-5 max of a bound, a grey
+//    not inside or within 1e-5 max of max (near the white's L on Display P3 and Adobe RGB), a
+//    colour within 2 × the rounding tolerance of the cube (clip.h's rule, tested first), L within
+//    1e-5 of 0 or of the white's, a chroma over 16 times the white's L, an exit where the leaving
+//    channel's slope is under 1/1024 of the channels' total (nearly tangent), a non-finite t, and
+//    for oklab-cusp a cusp whose Halley iteration did not settle or that is not at S_max.
 // The cusp (oklab-cusp): the zero channel of the hue's sector (m_derived, see
 // prepare_oklab_projection), its S_max by four Halley steps on that channel's cubic in S from
 // the per-gamut linear fit, then L_cusp = cbrt(max / largest channel at (1, S_max a', S_max b')).
+// Where prepare_oklab_projection found the sectors' structure does not hold (ACES2065-1, whose
+// blue primary has a negative Oklab L), the oklab-cusp kernel leaves every colour to the double
+// reference (returns 0).
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE __BASE_FILE__
@@ -509,10 +518,10 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             const M moving = hn::And(active, hn::Gt(step, hn::Mul(hn::Set(d, 1e-4f), t)));
             if (hn::AllFalse(d, moving)) break;
         }
-        V bound = zero;
+        V exit_bound = zero;
         for (int ch = 0; ch < 3; ++ch) {
             const M on = hn::Eq(exit_ch, hn::Set(d, static_cast<float>(ch)));
-            bound = hn::IfThenElse(hn::And(on, leaves_high[ch]), s.max, bound);
+            exit_bound = hn::IfThenElse(hn::And(on, leaves_high[ch]), s.max, exit_bound);
         }
         // Exits nearly tangent to the face (the root ill-conditioned), and anything not finite.
         hard = hn::Or(hard, hn::Lt(hn::Mul(hn::Set(d, 1024.0f), slope), total));
@@ -520,7 +529,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
         // The point at t (the final step in double), its exit channel exactly on its bound,
         // inside [0, max]³.
         V res[3];
-        Exact3<kind>(exact, r, g, b, L, A, B, centre, t, exit_ch, bound, res);
+        Exact3<kind>(exact, r, g, b, L, A, B, centre, t, exit_ch, exit_bound, res);
         for (int ch = 0; ch < 3; ++ch) {
             const M on = hn::Eq(exit_ch, hn::Set(d, static_cast<float>(ch)));
             const V bound = hn::IfThenElse(leaves_high[ch], s.max, zero);

@@ -76,7 +76,7 @@ double hue_angle(double a, double b, double a2, double b2) {
 
 /// The cusp's L of the hue (a, b) found independently: the largest chroma, among the points of
 /// that hue and L > 0 on the six cube edges from a primary to a secondary (one channel 0, one at max),
-/// each edge scanned in 4096 steps and the crossings of the hue refined by bisection.
+/// each edge scanned in 1024 steps and the crossings of the hue refined by bisection.
 double edge_cusp_l(const GamutClipper& clipper, double a, double b) {
     const double max = clipper.gamut().max();
     double best_c = -1.0, best_l = 0.0;
@@ -95,7 +95,7 @@ double edge_cusp_l(const GamutClipper& clipper, double a, double b) {
                 const Oklab p = point(x);
                 return hue_angle(a, b, p.a, p.b);
             };
-            constexpr int steps = 4096;
+            constexpr int steps = 1024;
             double prev = side(0.0);
             for (int k = 1; k <= steps; ++k) {
                 const double x = max * k / steps;
