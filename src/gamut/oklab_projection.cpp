@@ -302,7 +302,23 @@ Rgb GamutClipper::oklab_projection(const Rgb& c, bool around_cusp) const noexcep
     const double alpha = m_parameters[0].second;
     const double l0 = oklab_adaptive_l0(lab.L, chroma, l_centre, m_white_oklab_l, alpha);
     const double t = oklab_segment_exit(l0, lab);
-    return from_oklab({l0 + t * (lab.L - l0), t * lab.a, t * lab.b});
+    Rgb out = from_oklab({l0 + t * (lab.L - l0), t * lab.a, t * lab.b});
+    // The point is on a face to within rounding (a few ulps): put the channel nearest its bound
+    // exactly on it.
+    double* channels[3] = {&out.r, &out.g, &out.b};
+    double nearest = 1e-9 * max, bound = 0.0;
+    double* on_face = nullptr;
+    for (double* v : channels) {
+        for (const double b : {0.0, max}) {
+            if (std::abs(*v - b) < nearest) {
+                nearest = std::abs(*v - b);
+                bound = b;
+                on_face = v;
+            }
+        }
+    }
+    if (on_face != nullptr) *on_face = bound;
+    return out;
 }
 
 // m_derived of oklab-adaptive and oklab-cusp (read by the SIMD kernels, batch_simd_oklab.cpp):
