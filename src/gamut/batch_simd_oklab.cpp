@@ -21,9 +21,9 @@
 //    terms cancel, would move the exit by 1e-6 max / f'.)
 // 3. Hard lanes are recomputed by the double reference (GamutClipper::clip): a channel coming
 //    back without the condition above, an interior extremum within 1e-5 max of a bound, a grey
-//    not inside or within 1e-5 max of max (near the white's L on Display P3 and Adobe RGB), a
-//    colour within 2 × the rounding tolerance of the cube (clip.h's rule, tested first), L within
-//    1e-5 of 0 or of the white's, a chroma over 16 times the white's L, an exit where the leaving
+//    not inside or within 1e-4 max of max (near the white's L; on Display P3 and Adobe RGB the
+//    neutral axis leaves the cube there), a colour within 2 × the rounding tolerance of the cube
+//    (clip.h's rule, tested first), L within 1e-5 of 0 or 1e-4 of the white's, a chroma over 16 times the white's L, an exit where the leaving
 //    channel's slope is under 1/1024 of the channels' total (nearly tangent), a non-finite t, and
 //    for oklab-cusp a cusp whose Halley iteration did not settle or that is not at S_max.
 // The cusp (oklab-cusp): the zero channel of the hue's sector (m_derived, see
@@ -189,17 +189,20 @@ HWY_INLINE State StateOf(V v, V zero, V max) { return {hn::Lt(v, zero), hn::Gt(v
 /// The double constants of the final step.
 struct Exact {
     std::array<double, 9> to_lms, lms, m2, m2i;
-    double white_l, alpha;
+    double white_l, alpha, max;
 };
 
 /// The final step in double, on one half of the lanes: the colour's Oklab (the float one
 /// polished by a Newton step on each cube root), Ottosson's L0 around `centre` (or L0 = L), one
-/// Newton step on the exit channel's cubic f(t) − bound from the float t, and in `c` the RGB of
-/// the point at that t. Float's rounding of the channels near the bound (their terms cancel to
+/// Newton step from the float t on each leaving channel's cubic f_i(t) − bound_i (side[i] +1
+/// leaving through max, −1 through 0, 0 not leaving), the smallest kept (two channels may leave
+/// within rounding of each other, at a corner), and in `c` the RGB of the point at that t, in
+/// `exit` the channel that gave it (−1 when none was near its root: the lane is then hard). Float's rounding of the channels near the bound (their terms cancel to
 /// about 1e-6 max) would otherwise move t, and with it the other channels, by 1e-6 max / f'.
 template <Projection kind, class DD>
 HWY_INLINE void ExactHalf(DD dd, const Exact& x, hn::Vec<DD> c[3], hn::Vec<DD> lab[3],
-                          hn::Vec<DD> centre, hn::Vec<DD> t, hn::Vec<DD> exit, hn::Vec<DD> bound) {
+                          hn::Vec<DD> centre, hn::Vec<DD> t, const hn::Vec<DD> side[3],
+                          hn::Vec<DD>& exit) {
     using VD = hn::Vec<DD>;
     const auto mul3 = [&](const std::array<double, 9>& m, const VD v[3], VD o[3]) {
         for (std::size_t i = 0; i < 3; ++i) {
@@ -260,30 +263,45 @@ HWY_INLINE void ExactHalf(DD dd, const Exact& x, hn::Vec<DD> c[3], hn::Vec<DD> l
     };
     VD f[3], df[3];
     channels(t, f, df);
-    VD fe = hn::Zero(dd), de = hn::Zero(dd);
+    const VD zero = hn::Zero(dd), max = hn::Set(dd, x.max);
+    VD best = hn::Set(dd, 2.0);
     for (std::size_t i = 0; i < 3; ++i) {
-        const auto on = hn::Eq(exit, hn::Set(dd, static_cast<double>(i)));
-        fe = hn::IfThenElse(on, f[i], fe);
-        de = hn::IfThenElse(on, hn::Mul(three, df[i]), de);
+        const auto high = hn::Gt(side[i], zero), low = hn::Lt(side[i], zero);
+        const VD e = hn::IfThenElse(high, hn::Sub(f[i], max), hn::Neg(f[i]));
+        const VD de = hn::Mul(three, hn::IfThenElse(high, df[i], hn::Neg(df[i])));
+        const auto rising = hn::And(hn::Or(high, low), hn::Gt(de, zero));
+        const VD cand = hn::Sub(t, hn::Div(e, hn::IfThenElse(rising, de, one)));
+        // Only a step within the float search's reach of t (1e-4 t, and float's rounding of the
+        // channels over a slope of at least 1/1024 of theirs), with room: a channel far from its
+        // own root is not the exit, and its step could undershoot anywhere.
+        const auto near_t = hn::Le(hn::Abs(hn::Sub(cand, t)),
+                                   hn::MulAdd(hn::Set(dd, 1e-3), t, hn::Set(dd, 1e-5)));
+        const auto take = hn::And(hn::And(rising, near_t), hn::Lt(cand, best));
+        best = hn::IfThenElse(take, cand, best);
+        exit = hn::IfThenElse(take, hn::Set(dd, static_cast<double>(i)), exit);
     }
-    const auto usable = hn::Gt(hn::Abs(de), hn::Zero(dd));
-    const VD step = hn::Div(hn::Sub(fe, bound), hn::IfThenElse(usable, de, one));
-    t = hn::IfThenElse(usable, hn::Sub(t, step), t);
+    // No channel near its root: exit −1, which makes the lane hard.
+    const auto found = hn::Lt(best, hn::Set(dd, 2.0));
+    t = hn::IfThenElse(found, best, t);
+    exit = hn::IfThenElse(found, exit, hn::Set(dd, -1.0));
     channels(t, c, df);
 }
 
 /// ExactHalf on whole float vectors, in two halves of doubles (one lane on the SCALAR target),
 /// the RGB of the exit point in `res`.
 template <Projection kind>
-HWY_INLINE void Exact3(const Exact& x, V r, V g, V b, V L, V A, V B, V centre, V t, V exit,
-                       V bound, V res[3]) {
+HWY_INLINE void Exact3(const Exact& x, V r, V g, V b, V L, V A, V B, V centre, V t,
+                       const V side[3], V& exit, V res[3]) {
     const D d;
 #if HWY_TARGET == HWY_SCALAR
     const hn::Rebind<double, D> dd;
     const auto p = [&](V v) { return hn::PromoteTo(dd, v); };
     hn::Vec<hn::Rebind<double, D>> c[3] = {p(r), p(g), p(b)}, lab[3] = {p(L), p(A), p(B)};
-    ExactHalf<kind>(dd, x, c, lab, p(centre), p(t), p(exit), p(bound));
+    const hn::Vec<hn::Rebind<double, D>> sd[3] = {p(side[0]), p(side[1]), p(side[2])};
+    auto e = p(exit);
+    ExactHalf<kind>(dd, x, c, lab, p(centre), p(t), sd, e);
     for (int i = 0; i < 3; ++i) res[i] = hn::DemoteTo(d, c[i]);
+    exit = hn::DemoteTo(d, e);
 #else
     const hn::Half<D> dh;
     const hn::Repartition<double, D> dd;
@@ -292,11 +310,15 @@ HWY_INLINE void Exact3(const Exact& x, V r, V g, V b, V L, V A, V B, V centre, V
     const auto hi = [&](V v) { return hn::PromoteTo(dd, hn::UpperHalf(dh, v)); };
     VD c_lo[3] = {lo(r), lo(g), lo(b)}, lab_lo[3] = {lo(L), lo(A), lo(B)};
     VD c_hi[3] = {hi(r), hi(g), hi(b)}, lab_hi[3] = {hi(L), hi(A), hi(B)};
-    ExactHalf<kind>(dd, x, c_lo, lab_lo, lo(centre), lo(t), lo(exit), lo(bound));
-    ExactHalf<kind>(dd, x, c_hi, lab_hi, hi(centre), hi(t), hi(exit), hi(bound));
+    const VD s_lo[3] = {lo(side[0]), lo(side[1]), lo(side[2])};
+    const VD s_hi[3] = {hi(side[0]), hi(side[1]), hi(side[2])};
+    VD e_lo = lo(exit), e_hi = hi(exit);
+    ExactHalf<kind>(dd, x, c_lo, lab_lo, lo(centre), lo(t), s_lo, e_lo);
+    ExactHalf<kind>(dd, x, c_hi, lab_hi, hi(centre), hi(t), s_hi, e_hi);
     for (int i = 0; i < 3; ++i) {
         res[i] = hn::Combine(d, hn::DemoteTo(dh, c_hi[i]), hn::DemoteTo(dh, c_lo[i]));
     }
+    exit = hn::Combine(d, hn::DemoteTo(dh, e_hi), hn::DemoteTo(dh, e_lo));
 #endif
 }
 
@@ -336,9 +358,14 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
     }
     exact.white_l = clipper.white_oklab_lightness();
     exact.alpha = kind == Projection::constant_l ? 0.0 : clipper.parameters()[0].second;
+    exact.max = max_d;
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = s.half;
     const V near = hn::Mul(hn::Set(d, 1e-5f), s.max);
     const V lw_margin = hn::Mul(hn::Set(d, 1e-5f), s.white_l);
+    // Within 1e-4 of the white (its L, or a grey channel of max) the exit is within a few 1e-2
+    // of the grey and ill-conditioned in float.
+    const V white_margin = hn::Mul(hn::Set(d, 1e-4f), s.white_l);
+    const V max_margin = hn::Mul(hn::Set(d, 1e-4f), s.max);
     const V big_c = hn::Mul(hn::Set(d, 16.0f), s.white_l);
     const V max_plus_tol = hn::Add(s.max, s.tol2);
     const V neg_tol = hn::Neg(s.tol2);
@@ -369,7 +396,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
                     hn::Le(b, max_plus_tol)));
         M hard = within_tol;
         hard = hn::Or(hard, hn::Lt(hn::Abs(L), lw_margin));
-        hard = hn::Or(hard, hn::Lt(hn::Abs(hn::Sub(L, s.white_l)), lw_margin));
+        hard = hn::Or(hard, hn::Lt(hn::Abs(hn::Sub(L, s.white_l)), white_margin));
         hard = hn::Or(hard, hn::Gt(C, big_c));
 
         // L0.
@@ -411,18 +438,19 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             be = hn::Mul(hn::Set(d, 6.0f), be);
             ga = hn::Mul(hn::Set(d, 3.0f), ga);
             f0[ch] = v0;
-            // The grey must be inside, and not within `near` of max (near the white's L on
+            // The grey must be inside, and not within 1e-4 max of max (near the white's L on
             // Display P3 and Adobe RGB the neutral axis leaves the cube). Its channels are all
             // about (L0 / L_white)³ max, so a positive one is positive, however dark.
             hard = hn::Or(hard, hn::Not(hn::Gt(v0, zero)));
-            hard = hn::Or(hard, hn::Not(hn::Lt(v0, hn::Sub(s.max, near))));
+            hard = hn::Or(hard, hn::Not(hn::Lt(v0, hn::Sub(s.max, max_margin))));
             // Derivative roots (stable form), kept when finite and in (0, 1), else 0.
             const V disc = hn::Sub(hn::Mul(be, be), hn::Mul(hn::Set(d, 4.0f), hn::Mul(al, ga)));
             const M real = hn::Gt(disc, zero);
             const V sq = hn::Sqrt(hn::IfThenElse(real, disc, zero));
             const V q = hn::Mul(hn::Set(d, -0.5f), hn::Add(be, hn::CopySign(sq, be)));
-            V ra = hn::Div(q, hn::IfThenElse(hn::Eq(ga, zero), one, ga));
-            V rb = hn::Div(al, hn::IfThenElse(hn::Eq(q, zero), one, q));
+            // (To about 1e-4 (the approximate reciprocal): the extremum's value is flat there.)
+            V ra = hn::Mul(q, hn::ApproximateReciprocal(hn::IfThenElse(hn::Eq(ga, zero), one, ga)));
+            V rb = hn::Mul(al, hn::ApproximateReciprocal(hn::IfThenElse(hn::Eq(q, zero), one, q)));
             const M ra_ok = hn::And(real, hn::And(hn::Not(hn::Eq(ga, zero)),
                                                   hn::And(hn::Gt(ra, zero), hn::Lt(ra, one))));
             const M rb_ok = hn::And(real, hn::And(hn::Not(hn::Eq(q, zero)),
@@ -476,7 +504,8 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             const V bound = hn::IfThenElse(leaves_high[ch], s.max, zero);
             const V denom = hn::Sub(value_out[ch], f0[ch]);
             const V safe = hn::IfThenElse(hn::Eq(denom, zero), one, denom);
-            const V est = hn::Mul(first_out[ch], hn::Div(hn::Sub(bound, f0[ch]), safe));
+            const V est = hn::Mul(first_out[ch], hn::Mul(hn::Sub(bound, f0[ch]),
+                                                         hn::ApproximateReciprocal(safe)));
             t = hn::IfThenElse(hn::And(leaves[ch], hn::Lt(est, t)), est, t);
         }
         t = hn::Min(hn::Max(t, zero), hi0);
@@ -503,7 +532,8 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
                 exit_ch = hn::IfThenElse(take, hn::Set(d, static_cast<float>(ch)), exit_ch);
                 total = hn::Add(total, hn::Abs(df[ch]));
                 const M rising = hn::And(leaves[ch], hn::Gt(de, zero));
-                const V cand = hn::Sub(t, hn::Div(e, hn::IfThenElse(rising, de, one)));
+                const V cand = hn::Sub(
+                    t, hn::Mul(e, hn::ApproximateReciprocal(hn::IfThenElse(rising, de, one))));
                 next = hn::IfThenElse(hn::And(rising, hn::Lt(cand, next)), cand, next);
             }
             const M beyond = hn::Gt(excess, zero);
@@ -518,10 +548,10 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             const M moving = hn::And(active, hn::Gt(step, hn::Mul(hn::Set(d, 1e-4f), t)));
             if (hn::AllFalse(d, moving)) break;
         }
-        V exit_bound = zero;
+        V side[3];
         for (int ch = 0; ch < 3; ++ch) {
-            const M on = hn::Eq(exit_ch, hn::Set(d, static_cast<float>(ch)));
-            exit_bound = hn::IfThenElse(hn::And(on, leaves_high[ch]), s.max, exit_bound);
+            side[ch] = hn::IfThenElseZero(
+                leaves[ch], hn::IfThenElse(leaves_high[ch], one, hn::Neg(one)));
         }
         // Exits nearly tangent to the face (the root ill-conditioned), and anything not finite.
         hard = hn::Or(hard, hn::Lt(hn::Mul(hn::Set(d, 1024.0f), slope), total));
@@ -529,7 +559,8 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
         // The point at t (the final step in double), its exit channel exactly on its bound,
         // inside [0, max]³.
         V res[3];
-        Exact3<kind>(exact, r, g, b, L, A, B, centre, t, exit_ch, exit_bound, res);
+        Exact3<kind>(exact, r, g, b, L, A, B, centre, t, side, exit_ch, res);
+        hard = hn::Or(hard, hn::Lt(exit_ch, zero));
         for (int ch = 0; ch < 3; ++ch) {
             const M on = hn::Eq(exit_ch, hn::Set(d, static_cast<float>(ch)));
             const V bound = hn::IfThenElse(leaves_high[ch], s.max, zero);

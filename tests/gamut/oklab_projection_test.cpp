@@ -330,10 +330,19 @@ TEST(OklabKernels, SimdEqualsTheDoubleReferenceAndIsThreadInvariant) {
     for (const Gamut& g : {Gamut(srgb()), Gamut(display_p3()), Gamut(rec2020()), Gamut(srgb(), 4.0),
                            Gamut(aces2065_1()), Gamut(adobe_rgb())}) {
         const std::vector<float> input = kernel_input(g.max(), colours);
-        for (const ClipMethod m :
-             {ClipMethod::oklab, ClipMethod::oklab_adaptive, ClipMethod::oklab_cusp}) {
-            SCOPED_TRACE(name(g) + " " + std::string(clip_method_name(m)));
-            const GamutClipper clipper(m, g);
+        struct Case {
+            ClipMethod method;
+            double alpha;  // for the projections; oklab has no parameter
+        };
+        for (const Case& k : {Case{ClipMethod::oklab, 0.0}, Case{ClipMethod::oklab_adaptive, 0.05},
+                              Case{ClipMethod::oklab_cusp, 0.05},
+                              Case{ClipMethod::oklab_adaptive, 1.0},
+                              Case{ClipMethod::oklab_cusp, 1.0}}) {
+            const ClipMethod m = k.method;
+            SCOPED_TRACE(name(g) + " " + std::string(clip_method_name(m)) + " alpha " +
+                         std::to_string(k.alpha));
+            const GamutClipper clipper(
+                m, g, m == ClipMethod::oklab ? ClipSettings{} : ClipSettings{}.set("alpha", k.alpha));
             std::vector<float> one(input.size()), two(input.size());
             clip_batch(clipper, input, one, {.threads = 1, .simd = true});
             clip_batch(clipper, input, two, {.threads = 2, .simd = true});
