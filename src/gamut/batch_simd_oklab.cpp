@@ -15,8 +15,9 @@
 //    all the way from the first exit to the colour), and the search is kept before that sample.
 // 2. The exit by Newton steps on the leaving channels (the smallest step of theirs, kept in the
 //    bracket, else bisection), from the chord estimate, to 1e-4 relative; then, in double, the
-//    colour's Oklab (a Newton step on each float cube root), L0, one Newton step on the exit
-//    channel and the point's RGB, its exit channel set exactly to its bound and the whole clamped
+//    colour's Oklab (a Newton step on each float cube root), the cusp's L (a Newton step on
+//    S_max and one on its cube root), L0, one Newton step on each leaving channel near its root
+//    (the first root kept) and the point's RGB, its exit channel set exactly to its bound and the whole clamped
 //    to [0, max]³. (In float alone the channels' rounding near the bound, 1e-6 max where their
 //    terms cancel, would move the exit by 1e-6 max / f'.)
 // 3. Hard lanes are recomputed by the double reference (GamutClipper::clip): a channel coming
@@ -99,9 +100,9 @@ HWY_INLINE V ChannelAt(const Setup& s, int i, const V P[3], const V Q[3], V t) {
                       hn::MulAdd(s.lms[3 * i + 1], u3[1], hn::Mul(s.lms[3 * i], u3[0])));
 }
 
-/// The L of the cusp of each lane's hue (unit au, bu); `hard` gains the lanes where it is not
-/// reliable (see the file comment).
-HWY_INLINE V CuspLightness(const Setup& s, V au, V bu, M& hard) {
+/// The L of the cusp of each lane's hue (unit au, bu), with its S_max and zero channel (for the
+/// final step in double); `hard` gains the lanes where it is not reliable (see the file comment).
+HWY_INLINE V CuspLightness(const Setup& s, V au, V bu, M& hard, V& s_max, V& zero_channel) {
     const D d;
     const V zero = hn::Zero(d);
     // Sector of the hue: red → green reaches b = 0, green → blue r = 0, blue → red g = 0.
@@ -161,6 +162,9 @@ HWY_INLINE V CuspLightness(const Setup& s, V au, V bu, M& hard) {
     hard = hn::Or(hard, hn::Lt(hn::Sub(hn::Mul(three, m), hn::Mul(S, dm)), zero));
     hard = hn::Or(hard, hn::Not(hn::Gt(m, zero)));
     const V safe_m = hn::IfThenElse(hn::Gt(m, zero), m, hn::Set(d, 1.0f));
+    s_max = S;
+    zero_channel = hn::IfThenElse(in_rg, hn::Set(d, 2.0f),
+                                  hn::IfThenElse(in_gb, zero, hn::Set(d, 1.0f)));
     return simd::Cbrt(d, hn::Div(s.max, safe_m));
 }
 
@@ -193,7 +197,8 @@ struct Exact {
 };
 
 /// The final step in double, on one half of the lanes: the colour's Oklab (the float one
-/// polished by a Newton step on each cube root), Ottosson's L0 around `centre` (or L0 = L), one
+/// polished by a Newton step on each cube root), for oklab-cusp the cusp's L (the float one
+/// polished), Ottosson's L0 around `centre` (or L0 = L), one
 /// Newton step from the float t on each leaving channel's cubic f_i(t) − bound_i (side[i] +1
 /// leaving through max, −1 through 0, 0 not leaving), the smallest kept (two channels may leave
 /// within rounding of each other, at a corner), and in `c` the RGB of the point at that t, in
@@ -201,8 +206,8 @@ struct Exact {
 /// about 1e-6 max) would otherwise move t, and with it the other channels, by 1e-6 max / f'.
 template <Projection kind, class DD>
 HWY_INLINE void ExactHalf(DD dd, const Exact& x, hn::Vec<DD> c[3], hn::Vec<DD> lab[3],
-                          hn::Vec<DD> centre, hn::Vec<DD> t, const hn::Vec<DD> side[3],
-                          hn::Vec<DD>& exit) {
+                          hn::Vec<DD> centre, hn::Vec<DD> cusp_s, hn::Vec<DD> cusp_zero,
+                          hn::Vec<DD> t, const hn::Vec<DD> side[3], hn::Vec<DD>& exit) {
     using VD = hn::Vec<DD>;
     const auto mul3 = [&](const std::array<double, 9>& m, const VD v[3], VD o[3]) {
         for (std::size_t i = 0; i < 3; ++i) {
@@ -225,6 +230,48 @@ HWY_INLINE void ExactHalf(DD dd, const Exact& x, hn::Vec<DD> c[3], hn::Vec<DD> l
     mul3(x.m2, y, lab);
     const VD L = lab[0], A = lab[1], B = lab[2];
     VD l0 = L;
+    if (kind == Projection::cusp) {
+        // The cusp in double: a Newton step on the zero channel's cubic in S from the float
+        // S_max, then a Newton step on cbrt(max / largest channel) from the float L_cusp.
+        const VD C = hn::Sqrt(hn::MulAdd(A, A, hn::Mul(B, B)));
+        const auto grey = hn::Not(hn::Gt(C, hn::Zero(dd)));
+        const VD inv_c = hn::Div(one, hn::IfThenElse(grey, one, C));
+        const VD au = hn::IfThenElse(grey, one, hn::Mul(A, inv_c));
+        const VD bu = hn::IfThenZeroElse(grey, hn::Mul(B, inv_c));
+        VD P[3], Q[3];
+        for (std::size_t j = 0; j < 3; ++j) {
+            P[j] = hn::Set(dd, x.m2i[3 * j]);
+            Q[j] = hn::MulAdd(hn::Set(dd, x.m2i[3 * j + 2]), bu,
+                              hn::Mul(hn::Set(dd, x.m2i[3 * j + 1]), au));
+        }
+        const auto ray = [&](VD S, VD f[3], VD df[3]) {
+            VD u3[3], qu2[3];
+            for (std::size_t j = 0; j < 3; ++j) {
+                const VD u = hn::MulAdd(S, Q[j], P[j]);
+                const VD u2 = hn::Mul(u, u);
+                u3[j] = hn::Mul(u2, u);
+                qu2[j] = hn::Mul(Q[j], u2);
+            }
+            mul3(x.lms, u3, f);
+            mul3(x.lms, qu2, df);
+        };
+        VD f[3], df[3];
+        ray(cusp_s, f, df);
+        VD fz = f[0], dz = df[0];
+        for (std::size_t i = 1; i < 3; ++i) {
+            const auto on = hn::Eq(cusp_zero, hn::Set(dd, static_cast<double>(i)));
+            fz = hn::IfThenElse(on, f[i], fz);
+            dz = hn::IfThenElse(on, df[i], dz);
+        }
+        dz = hn::Mul(three, dz);
+        const auto usable = hn::Gt(hn::Abs(dz), hn::Zero(dd));
+        const VD S = hn::Sub(cusp_s, hn::Div(fz, hn::IfThenElse(usable, dz, one)));
+        ray(hn::IfThenElse(usable, S, cusp_s), f, df);
+        const VD m = hn::Max(hn::Max(f[0], f[1]), f[2]);
+        const VD target = hn::Div(hn::Set(dd, x.max), hn::IfThenElse(hn::Gt(m, hn::Zero(dd)), m, one));
+        const VD y2 = hn::Mul(centre, centre);
+        centre = hn::Sub(centre, hn::Div(hn::Sub(hn::Mul(y2, centre), target), hn::Mul(three, y2)));
+    }
     if (kind != Projection::constant_l) {
         const VD two = hn::Set(dd, 2.0), half = hn::Set(dd, 0.5);
         const VD inv_w = hn::Set(dd, 1.0 / x.white_l);
@@ -290,8 +337,8 @@ HWY_INLINE void ExactHalf(DD dd, const Exact& x, hn::Vec<DD> c[3], hn::Vec<DD> l
 /// ExactHalf on whole float vectors, in two halves of doubles (one lane on the SCALAR target),
 /// the RGB of the exit point in `res`.
 template <Projection kind>
-HWY_INLINE void Exact3(const Exact& x, V r, V g, V b, V L, V A, V B, V centre, V t,
-                       const V side[3], V& exit, V res[3]) {
+HWY_INLINE void Exact3(const Exact& x, V r, V g, V b, V L, V A, V B, V centre, V cusp_s,
+                       V cusp_zero, V t, const V side[3], V& exit, V res[3]) {
     const D d;
 #if HWY_TARGET == HWY_SCALAR
     const hn::Rebind<double, D> dd;
@@ -299,7 +346,7 @@ HWY_INLINE void Exact3(const Exact& x, V r, V g, V b, V L, V A, V B, V centre, V
     hn::Vec<hn::Rebind<double, D>> c[3] = {p(r), p(g), p(b)}, lab[3] = {p(L), p(A), p(B)};
     const hn::Vec<hn::Rebind<double, D>> sd[3] = {p(side[0]), p(side[1]), p(side[2])};
     auto e = p(exit);
-    ExactHalf<kind>(dd, x, c, lab, p(centre), p(t), sd, e);
+    ExactHalf<kind>(dd, x, c, lab, p(centre), p(cusp_s), p(cusp_zero), p(t), sd, e);
     for (int i = 0; i < 3; ++i) res[i] = hn::DemoteTo(d, c[i]);
     exit = hn::DemoteTo(d, e);
 #else
@@ -313,8 +360,8 @@ HWY_INLINE void Exact3(const Exact& x, V r, V g, V b, V L, V A, V B, V centre, V
     const VD s_lo[3] = {lo(side[0]), lo(side[1]), lo(side[2])};
     const VD s_hi[3] = {hi(side[0]), hi(side[1]), hi(side[2])};
     VD e_lo = lo(exit), e_hi = hi(exit);
-    ExactHalf<kind>(dd, x, c_lo, lab_lo, lo(centre), lo(t), s_lo, e_lo);
-    ExactHalf<kind>(dd, x, c_hi, lab_hi, hi(centre), hi(t), s_hi, e_hi);
+    ExactHalf<kind>(dd, x, c_lo, lab_lo, lo(centre), lo(cusp_s), lo(cusp_zero), lo(t), s_lo, e_lo);
+    ExactHalf<kind>(dd, x, c_hi, lab_hi, hi(centre), hi(cusp_s), hi(cusp_zero), hi(t), s_hi, e_hi);
     for (int i = 0; i < 3; ++i) {
         res[i] = hn::Combine(d, hn::DemoteTo(dh, c_hi[i]), hn::DemoteTo(dh, c_lo[i]));
     }
@@ -402,13 +449,14 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
         // L0.
         V L0 = L;
         V centre = hn::Mul(half, s.white_l);
+        V cusp_s = zero, cusp_zero = zero;
         if (kind != Projection::constant_l) {
             if (kind == Projection::cusp) {
                 const M grey = hn::Not(hn::Gt(C, zero));
                 const V inv_c = hn::Div(one, hn::IfThenElse(grey, one, C));
                 const V au = hn::IfThenElse(grey, one, hn::Mul(A, inv_c));
                 const V bu = hn::IfThenZeroElse(grey, hn::Mul(B, inv_c));
-                centre = CuspLightness(s, au, bu, hard);
+                centre = CuspLightness(s, au, bu, hard, cusp_s, cusp_zero);
             }
             L0 = AdaptiveL0(s, L, C, centre);
         }
@@ -559,7 +607,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
         // The point at t (the final step in double), its exit channel exactly on its bound,
         // inside [0, max]³.
         V res[3];
-        Exact3<kind>(exact, r, g, b, L, A, B, centre, t, side, exit_ch, res);
+        Exact3<kind>(exact, r, g, b, L, A, B, centre, cusp_s, cusp_zero, t, side, exit_ch, res);
         hard = hn::Or(hard, hn::Lt(exit_ch, zero));
         for (int ch = 0; ch < 3; ++ch) {
             const M on = hn::Eq(exit_ch, hn::Set(d, static_cast<float>(ch)));
