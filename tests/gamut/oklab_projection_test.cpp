@@ -25,13 +25,16 @@
 #include <irid/gamut/clip.h>
 
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -363,6 +366,40 @@ TEST(OklabKernels, SimdEqualsTheDoubleReferenceAndIsThreadInvariant) {
                 << input[3 * worst_at + 2];
         }
     }
+}
+
+TEST(OklabKernels, EveryCompiledTargetAgreesWithTheDoubleReference) {
+    // Every instruction set Highway compiled and this CPU supports (AVX-512, AVX2, SSE4, ...):
+    // the kernels' vector length and approximate reciprocals differ between them.
+    const std::size_t colours = 30000;
+    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+    std::set<std::string> ran;
+    for (const std::int64_t target : targets) {
+        hwy::SetSupportedTargetsForTest(target);
+        ran.insert(std::string(simd_target_name()));
+        SCOPED_TRACE(std::string(simd_target_name()));
+        for (const Gamut& g : {Gamut(srgb()), Gamut(rec2020(), 4.0)}) {
+            const std::vector<float> input = kernel_input(g.max(), colours);
+            for (const ClipMethod m :
+                 {ClipMethod::oklab, ClipMethod::oklab_adaptive, ClipMethod::oklab_cusp}) {
+                SCOPED_TRACE(name(g) + " " + std::string(clip_method_name(m)));
+                const GamutClipper clipper(m, g);
+                std::vector<float> out(input.size());
+                clip_batch(clipper, input, out, {.threads = 1, .simd = true});
+                double worst = 0.0;
+                for (std::size_t i = 0; i < colours; ++i) {
+                    const Rgb ref =
+                        clipper.clip({input[3 * i], input[3 * i + 1], input[3 * i + 2]});
+                    worst = std::max({worst, std::abs(out[3 * i] - ref.r),
+                                      std::abs(out[3 * i + 1] - ref.g),
+                                      std::abs(out[3 * i + 2] - ref.b)});
+                }
+                EXPECT_LE(worst, 1e-5 * g.max());
+            }
+        }
+    }
+    hwy::SetSupportedTargetsForTest(0);
+    EXPECT_EQ(ran.size(), targets.size());  // each target really ran
 }
 
 }  // namespace
