@@ -28,7 +28,7 @@
 //    channel's slope is under 1/1024 of the channels' total (nearly tangent), a non-finite t, and
 //    for oklab-cusp a cusp whose Halley iteration did not settle or that is not at S_max.
 // The cusp (oklab-cusp): the zero channel of the hue's sector (m_derived, see
-// prepare_oklab_projection), its S_max by four Halley steps on that channel's cubic in S from
+// prepare_oklab_projection), its S_max by three Halley steps on that channel's cubic in S from
 // the per-gamut linear fit, then L_cusp = cbrt(max / largest channel at (1, S_max a', S_max b')).
 // Where prepare_oklab_projection found the sectors' structure does not hold (ACES2065-1, whose
 // blue primary has a negative Oklab L), the oklab-cusp kernel leaves every colour to the double
@@ -125,7 +125,7 @@ HWY_INLINE V CuspLightness(const Setup& s, V au, V bu, M& hard, V& s_max, V& zer
     V S = hn::MulAdd(k[2], bu, hn::MulAdd(k[1], au, k[0]));
     const V two = hn::Set(d, 2.0f), three = hn::Set(d, 3.0f), six = hn::Set(d, 6.0f);
     V f = zero;
-    for (int it = 0; it < 4; ++it) {
+    for (int it = 0; it < 3; ++it) {
         V f0 = zero, f1 = zero, f2 = zero;
         for (int j = 0; j < 3; ++j) {
             const V u = hn::MulAdd(S, Q[j], P[j]);
