@@ -376,6 +376,8 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
     const std::size_t n = hn::Lanes(d);
     const std::array<double, 16>& derived = clipper.derived();
     if (kind == Projection::cusp && derived[15] != 1.0) return 0;
+    // A peak far below 1 would put the channels and LMS near float's subnormals: all scalar.
+    if (!(clipper.gamut().max() >= 1e-6)) return 0;
     Setup s;
     s.mat = simd::LoadOklabMatrices(d, clipper);
     const double max_d = clipper.gamut().max();
