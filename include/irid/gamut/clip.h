@@ -277,6 +277,20 @@ private:
     [[nodiscard]] Rgb smits_soft(const Rgb& c) const noexcept;        // smits_soft.cpp
     [[nodiscard]] Rgb aces_rgc(const Rgb& c) const noexcept;          // aces_rgc.cpp
     [[nodiscard]] Rgb clamp(const Rgb& c) const noexcept;
+    /// oklab-adaptive and oklab-cusp's exact geometry (oklab_projection.cpp). The cusp of the hue
+    /// of unit direction (a', b'): its L and C, its saturation S = C / L, the saturation S_max
+    /// where the hue's rays from black first leave the cube through a face at 0 (the cusp is
+    /// there unless the chroma peaks before it), and that face's channel (-1 for none).
+    struct OklabCusp {
+        double L, C, S, s_max;
+        int zero_channel;
+    };
+    [[nodiscard]] OklabCusp oklab_cusp_of_hue(double a_unit, double b_unit) const noexcept;
+    /// The t in [0, 1] where the segment (L0 + t (L - L0), t a, t b) from (L0, 0, 0) to `lab`
+    /// last leaves the cube (the upper end of its last piece inside); see oklab_projection.cpp.
+    [[nodiscard]] double oklab_segment_exit(double l0, const Oklab& lab) const noexcept;
+    /// oklab_adaptive (around_cusp false) and oklab_cusp (true) of an out-of-gamut colour.
+    [[nodiscard]] Rgb oklab_projection(const Rgb& c, bool around_cusp) const noexcept;
     /// Checks the values of m_parameters that depend on each other, throwing irid::Error naming
     /// them, and fills m_derived with what the method precomputes from them; the per-method
     /// parts live beside each method (prepare_aces_rgc in aces_rgc.cpp, ...).
