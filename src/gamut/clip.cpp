@@ -539,17 +539,20 @@ Rgb GamutClipper::css(const Rgb& origin) const noexcept {
 
 Rgb GamutClipper::oklab(const Rgb& c) const noexcept {
     const double max = m_gamut.max();
-    const Oklab lab = to_oklab(c);
-    if (!(lab.L > 0.0)) return {0.0, 0.0, 0.0};
-    if (!(lab.L < m_white_oklab_l)) return {max, max, max};
     // Within rounding of the cube, the colour is on it (clip.h): the line of its lightness and
     // hue may meet the cube only at the colour itself (sRGB blue's leaves through r = 0 at 85 %
     // of its chroma and comes back only at the vertex), so no search along it could stay close.
+    // Tested before the lightness rule: inside ACES2065-1's cube some colours are lighter than
+    // its white (its imaginary blue has a negative Oklab L), and one a hair outside must not
+    // become white.
     const double tol = oklab_rounding_tolerance * max;
     if (c.r >= -tol && c.g >= -tol && c.b >= -tol && c.r <= max + tol && c.g <= max + tol &&
         c.b <= max + tol) {
         return clamp(c);
     }
+    const Oklab lab = to_oklab(c);
+    if (!(lab.L > 0.0)) return {0.0, 0.0, 0.0};
+    if (!(lab.L < m_white_oklab_l)) return {max, max, max};
     // Along (L, s a, s b) the cube roots of LMS are linear in s, so each channel is a cubic in s:
     // channel_i(s) = Σ_j M_ij (p_j + s q_j)³.
     const Vec3 p = oklab_m2_inverse * Vec3{lab.L, 0.0, 0.0};
@@ -615,6 +618,9 @@ Rgb GamutClipper::oklab(const Rgb& c) const noexcept {
 
 Rgb GamutClipper::smits_corrected(const Rgb& c) const noexcept {
     const Rgb p = smits(c);
+    // Black and white (no luminance, or the white's or more) are the rule of every method: no
+    // hue to correct (the white's Oklab chroma of about 1e-4 is the published matrices' rounding).
+    if (p.r == p.g && p.g == p.b) return p;
     const Oklch target = oklab_to_oklch(to_oklab(c));
     const Oklch now = oklab_to_oklch(to_oklab(p));
     if (target.C < 1e-9 || now.C < 1e-9) return p;
