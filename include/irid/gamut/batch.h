@@ -2,10 +2,10 @@
 
 // Batches: clipping spans of interleaved float RGB (r, g, b, r, g, b, ...) at memory speed.
 //
-// The colours are linear RGB of the clipper's gamut space. For `ClipMethod::smits` and
-// `ClipMethod::clamp` the inner loop is SIMD (Google Highway, the widest instruction set of the
-// CPU chosen at run time: AVX-512, AVX2, SSE4, ...); it computes, lane by lane, exactly the
-// scalar float specification:
+// The colours are linear RGB of the clipper's gamut space. Every method but luv-hue has a SIMD
+// kernel (Google Highway, the widest instruction set of the CPU chosen at run time: AVX-512,
+// AVX2, SSE4, ...; src/gamut/kernels.h lists them). For `ClipMethod::smits` and
+// `ClipMethod::clamp` it computes, lane by lane, exactly the scalar float specification:
 //
 //   c = non-finite rule (NaN → 0, ±Inf → ±1e30, as GamutClipper::clip)
 //   smits: c = smits_clip_rgb<float>(c, lum, inv_lum_sum, max)       (clip.h)
@@ -14,9 +14,14 @@
 //       rounding may leave a float result a few ulps outside a face)
 //
 // with the float parameters lum_i = float(A, B, C), inv_lum_sum = float(1/(A + B + C)) computed
-// in double, max = float(gamut max). The SIMD path is compiled without floating-point
-// contraction, so it gives the same bits as that scalar code. Every other method runs the double
-// GamutClipper::clip per colour (float → double → float).
+// in double, max = float(gamut max). That path is compiled without floating-point contraction,
+// so it gives the same bits as that scalar code. The other kernels compute their method in float
+// and are within 1e-5 × max of the double GamutClipper::clip (for aces-rgc without clip, whose
+// output is not bounded by the cube, within 1e-5 of the colour's own size); lanes where float
+// could take another branch of the method (listed in each kernel's file) are recomputed with
+// the double GamutClipper::clip. With `BatchOptions::simd == false`, smits and clamp run the
+// scalar float specification and every other method the double GamutClipper::clip per colour
+// (float → double → float); luv-hue always does.
 //
 // Threads: the span is cut into fixed chunks of `batch_chunk_colours` colours (independent of the
 // thread count) run by oneTBB in an arena of the requested concurrency. Each colour is computed
@@ -34,8 +39,8 @@ struct BatchOptions {
     /// Worker threads; 0 = all hardware threads available to the process (also the cap: more
     /// are not used). Must be >= 0.
     int threads = 0;
-    /// false runs the scalar float specification instead of the SIMD loop (smits and clamp only;
-    /// the other methods have no SIMD path).
+    /// false runs the scalar reference instead of the SIMD kernels (the float specification for
+    /// smits and clamp, the double GamutClipper::clip for the others).
     bool simd = true;
 };
 

@@ -6,8 +6,20 @@
 // luminance toward the grey of the same luminance and stops where the line enters the display's
 // RGB cube, found Cohen–Sutherland style from the outcodes of the three channels. It is
 // implemented in both of the thesis' forms (on linear RGB and on XYZ against the parallelepiped)
-// and compared with the methods used today. Every method is behind one interface, GamutClipper,
-// selected by name.
+// and compared with the methods used today: the per-channel clamp, CIELUV and Oklab projections,
+// CSS Color 4's binary search and ray trace, Ottosson's lightness-adaptive projections (2021),
+// the ACES 1.3 Reference Gamut Compression, and a soft form of the thesis' own clip. Every
+// method is behind one interface, GamutClipper, selected by name, with its parameters
+// (ClipSettings) checked against clip_parameters().
+//
+// Hard and soft methods. The hard methods (all but aces-rgc and smits-soft) leave every colour
+// inside the gamut as it is and put every other one on the gamut's boundary, so a smooth
+// out-of-gamut gradient ends in a flat band where it meets the boundary. The soft ones compress
+// what lies beyond a threshold: colours inside the gamut but near its edge move too, and the
+// boundary is reached only at a limit (the clip report measures both: banding, collapse and
+// in-gamut movement along the `ramps` set). aces-rgc works per channel in the destination's
+// linear RGB and, like OpenColorIO, leaves a colour beyond its limits outside the cube unless
+// its parameter clip is true (irid clip turns clip on for images).
 //
 // What the thesis leaves open, decided here for every method (and tested):
 // - Non-finite input: NaN channels are taken as 0 and ±Inf as ±1e30 before clipping, so every
@@ -30,8 +42,10 @@
 //   the white's lightness Oklab's neutral axis itself leaves the cube (Display P3, Adobe RGB). A
 //   colour a hair outside there has no colour of its lightness and hue near it, so a colour
 //   within oklab_rounding_tolerance × max of the cube (every channel in [−tol, max + tol]) is
-//   taken as on it and clamped (moved by at most that much);
-//   smits_corrected's hue step is at most as long as smits' own move.
+//   taken as on it and clamped (moved by at most that much); css-raytrace, oklab-adaptive and
+//   oklab-cusp apply the same rule (their rays and segments meet the same trouble);
+//   smits_corrected's hue step is at most as long as smits' own move. The soft methods are
+//   continuous and move such a colour by a bounded amount like any other near the boundary.
 // - The destination's maximum may differ from 1 (an HDR peak): the cube is [0, max]³.
 
 #include <irid/color/matrix.h>
