@@ -229,7 +229,10 @@ GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut, const ClipSett
     const std::string name(clip_method_name(method));
     const std::span<const ClipParameterInfo> known = clip_parameters(method);
     for (const ClipParameterInfo& p : known) m_parameters.emplace_back(p.name, p.default_value);
-    for (const auto& [key, value] : settings.values) {
+    for (const auto& setting : settings.values) {
+        // (Not a structured binding: clang 14 cannot capture one in a lambda.)
+        const std::string& key = setting.first;
+        const double value = setting.second;
         const auto it = std::find_if(known.begin(), known.end(),
                                      [&](const ClipParameterInfo& p) { return p.name == key; });
         if (it == known.end()) {
