@@ -14,8 +14,9 @@
 //   pairs): near an LMS component of 0 the cube root amplifies a plain float product's error
 //   without bound (a colour's Oklab L was off by 6e-5 relative), and the rays' grazing
 //   intersections amplify the restore steps' (up to 1e-6 max, grown to 2.8e-5).
-//   css-raytrace's restore steps (chroma, then back to RGB) are computed in double instead
-//   (RestoreDouble) on every target with double vectors: as accurate, and about half the work.
+//   css-raytrace's Oklab of the origin and restore steps (chroma, then back to RGB) are
+//   computed in double instead (ToOklabDouble, RestoreDouble) on every target with double
+//   vectors: as accurate, and about half the work.
 // - The cube roots start without a division (CbrtStart: Halley steps with a 12-bit reciprocal).
 // - css-raytrace uses the 32-bit anchor bounds of the specification's footnote 1 (1e-6), where
 //   the double reference uses the 64-bit 1e-12, and the 64-bit parallel threshold 1e-12 of
@@ -449,19 +450,11 @@ struct DoubleTransforms {
     DoubleMatrix to_lms, from_lms, m2, m2_inverse;
 };
 
-/// The restore of css_raytrace.cpp's passes i > 0, lane by lane: the Oklab chroma of (r, g, b)
-/// and then linear RGB of Oklab (L, C cos h, C sin h) (cos h = ua, sin h = ub; L, ua, ub given
-/// in double halves), written to (nr, ng, nb) rounded to float. All in double except the cube
-/// roots' start (CbrtStart in float, 3e-7), which one Newton step in double (with a float
-/// reciprocal, 2^-12 of a correction of 3e-7) takes to about 1e-12 relative; an LMS below
-/// float's normal range has the cube root 0, as CbrtPair.
-HWY_INLINE void RestoreDouble(Df d, const DoubleTransforms& T, Vf r, Vf g, Vf b, const Vd (&L)[2],
-                              const Vd (&ua)[2], const Vd (&ub)[2], Vf& nr, Vf& ng, Vf& nb) {
-    Vd c[3][2];
-    SplitToDouble(r, c[0]);
-    SplitToDouble(g, c[1]);
-    SplitToDouble(b, c[2]);
-    Vd y[2][3];
+/// The cube roots of the LMS of linear RGB c (double halves) in y, lane by lane: the LMS in
+/// double, the cube roots' start in float (CbrtStart, 3e-7), then one Newton step in double
+/// (with a float reciprocal, 2^-12 of a correction of 3e-7), to about 1e-12 relative; an LMS
+/// below float's normal range has the cube root 0, as CbrtPair.
+HWY_INLINE void LmsRootsDouble(Df d, const DoubleTransforms& T, const Vd (&c)[3][2], Vd (&y)[2][3]) {
     for (int i = 0; i < 3; ++i) {
         Vd lms[2];
         for (int h = 0; h < 2; ++h) lms[h] = DotD(T.to_lms, i, {c[0][h], c[1][h], c[2][h]});
@@ -476,6 +469,38 @@ HWY_INLINE void RestoreDouble(Df d, const DoubleTransforms& T, Vf r, Vf g, Vf b,
             y[h][i] = hn::MulAdd(hn::Sub(lms[h], cube), inv_d[h], y0[h]);
         }
     }
+}
+
+/// Oklab of linear RGB through double (LmsRootsDouble, then M2), each component rounded to
+/// float: the accuracy of ToOklabAccurate for less work. For |channels| up to split_limit.
+HWY_INLINE void ToOklabDouble(Df d, const DoubleTransforms& T, Vf r, Vf g, Vf b, Vf& L, Vf& A, Vf& B) {
+    Vd c[3][2];
+    SplitToDouble(r, c[0]);
+    SplitToDouble(g, c[1]);
+    SplitToDouble(b, c[2]);
+    Vd y[2][3];
+    LmsRootsDouble(d, T, c, y);
+    Vd lab[3][2];
+    for (int h = 0; h < 2; ++h) {
+        for (int i = 0; i < 3; ++i) lab[i][h] = DotD(T.m2, i, y[h]);
+    }
+    L = JoinToFloat(d, lab[0]);
+    A = JoinToFloat(d, lab[1]);
+    B = JoinToFloat(d, lab[2]);
+}
+
+/// The restore of css_raytrace.cpp's passes i > 0, lane by lane: the Oklab chroma of (r, g, b)
+/// and then linear RGB of Oklab (L, C cos h, C sin h) (cos h = ua, sin h = ub; L, ua, ub given
+/// in double halves), written to (nr, ng, nb) rounded to float; in double but for the cube
+/// roots' start (LmsRootsDouble).
+HWY_INLINE void RestoreDouble(Df d, const DoubleTransforms& T, Vf r, Vf g, Vf b, const Vd (&L)[2],
+                              const Vd (&ua)[2], const Vd (&ub)[2], Vf& nr, Vf& ng, Vf& nb) {
+    Vd c[3][2];
+    SplitToDouble(r, c[0]);
+    SplitToDouble(g, c[1]);
+    SplitToDouble(b, c[2]);
+    Vd y[2][3];
+    LmsRootsDouble(d, T, c, y);
     Vd out[3][2];
     for (int h = 0; h < 2; ++h) {
         const Vd a = DotD(T.m2, 1, y[h]), bb = DotD(T.m2, 2, y[h]);
@@ -528,7 +553,11 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
             continue;
         }
         Vf L, A, B;
+#if HWY_TARGET != HWY_SCALAR && HWY_HAVE_FLOAT64
+        ToOklabDouble(d, TD, r, g, b, L, A, B);
+#else
         ToOklabAccurate(d, p.T, r, g, b, L, A, B);
+#endif
         const Mf huge = hn::Or(hn::Or(hn::Gt(hn::Abs(r), hn::Set(d, split_limit)),
                                       hn::Gt(hn::Abs(g), hn::Set(d, split_limit))),
                                hn::Gt(hn::Abs(b), hn::Set(d, split_limit)));
