@@ -14,6 +14,10 @@
 //   pairs): near an LMS component of 0 the cube root amplifies a plain float product's error
 //   without bound (a colour's Oklab L was off by 6e-5 relative), and the rays' grazing
 //   intersections amplify the restore steps' (up to 1e-6 max, grown to 2.8e-5).
+//   css-raytrace's Oklab of the origin and restore steps (chroma, then back to RGB) are
+//   computed in double instead (ToOklabDouble, RestoreDouble) on every target with double
+//   vectors: as accurate, and about half the work.
+// - The cube roots start without a division (CbrtStart: Halley steps with a 12-bit reciprocal).
 // - css-raytrace uses the 32-bit anchor bounds of the specification's footnote 1 (1e-6), where
 //   the double reference uses the 64-bit 1e-12, and the 64-bit parallel threshold 1e-12 of
 //   footnote 7 in float as well (see parallel_epsilon_f).
@@ -29,9 +33,9 @@
 //   sensitive to float rounding (wild_ray_t, grazing_gain, diverging_ratio), and dark ones whose
 //   anchor the two bounds treat differently (dark_channel).
 // - On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube, 2^20 colours)
-//   0.47 % of the lanes of css-raytrace and 0.41 % of those of css are flagged, and the largest
-//   difference from the double reference was 2.5e-6 and 4.1e-7 (measured when the kernels were
-//   written; Display P3 and Rec.2020 alike). On ACES2065-1 css-raytrace flags 2.9 %; css
+//   0.31 % of the lanes of css-raytrace (0.47 % before its transforms went to double) and
+//   0.40 % of those of css are flagged; the largest difference from the double reference was
+//   2.5e-6 and 4.1e-7 (measured when the kernels were written; Display P3 and Rec.2020 alike). On ACES2065-1 css-raytrace flags 2.9 %; css
 //   flags 0.4 % but 2 of 2^20 colours near its imaginary blue end up to 2.8e-5 away (the
 //   origin's chroma, one ulp off in float, moves the candidate by an ulp, which ΔEOK there
 //   amplifies 20-fold past the margin).
@@ -181,11 +185,34 @@ HWY_INLINE Vf Dot3(Df d, const PairMatrix& M, int i, const Vf (&x)[3], const Vf 
     return s;
 }
 
-/// The real cube root of x as a pair y + dy, to about 2^-40 relative: simd::Cbrt (2 ulp), then
-/// one Newton step on the exact residual x − y³ (dy = (x − y³)/(3y²); a 12-bit reciprocal is
-/// ample for a correction of a few ulp). 0 stays 0.
+/// The real cube root of x, sign kept, to about 3e-7 relative over float's normal range (0
+/// below it), without a division: simd::Cbrt's start from the exponent bits (within 7 %), then
+/// two Halley steps written as corrections, y <- y (1 + (a - y^3)/(2 y^3 + a)), whose
+/// quotient needs only a 12-bit reciprocal (its error scales the correction, not y). The start
+/// of CbrtPair, whose exact Newton step squares this error.
+HWY_INLINE Vf CbrtStart(Df d, Vf x) {
+    const hn::RebindToSigned<Df> di;
+    const Vf a = hn::Abs(x);
+    // As simd::Cbrt: a third of the bits plus 0x2A5137A0 (simd_common-inl.h).
+    const auto third = hn::ConvertTo(
+        di, hn::Mul(hn::ConvertTo(d, hn::BitCast(di, a)), hn::Set(d, 1.0f / 3.0f)));
+    Vf y = hn::BitCast(d, hn::Add(third, hn::Set(di, 709921077)));
+    for (int it = 0; it < 2; ++it) {
+        const Vf y3 = hn::Mul(hn::Mul(y, y), y);
+        const Vf c = hn::Mul(hn::Sub(a, y3),
+                             hn::ApproximateReciprocal(hn::MulAdd(hn::Set(d, 2.0f), y3, a)));
+        y = hn::MulAdd(y, c, y);
+    }
+    y = hn::IfThenZeroElse(hn::Lt(a, hn::Set(d, 1.17549435e-38f)), y);
+    return hn::CopySign(y, x);
+}
+
+/// The real cube root of x as a pair y + dy, to about 2^-33 relative (2^-37 with AVX-512's
+/// 14-bit reciprocal): CbrtStart, then one Newton step on the exact residual x - y^3
+/// (dy = (x - y^3)/(3y^2); a 12-bit reciprocal is ample for a correction of a few ulp). 0
+/// stays 0.
 HWY_INLINE Vf CbrtPair(Df d, Vf x, Vf& dy) {
-    const Vf y = simd::Cbrt(d, x);
+    const Vf y = CbrtStart(d, x);
     Vf pe, ce;
     const Vf p = TwoProd(d, y, y, pe);
     const Vf c = TwoProd(d, p, y, ce);
@@ -379,6 +406,119 @@ HWY_INLINE Mf CastRay(Df d, Vf s0, Vf s1, Vf s2, Vf e0, Vf e1, Vf e2, Vf zero, V
     return found;
 }
 
+#if HWY_TARGET != HWY_SCALAR && HWY_HAVE_FLOAT64
+/// css-raytrace's restore step in double, on the targets with double vectors (all but SCALAR,
+/// which keeps the float pairs): double has the pairs' accuracy at a fraction of their work.
+using Dd = hn::Repartition<double, Df>;  // half as many lanes as Df
+using Vd = hn::Vec<Dd>;
+
+/// The lower and upper halves of a float vector, in double.
+HWY_INLINE void SplitToDouble(Vf v, Vd (&out)[2]) {
+    const Dd dd;
+    const hn::Half<Df> dh;
+    out[0] = hn::PromoteTo(dd, hn::LowerHalf(dh, v));
+    out[1] = hn::PromoteTo(dd, hn::UpperHalf(dh, v));
+}
+
+/// The float vector of two double halves (rounded to nearest).
+HWY_INLINE Vf JoinToFloat(Df d, const Vd (&v)[2]) {
+    const hn::Half<Df> dh;
+    return hn::Combine(d, hn::DemoteTo(dh, v[1]), hn::DemoteTo(dh, v[0]));
+}
+
+/// A double 3×3 matrix (row-major), broadcast.
+struct DoubleMatrix {
+    Vd m[9];
+};
+
+HWY_INLINE DoubleMatrix LoadDoubleMatrix(const Mat3& m) {
+    const Dd dd;
+    DoubleMatrix p;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) p.m[3 * i + j] = hn::Set(dd, m[i][j]);
+    }
+    return p;
+}
+
+/// Row i of M times x, in double.
+HWY_INLINE Vd DotD(const DoubleMatrix& M, int i, const Vd (&x)[3]) {
+    return hn::MulAdd(M.m[3 * i + 2], x[2], hn::MulAdd(M.m[3 * i + 1], x[1], hn::Mul(M.m[3 * i], x[0])));
+}
+
+/// The transforms in double.
+struct DoubleTransforms {
+    DoubleMatrix to_lms, from_lms, m2, m2_inverse;
+};
+
+/// The cube roots of the LMS of linear RGB c (double halves) in y, lane by lane: the LMS in
+/// double, the cube roots' start in float (CbrtStart, 3e-7), then one Newton step in double
+/// (with a float reciprocal, 2^-12 of a correction of 3e-7), to about 1e-12 relative; an LMS
+/// below float's normal range has the cube root 0, as CbrtPair.
+HWY_INLINE void LmsRootsDouble(Df d, const DoubleTransforms& T, const Vd (&c)[3][2], Vd (&y)[2][3]) {
+    for (int i = 0; i < 3; ++i) {
+        Vd lms[2];
+        for (int h = 0; h < 2; ++h) lms[h] = DotD(T.to_lms, i, {c[0][h], c[1][h], c[2][h]});
+        const Vf yf = CbrtStart(d, JoinToFloat(d, lms));
+        const Vf inv = hn::IfThenZeroElse(
+            hn::Eq(yf, hn::Zero(d)), hn::ApproximateReciprocal(hn::Mul(hn::Set(d, 3.0f), hn::Mul(yf, yf))));
+        Vd y0[2], inv_d[2];
+        SplitToDouble(yf, y0);
+        SplitToDouble(inv, inv_d);
+        for (int h = 0; h < 2; ++h) {
+            const Vd cube = hn::Mul(hn::Mul(y0[h], y0[h]), y0[h]);
+            y[h][i] = hn::MulAdd(hn::Sub(lms[h], cube), inv_d[h], y0[h]);
+        }
+    }
+}
+
+/// Oklab of linear RGB through double (LmsRootsDouble, then M2), each component rounded to
+/// float: the accuracy of ToOklabAccurate for less work. For |channels| up to split_limit.
+HWY_INLINE void ToOklabDouble(Df d, const DoubleTransforms& T, Vf r, Vf g, Vf b, Vf& L, Vf& A, Vf& B) {
+    Vd c[3][2];
+    SplitToDouble(r, c[0]);
+    SplitToDouble(g, c[1]);
+    SplitToDouble(b, c[2]);
+    Vd y[2][3];
+    LmsRootsDouble(d, T, c, y);
+    Vd lab[3][2];
+    for (int h = 0; h < 2; ++h) {
+        for (int i = 0; i < 3; ++i) lab[i][h] = DotD(T.m2, i, y[h]);
+    }
+    L = JoinToFloat(d, lab[0]);
+    A = JoinToFloat(d, lab[1]);
+    B = JoinToFloat(d, lab[2]);
+}
+
+/// The restore of css_raytrace.cpp's passes i > 0, lane by lane: the Oklab chroma of (r, g, b)
+/// and then linear RGB of Oklab (L, C cos h, C sin h) (cos h = ua, sin h = ub; L, ua, ub given
+/// in double halves), written to (nr, ng, nb) rounded to float; in double but for the cube
+/// roots' start (LmsRootsDouble).
+HWY_INLINE void RestoreDouble(Df d, const DoubleTransforms& T, Vf r, Vf g, Vf b, const Vd (&L)[2],
+                              const Vd (&ua)[2], const Vd (&ub)[2], Vf& nr, Vf& ng, Vf& nb) {
+    Vd c[3][2];
+    SplitToDouble(r, c[0]);
+    SplitToDouble(g, c[1]);
+    SplitToDouble(b, c[2]);
+    Vd y[2][3];
+    LmsRootsDouble(d, T, c, y);
+    Vd out[3][2];
+    for (int h = 0; h < 2; ++h) {
+        const Vd a = DotD(T.m2, 1, y[h]), bb = DotD(T.m2, 2, y[h]);
+        const Vd chroma = hn::Sqrt(hn::MulAdd(a, a, hn::Mul(bb, bb)));
+        const Vd lab[3] = {L[h], hn::Mul(chroma, ua[h]), hn::Mul(chroma, ub[h])};
+        Vd cube[3];
+        for (int i = 0; i < 3; ++i) {
+            const Vd s = DotD(T.m2_inverse, i, lab);
+            cube[i] = hn::Mul(hn::Mul(s, s), s);
+        }
+        for (int i = 0; i < 3; ++i) out[i][h] = DotD(T.from_lms, i, cube);
+    }
+    nr = JoinToFloat(d, out[0]);
+    ng = JoinToFloat(d, out[1]);
+    nb = JoinToFloat(d, out[2]);
+}
+#endif
+
 }  // namespace
 
 /// css-raytrace on the largest multiple of the vector length of `colours` interleaved float RGB
@@ -398,6 +538,10 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
     const Vf dark = hn::Mul(hn::Set(d, dark_channel), p.max);
     const Vf lmargin = hn::Set(d, lightness_margin);
     const Vf wild_t = hn::Set(d, wild_ray_t);
+#if HWY_TARGET != HWY_SCALAR && HWY_HAVE_FLOAT64
+    const DoubleTransforms TD{LoadDoubleMatrix(clipper.rgb_to_lms()), LoadDoubleMatrix(clipper.lms_to_rgb()),
+                              LoadDoubleMatrix(oklab_m2), LoadDoubleMatrix(oklab_m2_inverse)};
+#endif
     std::size_t i = 0;
     for (; i + n <= colours; i += n) {
         Vf r, g, b;
@@ -409,7 +553,11 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
             continue;
         }
         Vf L, A, B;
+#if HWY_TARGET != HWY_SCALAR && HWY_HAVE_FLOAT64
+        ToOklabDouble(d, TD, r, g, b, L, A, B);
+#else
         ToOklabAccurate(d, p.T, r, g, b, L, A, B);
+#endif
         const Mf huge = hn::Or(hn::Or(hn::Gt(hn::Abs(r), hn::Set(d, split_limit)),
                                       hn::Gt(hn::Abs(g), hn::Set(d, split_limit))),
                                hn::Gt(hn::Abs(b), hn::Set(d, split_limit)));
@@ -419,6 +567,12 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         // cos h and sin h of the origin's hue (a hueless lane is flagged below).
         const Vf inv_c0 = hn::Div(hn::Set(d, 1.0f), hn::Max(c0, hn::Set(d, hueless_chroma)));
         const Vf ua = hn::Mul(A, inv_c0), ub = hn::Mul(B, inv_c0);
+#if HWY_TARGET != HWY_SCALAR && HWY_HAVE_FLOAT64
+        Vd Ld[2], uad[2], ubd[2];
+        SplitToDouble(L, Ld);
+        SplitToDouble(ua, uad);
+        SplitToDouble(ub, ubd);
+#endif
         const Vf L3 = hn::Mul(hn::Mul(L, L), L);
         Vf a0 = hn::Mul(L3, p.k0), a1 = hn::Mul(L3, p.k1), a2 = hn::Mul(L3, p.k2);
         Vf c_r = r, c_g = g, c_b = b;
@@ -433,9 +587,13 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
                 // Back onto the chroma line: the origin's L and h, the current chroma.
                 // Only the lanes still in the loop: a lane that left it (no intersection)
                 // keeps its last intersection.
-                const Vf c = ChromaAccurate(d, p.T, p.positive_lms, c_r, c_g, c_b);
                 Vf nr, ng, nb;
+#if HWY_TARGET != HWY_SCALAR && HWY_HAVE_FLOAT64
+                RestoreDouble(d, TD, c_r, c_g, c_b, Ld, uad, ubd, nr, ng, nb);
+#else
+                const Vf c = ChromaAccurate(d, p.T, p.positive_lms, c_r, c_g, c_b);
                 FromOklabAccurate(d, p.T, L, hn::Mul(c, ua), hn::Mul(c, ub), nr, ng, nb);
+#endif
                 // How far the restore moved the intersection: growing from pass to pass, the
                 // passes diverge and amplify rounding (seen on ACES2065-1's imaginary blue).
                 const Vf moved = hn::Max(hn::Max(hn::Abs(hn::Sub(nr, c_r)), hn::Abs(hn::Sub(ng, c_g))),
