@@ -40,12 +40,64 @@
 #include <cstdint>
 #include <limits>
 
+#ifndef IRID_GAMUT_BATCH_SIMD_ACES_ONCE
+#define IRID_GAMUT_BATCH_SIMD_ACES_ONCE
+namespace irid {
+namespace {
+
+/// For each mask m of up to 8 lanes, the lane indices of Compress packed in nibbles (nibble j =
+/// the index of the j-th set bit of m; the nibbles past the count are 0). At namespace scope:
+/// Highway 1.0.3's own table for 8 × 32-bit lanes is a local constexpr array inside
+/// IndicesFromBits (hwy/ops/x86_256-inl.h), which g++ 12 copies onto the stack (1 KiB, `rep movs`)
+/// at every Compress; that made this kernel 6× slower on AVX2 than on AVX-512.
+struct CompressTable {
+    std::uint32_t nibbles[256];
+};
+
+constexpr CompressTable make_compress_table() noexcept {
+    CompressTable t{};
+    for (std::uint32_t m = 0; m < 256; ++m) {
+        std::uint32_t packed = 0, j = 0;
+        for (std::uint32_t lane = 0; lane < 8; ++lane) {
+            if ((m >> lane) & 1u) packed |= lane << (4 * j++);
+        }
+        t.nibbles[m] = packed;
+    }
+    return t;
+}
+
+inline constexpr CompressTable compress_table = make_compress_table();
+
+}  // namespace
+}  // namespace irid
+#endif  // IRID_GAMUT_BATCH_SIMD_ACES_ONCE
+
 HWY_BEFORE_NAMESPACE();
 namespace irid {
 namespace HWY_NAMESPACE {
 namespace {
 
 namespace hn = hwy::HWY_NAMESPACE;
+
+/// Compress(v, m) of hwy (the lanes of m in order first, the rest unspecified). AVX-512 has an
+/// instruction (register form); the other x86 targets (at most 8 lanes of float) look the lane
+/// indices up in compress_table and permute; other architectures use Highway's.
+template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
+HWY_INLINE V CompressLanes(D d, V v, M m) {
+#if HWY_ARCH_X86 && HWY_TARGET != HWY_AVX3 && HWY_TARGET != HWY_AVX3_DL && HWY_TARGET != HWY_SCALAR
+    static_assert(hn::MaxLanes(D()) <= 8, "the table covers up to 8 lanes");
+    const hn::RebindToUnsigned<D> du;
+    std::uint8_t bits[8] = {};
+    hn::StoreMaskBits(d, m, bits);
+    const auto shifts = hn::ShiftLeft<2>(hn::Iota(du, 0));
+    const auto idx = hn::And(hn::Shr(hn::Set(du, compress_table.nibbles[bits[0]]), shifts),
+                             hn::Set(du, static_cast<std::uint32_t>(hn::MaxLanes(D()) - 1)));
+    return hn::TableLookupLanes(v, hn::IndicesFromVec(d, idx));
+#else
+    (void)d;
+    return hn::Compress(v, m);
+#endif
+}
 
 /// The float (forward) or double (inverse) parameters of one channel's curve.
 template <class V>
@@ -298,10 +350,10 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
                     // Compress in registers, then a full store (the buffers have a vector of
                     // slack): a compressing store to memory is microcoded and slow on x86.
                     const VI at = hn::Add(base, hn::Set(di, static_cast<std::int32_t>(k)));
-                    hn::StoreU(hn::Compress(nd, active), d, nd_buf + packed);
-                    hn::StoreU(hn::Compress(a, active), d, a_buf + packed);
-                    hn::StoreU(hn::Compress(b, active), d, b_buf + packed);
-                    hn::StoreU(hn::Compress(at, hn::RebindMask(di, active)), di, at_buf + packed);
+                    hn::StoreU(CompressLanes(d, nd, active), d, nd_buf + packed);
+                    hn::StoreU(CompressLanes(d, a, active), d, a_buf + packed);
+                    hn::StoreU(CompressLanes(d, b, active), d, b_buf + packed);
+                    hn::StoreU(CompressLanes(di, at, hn::RebindMask(di, active)), di, at_buf + packed);
                     packed += hn::CountTrue(d, active);
                 }
                 V v = hn::IfThenZeroElse(is_zero, c[k]);
