@@ -70,6 +70,23 @@ constexpr CompressTable make_compress_table() noexcept {
 
 inline constexpr CompressTable compress_table = make_compress_table();
 
+/// For each mask m of up to 8 lanes, the lane indices of Expand packed in nibbles (nibble j =
+/// the number of set bits of m below bit j: where lane j takes its value from).
+constexpr CompressTable make_expand_table() noexcept {
+    CompressTable t{};
+    for (std::uint32_t m = 0; m < 256; ++m) {
+        std::uint32_t packed = 0, below = 0;
+        for (std::uint32_t lane = 0; lane < 8; ++lane) {
+            packed |= below << (4 * lane);
+            below += (m >> lane) & 1u;
+        }
+        t.nibbles[m] = packed;
+    }
+    return t;
+}
+
+inline constexpr CompressTable expand_table = make_expand_table();
+
 /// Terms of the polynomial that gives the forward curve's (1 + v)^(−1/p) (degree 9).
 constexpr std::size_t tail_terms = 10;
 
@@ -338,27 +355,58 @@ HWY_INLINE V ForwardCurve(D d, V nd, V neg_power, const V (&tail)[tail_terms]) {
     return hn::Mul(hn::Min(nd, one), q);
 }
 
-/// Colours per block of the forward: its compressed channels are gathered into dense buffers so
-/// that the curve runs on full vectors of them only (a third of the channels on the benchmark's
-/// input, nearly every vector having some).
-constexpr std::size_t block_colours = 512;
+/// Expand, the inverse of Compress: the lanes set in the mask whose StoreMaskBits are `bits` take,
+/// in order, the first lanes of `packed`; the others keep `fallback`. AVX-512 has an instruction
+/// (register form); the other x86 targets look the lane indices up in expand_table, permute and
+/// blend; other architectures go lane by lane.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ExpandLanes(D d, V packed, const std::uint8_t* bits, V fallback) {
+#if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+    return V{_mm512_mask_expand_ps(fallback.raw, hn::LoadMaskBits(d, bits).raw, packed.raw)};
+#elif HWY_ARCH_X86 && HWY_TARGET != HWY_SCALAR
+    static_assert(hn::MaxLanes(D()) <= 8, "the table covers up to 8 lanes");
+    const hn::RebindToUnsigned<D> du;
+    const auto shifts = hn::ShiftLeft<2>(hn::Iota(du, 0));
+    const auto idx = hn::And(hn::Shr(hn::Set(du, expand_table.nibbles[bits[0]]), shifts),
+                             hn::Set(du, static_cast<std::uint32_t>(hn::MaxLanes(D()) - 1)));
+    return hn::IfThenElse(hn::LoadMaskBits(d, bits),
+                          hn::TableLookupLanes(packed, hn::IndicesFromVec(d, idx)), fallback);
+#else
+    using T = hn::TFromD<D>;
+    constexpr std::size_t lanes = HWY_MAX_BYTES / sizeof(T);
+    alignas(64) T p[lanes], f[lanes];
+    hn::Store(packed, d, p);
+    hn::Store(fallback, d, f);
+    for (std::size_t k = 0, j = 0; k < hn::Lanes(d); ++k) {
+        if ((bits[k / 8] >> (k % 8)) & 1u) f[k] = p[j++];
+    }
+    return hn::Load(d, f);
+#endif
+}
 
-/// The forward in float, in blocks: (1) per vector, the untouched channels are stored and the
-/// compressed ones packed (Compress) as nd with out = A + B·f(nd), A = ach − thr·|ach|,
-/// B = −s·|ach|, and their position; (2) the curve on the packed values; (3) the results written
-/// to their positions; then the hard lanes by the double reference.
-std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, std::size_t colours) {
+/// Colours per block of the forward (its buffers, about 16 KiB, stay in L1).
+constexpr std::size_t block_colours = 256;
+
+/// The forward in float, in blocks of block_colours, in three passes:
+/// (1) per vector: the non-finite rule, ach, and per channel d = (ach − c)·(1/|ach|) (one
+///     division per vector); the lanes at or beyond the threshold are packed (Compress) as nd and
+///     ach into that channel's list, their mask and count kept; the channel as it is (0 where
+///     ach = 0, clamped into the cube when confined) is stored in a planar buffer;
+/// (2) per channel, the curve on full vectors of its list only (a third of the channels on the
+///     benchmark's input, where nearly every vector has some): out = ach − (thr + s f(nd))·|ach|;
+/// (3) per vector: each channel's results expanded (Expand) over its planar values by the kept
+///     mask, stored interleaved; then the hard lanes by the double reference.
+/// `out` may be `in`: a block is read whole before it is written.
+template <bool kConfined>
+std::size_t ForwardBlocks(const GamutClipper& clipper, const float* in, float* out,
+                          std::size_t colours) {
     using D = hn::ScalableTag<float>;
-    using DI = hn::RebindToSigned<D>;
     const D d;
-    const DI di;
     using V = hn::Vec<D>;
-    using VI = hn::Vec<DI>;
     const std::size_t n = hn::Lanes(d);
     const AcesV<D> P(d, clipper, 16.0, 1e30);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), tiny = hn::Set(d, 1e-30f);
-    const V cap = hn::Set(d, 1e30f);
-    const VI lane3 = hn::Mul(hn::Iota(di, 0), hn::Set(di, 3));
+    const V cap = hn::Set(d, 1e30f), nan = hn::Set(d, std::numeric_limits<float>::quiet_NaN());
     const V neg_power = hn::Neg(P.power);
     V tail[tail_terms];
     {
@@ -366,10 +414,13 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
         tail_polynomial(clipper.derived()[7], coeffs);
         for (std::size_t k = 0; k < tail_terms; ++k) tail[k] = hn::Set(d, coeffs[k]);
     }
-    constexpr std::size_t capacity = 3 * block_colours + max_float_lanes;
-    // Zeroed once per call: the last vector of a pass reads past the packed values.
-    alignas(64) float nd_buf[capacity]{}, a_buf[capacity]{}, b_buf[capacity]{};
-    alignas(64) std::int32_t at_buf[capacity]{};
+    constexpr std::size_t capacity = block_colours + max_float_lanes;
+    constexpr std::size_t mask_bytes = (max_float_lanes + 7) / 8;
+    alignas(64) float planar[3][block_colours];
+    // Zeroed once per call: the last vector of a list reads past its packed values.
+    alignas(64) float nd_buf[3][capacity]{}, ach_buf[3][capacity]{};
+    alignas(8) std::uint8_t mask_buf[3][block_colours * mask_bytes];
+    std::uint8_t count_buf[3][block_colours];
     alignas(64) float hard_buf[3 * block_colours];
     std::size_t hard_at[block_colours];
     alignas(64) float flag[max_float_lanes];
@@ -377,8 +428,9 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
     const std::size_t whole = colours / n * n;
     for (std::size_t begin = 0; begin < whole; begin += block_colours) {
         const std::size_t end = std::min(whole, begin + block_colours);
-        std::size_t packed = 0, hard_count = 0;
-        for (std::size_t i = begin; i < end; i += n) {
+        std::size_t count[3] = {0, 0, 0}, hard_count = 0;
+        // (1)
+        for (std::size_t i = begin, vi = 0; i < end; i += n, ++vi) {
             V c[3];
             hn::LoadInterleaved3(d, in + 3 * i, c[0], c[1], c[2]);
             if (HWY_UNLIKELY(!hn::AllTrue(d, hn::And(hn::And(hn::IsFinite(c[0]), hn::IsFinite(c[1])),
@@ -390,61 +442,74 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
             const auto is_zero = hn::Eq(ach, zero);
             const auto hard =
                 hn::AndNot(is_zero, hn::Or(hn::Lt(abs_ach, tiny), hn::Gt(abs_ach, P.large)));
-            const auto skip = hn::Or(is_zero, hard);
-            const V inv_abs = hn::Div(one, hn::IfThenElse(skip, one, abs_ach));
-            const VI base = hn::Add(lane3, hn::Set(di, static_cast<std::int32_t>(3 * (i - begin))));
+            V inv_abs = hn::Div(one, abs_ach);
+            if (HWY_UNLIKELY(!hn::AllFalse(d, hn::Or(is_zero, hard)))) {
+                // NaN: d compares false with every threshold, so nothing is packed.
+                inv_abs = hn::IfThenElse(hn::Or(is_zero, hard), nan, inv_abs);
+                for (V& v : c) v = hn::IfThenZeroElse(is_zero, v);
+                if (!hn::AllFalse(d, hard)) {
+                    hn::Store(hn::IfThenElseZero(hard, one), d, flag);
+                    for (std::size_t k = 0; k < n; ++k) {
+                        if (flag[k] == 0.0f) continue;
+                        for (std::size_t m = 0; m < 3; ++m) {
+                            hard_buf[3 * hard_count + m] = in[3 * (i + k) + m];
+                        }
+                        hard_at[hard_count++] = i + k;
+                    }
+                }
+            }
             for (std::size_t k = 0; k < 3; ++k) {
                 const ChannelV<V>& C = P.ch[k];
                 const V dist = hn::Mul(hn::Sub(ach, c[k]), inv_abs);
-                const auto active = hn::AndNot(skip, hn::Ge(dist, C.thr));
-                if (!hn::AllFalse(d, active)) {
-                    const V nd = hn::Mul(hn::Sub(dist, C.thr), C.inv_scale);
-                    const V a = hn::NegMulAdd(C.thr, abs_ach, ach);
-                    const V b = hn::Neg(hn::Mul(C.scale, abs_ach));
-                    // Compress in registers, then a full store (the buffers have a vector of
-                    // slack): a compressing store to memory is microcoded and slow on x86.
-                    const VI at = hn::Add(base, hn::Set(di, static_cast<std::int32_t>(k)));
-                    hn::StoreU(CompressLanes(d, nd, active), d, nd_buf + packed);
-                    hn::StoreU(CompressLanes(d, a, active), d, a_buf + packed);
-                    hn::StoreU(CompressLanes(d, b, active), d, b_buf + packed);
-                    hn::StoreU(CompressLanes(di, at, hn::RebindMask(di, active)), di, at_buf + packed);
-                    packed += hn::CountTrue(d, active);
-                }
-                V v = hn::IfThenZeroElse(is_zero, c[k]);
-                if (P.confined) v = hn::Min(hn::Max(v, zero), P.max);
-                c[k] = v;
+                const auto active = hn::Ge(dist, C.thr);
+                hn::StoreMaskBits(d, active, mask_buf[k] + vi * mask_bytes);
+                // Compress in registers, then a full store (the lists have a vector of slack):
+                // a compressing store to memory is microcoded and slow on x86.
+                const V nd = hn::Mul(hn::Sub(dist, C.thr), C.inv_scale);
+                hn::StoreU(CompressLanes(d, nd, active), d, nd_buf[k] + count[k]);
+                hn::StoreU(CompressLanes(d, ach, active), d, ach_buf[k] + count[k]);
+                const std::size_t added = hn::CountTrue(d, active);
+                count_buf[k][vi] = static_cast<std::uint8_t>(added);
+                count[k] += added;
+                V v = c[k];
+                if (kConfined) v = hn::Min(hn::Max(v, zero), P.max);
+                hn::Store(v, d, planar[k] + (i - begin));
             }
-            if (HWY_UNLIKELY(!hn::AllFalse(d, hard))) {
-                hn::Store(hn::IfThenElseZero(hard, one), d, flag);
-                for (std::size_t k = 0; k < n; ++k) {
-                    if (flag[k] == 0.0f) continue;
-                    for (std::size_t m = 0; m < 3; ++m) hard_buf[3 * hard_count + m] = in[3 * (i + k) + m];
-                    hard_at[hard_count++] = i + k;
-                }
+        }
+        // (2) Two vectors at a time: the curve is one long dependent chain, and two independent
+        // chains keep the pipeline fuller. The last vector's unused lanes are left-over values,
+        // computed and never read.
+        for (std::size_t k = 0; k < 3; ++k) {
+            const ChannelV<V>& C = P.ch[k];
+            float* nd_k = nd_buf[k];
+            const float* ach_k = ach_buf[k];
+            const auto finish = [&](std::size_t j, V f) {
+                const V a = hn::Load(d, ach_k + j);
+                V o = hn::NegMulAdd(hn::MulAdd(C.scale, f, C.thr), hn::Abs(a), a);
+                o = kConfined ? hn::Min(hn::Max(o, zero), P.max)
+                              : hn::Min(hn::Max(o, hn::Neg(cap)), cap);
+                hn::Store(o, d, nd_k + j);
+            };
+            std::size_t j = 0;
+            for (; j + n < count[k]; j += 2 * n) {
+                const V f0 = ForwardCurve(d, hn::Load(d, nd_k + j), neg_power, tail);
+                const V f1 = ForwardCurve(d, hn::Load(d, nd_k + j + n), neg_power, tail);
+                finish(j, f0);
+                finish(j + n, f1);
             }
-            hn::StoreInterleaved3(c[0], c[1], c[2], d, out + 3 * i);
+            for (; j < count[k]; j += n) finish(j, ForwardCurve(d, hn::Load(d, nd_k + j), neg_power, tail));
         }
-        // (2) The curve on the packed channels (the last vector's unused lanes are left over
-        // values, computed and not written).
-        const auto finish = [&](std::size_t j, V f) {
-            V o = hn::MulAdd(hn::Load(d, b_buf + j), f, hn::Load(d, a_buf + j));
-            o = hn::Min(hn::Max(o, hn::Neg(cap)), cap);
-            if (P.confined) o = hn::Min(hn::Max(o, zero), P.max);
-            hn::Store(o, d, nd_buf + j);
-        };
-        // Two vectors at a time: the curve is a chain of four dependent transcendentals, and
-        // two independent chains keep the pipeline fuller.
-        std::size_t j = 0;
-        for (; j + 2 * n <= packed + n - 1; j += 2 * n) {
-            const V f0 = ForwardCurve(d, hn::Load(d, nd_buf + j), neg_power, tail);
-            const V f1 = ForwardCurve(d, hn::Load(d, nd_buf + j + n), neg_power, tail);
-            finish(j, f0);
-            finish(j + n, f1);
+        // (3)
+        std::size_t at[3] = {0, 0, 0};
+        for (std::size_t i = begin, vi = 0; i < end; i += n, ++vi) {
+            V o[3];
+            for (std::size_t k = 0; k < 3; ++k) {
+                o[k] = ExpandLanes(d, hn::LoadU(d, nd_buf[k] + at[k]), mask_buf[k] + vi * mask_bytes,
+                                   hn::Load(d, planar[k] + (i - begin)));
+                at[k] += count_buf[k][vi];
+            }
+            hn::StoreInterleaved3(o[0], o[1], o[2], d, out + 3 * i);
         }
-        for (; j < packed; j += n) finish(j, ForwardCurve(d, hn::Load(d, nd_buf + j), neg_power, tail));
-        // (3) Back to their places.
-        float* block_out = out + 3 * begin;
-        for (std::size_t q = 0; q < packed; ++q) block_out[at_buf[q]] = nd_buf[q];
         for (std::size_t h = 0; h < hard_count; ++h) {
             const float* c = hard_buf + 3 * h;
             const Rgb o = clipper.clip({c[0], c[1], c[2]});
@@ -455,6 +520,12 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
         }
     }
     return whole;
+}
+
+/// The forward: ForwardBlocks with or without the cube.
+std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, std::size_t colours) {
+    return clipper.confines_to_cube() ? ForwardBlocks<true>(clipper, in, out, colours)
+                                      : ForwardBlocks<false>(clipper, in, out, colours);
 }
 
 /// The inverse in double (its slope grows without bound toward the asymptote and would amplify
