@@ -346,9 +346,7 @@ template <class D, class V = hn::Vec<D>>
 HWY_INLINE V ForwardCurve(D d, V nd, V neg_power, const V (&tail)[tail_terms]) {
     using T = hn::TFromD<D>;
     const V one = hn::Set(d, static_cast<T>(1.0));
-    const V safe = hn::Min(hn::Max(nd, hn::Set(d, std::numeric_limits<T>::min())),
-                           hn::Set(d, static_cast<T>(1e30)));
-    const V y = hn::Max(hn::Mul(neg_power, hn::Abs(FastLog2(d, safe))), hn::Set(d, static_cast<T>(-127.0)));
+    const V y = hn::Max(hn::Mul(neg_power, hn::Abs(FastLog2(d, nd))), hn::Set(d, static_cast<T>(-127.0)));
     const V t = hn::MulAdd(FastExp2(d, y), hn::Set(d, static_cast<T>(2.0)), hn::Neg(one));
     V q = tail[tail_terms - 1];
     for (std::size_t k = tail_terms - 1; k-- > 0;) q = hn::MulAdd(q, t, tail[k]);
@@ -465,8 +463,7 @@ std::size_t ForwardBlocks(const GamutClipper& clipper, const float* in, float* o
                 hn::StoreMaskBits(d, active, mask_buf[k] + vi * mask_bytes);
                 // Compress in registers, then a full store (the lists have a vector of slack):
                 // a compressing store to memory is microcoded and slow on x86.
-                const V nd = hn::Mul(hn::Sub(dist, C.thr), C.inv_scale);
-                hn::StoreU(CompressLanes(d, nd, active), d, nd_buf[k] + count[k]);
+                hn::StoreU(CompressLanes(d, dist, active), d, nd_buf[k] + count[k]);
                 hn::StoreU(CompressLanes(d, ach, active), d, ach_buf[k] + count[k]);
                 const std::size_t added = hn::CountTrue(d, active);
                 count_buf[k][vi] = static_cast<std::uint8_t>(added);
@@ -490,14 +487,17 @@ std::size_t ForwardBlocks(const GamutClipper& clipper, const float* in, float* o
                               : hn::Min(hn::Max(o, hn::Neg(cap)), cap);
                 hn::Store(o, d, nd_k + j);
             };
+            const auto curve = [&](std::size_t j) {
+                const V nd = hn::Mul(hn::Sub(hn::Load(d, nd_k + j), C.thr), C.inv_scale);
+                return ForwardCurve(d, nd, neg_power, tail);
+            };
             std::size_t j = 0;
             for (; j + n < count[k]; j += 2 * n) {
-                const V f0 = ForwardCurve(d, hn::Load(d, nd_k + j), neg_power, tail);
-                const V f1 = ForwardCurve(d, hn::Load(d, nd_k + j + n), neg_power, tail);
+                const V f0 = curve(j), f1 = curve(j + n);
                 finish(j, f0);
                 finish(j + n, f1);
             }
-            for (; j < count[k]; j += n) finish(j, ForwardCurve(d, hn::Load(d, nd_k + j), neg_power, tail));
+            for (; j < count[k]; j += n) finish(j, curve(j));
         }
         // (3)
         std::size_t at[3] = {0, 0, 0};
