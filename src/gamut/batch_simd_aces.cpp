@@ -1,21 +1,23 @@
 // The SIMD batch kernel of aces-rgc (Google Highway, dynamic dispatch), forward and inverse.
 //
 // Per vector of colours, the scalar reference's steps (aces_rgc.cpp): the non-finite rule,
-// ach = max(r, g, b), per channel d = (ach − c)·(1/|ach|), and beyond the threshold the curve,
-// through L = ln nd:
-//   forward  D = thr + s·exp(min(L, 0) − log1p(exp(−p|L|))/p)
-//            (= thr + s·nd/(1 + nd^p)^(1/p), with no exponent above 0: no overflow), in float,
-//            with this file's FastLog / FastExpNonPositive (no division);
-//   inverse  D = thr + s·exp(L − log1p(−u)/p), u = exp(p L) = nd^p (Highway's Exp, Log, Log1p
-//            of hwy/contrib/math/math-inl.h), for d below the asymptote
+// ach = max(r, g, b), per channel d = (ach − c)·(1/|ach|), and beyond the threshold the curve of
+// nd = (d − thr)/s:
+//   forward  D = thr + s·min(nd, 1)·(1 + v)^(−1/p), v = 2^(−p|log2 nd|) = min(nd, 1/nd)^p
+//            (= thr + s·nd/(1 + nd^p)^(1/p), with v in [0, 1]: no overflow), in float, with
+//            this file's FastLog2 / FastExp2 and a polynomial for (1 + v)^(−1/p) fitted per call
+//            (tail_polynomial; no division but the one 1/|ach| per vector);
+//   inverse  D = thr + s·exp(L − log1p(−u)/p), L = ln nd, u = exp(p L) = nd^p (Highway's Exp,
+//            Log, Log1p of hwy/contrib/math/math-inl.h), for d below the asymptote
 //            thr + s (unchanged from there on), in double: its slope (1 − u)^(−(1+p)/p) grows
 //            without bound toward the asymptote and amplifies float's rounding of d beyond
 //            1e-5 (measured: 9e-6 with float up to u = 0.9);
 // then ach − D·|ach|, capped at ±1e30 (a compressed channel, as the reference), and clamped
-// into [0, max] when the clipper confines. The forward packs the compressed channels of a block
-// of 512 colours into dense buffers (a third of the channels on the benchmark's input, where
-// nearly every vector has some) and runs the curve on full vectors of those only; the inverse
-// runs it per vector, skipping a channel whose lanes are all below the threshold.
+// into [0, max] when the clipper confines. The forward packs, per block of 256 colours and per
+// channel, the lanes beyond the threshold into a list (a third of the channels on the
+// benchmark's input, where nearly every vector has some), runs the curve on full vectors of the
+// lists only and expands the results back (ForwardBlocks); the inverse runs the curve per
+// vector, skipping a channel whose lanes are all below the threshold.
 //
 // Lanes sent to the double reference (GamutClipper::clip, written over the vector's result):
 // - forward: |ach| < 1e-30 (not 0, which gives 0 here as in the reference), where 1/|ach| may
@@ -51,7 +53,8 @@ namespace {
 /// the index of the j-th set bit of m; the nibbles past the count are 0). At namespace scope:
 /// Highway 1.0.3's own table for 8 × 32-bit lanes is a local constexpr array inside
 /// IndicesFromBits (hwy/ops/x86_256-inl.h), which g++ 12 copies onto the stack (1 KiB, `rep movs`)
-/// at every Compress; that made this kernel 6× slower on AVX2 than on AVX-512.
+/// at every Compress; that made this kernel 4× slower on AVX2 (33 ns per colour, against 5 on
+/// AVX-512).
 struct CompressTable {
     std::uint32_t nibbles[256];
 };
@@ -387,11 +390,12 @@ constexpr std::size_t block_colours = 256;
 
 /// The forward in float, in blocks of block_colours, in three passes:
 /// (1) per vector: the non-finite rule, ach, and per channel d = (ach − c)·(1/|ach|) (one
-///     division per vector); the lanes at or beyond the threshold are packed (Compress) as nd and
+///     division per vector); the lanes at or beyond the threshold are packed (Compress) as d and
 ///     ach into that channel's list, their mask and count kept; the channel as it is (0 where
 ///     ach = 0, clamped into the cube when confined) is stored in a planar buffer;
 /// (2) per channel, the curve on full vectors of its list only (a third of the channels on the
-///     benchmark's input, where nearly every vector has some): out = ach − (thr + s f(nd))·|ach|;
+///     benchmark's input, where nearly every vector has some): nd = (d − thr)/s and
+///     out = ach − (thr + s f(nd))·|ach|;
 /// (3) per vector: each channel's results expanded (Expand) over its planar values by the kept
 ///     mask, stored interleaved; then the hard lanes by the double reference.
 /// `out` may be `in`: a block is read whole before it is written.
