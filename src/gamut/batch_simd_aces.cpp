@@ -1,21 +1,23 @@
 // The SIMD batch kernel of aces-rgc (Google Highway, dynamic dispatch), forward and inverse.
 //
 // Per vector of colours, the scalar reference's steps (aces_rgc.cpp): the non-finite rule,
-// ach = max(r, g, b), per channel d = (ach − c)·(1/|ach|), and beyond the threshold the curve,
-// through L = ln nd:
-//   forward  D = thr + s·exp(min(L, 0) − log1p(exp(−p|L|))/p)
-//            (= thr + s·nd/(1 + nd^p)^(1/p), with no exponent above 0: no overflow), in float,
-//            with this file's FastLog / FastExpNonPositive (no division);
-//   inverse  D = thr + s·exp(L − log1p(−u)/p), u = exp(p L) = nd^p (Highway's Exp, Log, Log1p
-//            of hwy/contrib/math/math-inl.h), for d below the asymptote
+// ach = max(r, g, b), per channel d = (ach − c)·(1/|ach|), and beyond the threshold the curve of
+// nd = (d − thr)/s:
+//   forward  D = thr + s·min(nd, 1)·(1 + v)^(−1/p), v = 2^(−p|log2 nd|) = min(nd, 1/nd)^p
+//            (= thr + s·nd/(1 + nd^p)^(1/p), with v in [0, 1]: no overflow), in float, with
+//            this file's FastLog2 / FastExp2 and a polynomial for (1 + v)^(−1/p) fitted per call
+//            (tail_polynomial; no division but the one 1/|ach| per vector);
+//   inverse  D = thr + s·exp(L − log1p(−u)/p), L = ln nd, u = exp(p L) = nd^p (Highway's Exp,
+//            Log, Log1p of hwy/contrib/math/math-inl.h), for d below the asymptote
 //            thr + s (unchanged from there on), in double: its slope (1 − u)^(−(1+p)/p) grows
 //            without bound toward the asymptote and amplifies float's rounding of d beyond
 //            1e-5 (measured: 9e-6 with float up to u = 0.9);
 // then ach − D·|ach|, capped at ±1e30 (a compressed channel, as the reference), and clamped
-// into [0, max] when the clipper confines. The forward packs the compressed channels of a block
-// of 512 colours into dense buffers (a third of the channels on the benchmark's input, where
-// nearly every vector has some) and runs the curve on full vectors of those only; the inverse
-// runs it per vector, skipping a channel whose lanes are all below the threshold.
+// into [0, max] when the clipper confines. The forward packs, per block of 256 colours and per
+// channel, the lanes beyond the threshold into a list (a third of the channels on the
+// benchmark's input, where nearly every vector has some), runs the curve on full vectors of the
+// lists only and expands the results back (ForwardBlocks); the inverse runs the curve per
+// vector, skipping a channel whose lanes are all below the threshold.
 //
 // Lanes sent to the double reference (GamutClipper::clip, written over the vector's result):
 // - forward: |ach| < 1e-30 (not 0, which gives 0 here as in the reference), where 1/|ach| may
@@ -36,9 +38,102 @@
 #include "kernels.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numbers>
+
+#ifndef IRID_GAMUT_BATCH_SIMD_ACES_ONCE
+#define IRID_GAMUT_BATCH_SIMD_ACES_ONCE
+namespace irid {
+namespace {
+
+/// For each mask m of up to 8 lanes, the lane indices of Compress packed in nibbles (nibble j =
+/// the index of the j-th set bit of m; the nibbles past the count are 0). At namespace scope:
+/// Highway 1.0.3's own table for 8 × 32-bit lanes is a local constexpr array inside
+/// IndicesFromBits (hwy/ops/x86_256-inl.h), which g++ 12 copies onto the stack (1 KiB, `rep movs`)
+/// at every Compress; that made this kernel 4× slower on AVX2 (33 ns per colour, against 5 on
+/// AVX-512).
+struct CompressTable {
+    std::uint32_t nibbles[256];
+};
+
+constexpr CompressTable make_compress_table() noexcept {
+    CompressTable t{};
+    for (std::uint32_t m = 0; m < 256; ++m) {
+        std::uint32_t packed = 0, j = 0;
+        for (std::uint32_t lane = 0; lane < 8; ++lane) {
+            if ((m >> lane) & 1u) packed |= lane << (4 * j++);
+        }
+        t.nibbles[m] = packed;
+    }
+    return t;
+}
+
+inline constexpr CompressTable compress_table = make_compress_table();
+
+/// For each mask m of up to 8 lanes, the lane indices of Expand packed in nibbles (nibble j =
+/// the number of set bits of m below bit j: where lane j takes its value from).
+constexpr CompressTable make_expand_table() noexcept {
+    CompressTable t{};
+    for (std::uint32_t m = 0; m < 256; ++m) {
+        std::uint32_t packed = 0, below = 0;
+        for (std::uint32_t lane = 0; lane < 8; ++lane) {
+            packed |= below << (4 * lane);
+            below += (m >> lane) & 1u;
+        }
+        t.nibbles[m] = packed;
+    }
+    return t;
+}
+
+inline constexpr CompressTable expand_table = make_expand_table();
+
+/// Terms of the polynomial that gives the forward curve's (1 + v)^(−1/p) (degree 9).
+constexpr std::size_t tail_terms = 10;
+
+/// The monomial coefficients, in t = 2v − 1, of the Chebyshev interpolant (at the 10 Chebyshev
+/// nodes of [−1, 1]) of q(v) = (1 + v)^(−a) over v in [0, 1], rounded to float. q is analytic
+/// save at v = −1, so the interpolation error falls as (3 + √8)^(−10): below 5e-8 relative for
+/// every a in (0, 1] (a = 1, the largest, is the pole 1/(1 + v)); the coefficients are below 1
+/// in magnitude, so float's Horner evaluation adds only about 1e-7. 20 calls of libm per call of
+/// the kernel (16384 colours).
+void tail_polynomial(double a, float (&coeffs)[tail_terms]) noexcept {
+    constexpr std::size_t n = tail_terms;
+    double cheb[n] = {};
+    for (std::size_t k = 0; k < n; ++k) {
+        const double t = std::cos(std::numbers::pi * (static_cast<double>(k) + 0.5) / n);
+        const double q = std::pow(1.5 + 0.5 * t, -a);
+        double t0 = 1.0, t1 = t;  // T_j(t) by T_{j+1} = 2t T_j − T_{j−1}
+        for (std::size_t j = 0; j < n; ++j) {
+            cheb[j] += q * t0;
+            const double t2 = 2.0 * t * t1 - t0;
+            t0 = t1;
+            t1 = t2;
+        }
+    }
+    // Σ cheb_j T_j(t) → Σ mono_i t^i, the monomials of T_j by the same recurrence.
+    double mono[n] = {}, prev[n] = {}, cur[n] = {}, next[n] = {};
+    prev[0] = 1.0;
+    cur[1] = 1.0;
+    for (std::size_t j = 0; j < n; ++j) {
+        const double c = cheb[j] * (j == 0 ? 1.0 : 2.0) / n;
+        const double* tj = j == 0 ? prev : cur;
+        for (std::size_t i = 0; i < n; ++i) mono[i] += c * tj[i];
+        if (j == 0) continue;
+        for (std::size_t i = 0; i < n; ++i) next[i] = (i > 0 ? 2.0 * cur[i - 1] : 0.0) - prev[i];
+        for (std::size_t i = 0; i < n; ++i) {
+            prev[i] = cur[i];
+            cur[i] = next[i];
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) coeffs[i] = static_cast<float>(mono[i]);
+}
+
+}  // namespace
+}  // namespace irid
+#endif  // IRID_GAMUT_BATCH_SIMD_ACES_ONCE
 
 HWY_BEFORE_NAMESPACE();
 namespace irid {
@@ -46,6 +141,26 @@ namespace HWY_NAMESPACE {
 namespace {
 
 namespace hn = hwy::HWY_NAMESPACE;
+
+/// Compress(v, m) of hwy (the lanes of m in order first, the rest unspecified). AVX-512 has an
+/// instruction (register form); the other x86 targets (at most 8 lanes of float) look the lane
+/// indices up in compress_table and permute; other architectures use Highway's.
+template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
+HWY_INLINE V CompressLanes(D d, V v, M m) {
+#if HWY_ARCH_X86 && HWY_TARGET != HWY_AVX3 && HWY_TARGET != HWY_AVX3_DL && HWY_TARGET != HWY_SCALAR
+    static_assert(hn::MaxLanes(D()) <= 8, "the table covers up to 8 lanes");
+    const hn::RebindToUnsigned<D> du;
+    std::uint8_t bits[8] = {};
+    hn::StoreMaskBits(d, m, bits);
+    const auto shifts = hn::ShiftLeft<2>(hn::Iota(du, 0));
+    const auto idx = hn::And(hn::Shr(hn::Set(du, compress_table.nibbles[bits[0]]), shifts),
+                             hn::Set(du, static_cast<std::uint32_t>(hn::MaxLanes(D()) - 1)));
+    return hn::TableLookupLanes(v, hn::IndicesFromVec(d, idx));
+#else
+    (void)d;
+    return hn::Compress(v, m);
+#endif
+}
 
 /// The float (forward) or double (inverse) parameters of one channel's curve.
 template <class V>
@@ -177,13 +292,13 @@ HWY_INLINE void Patch(const GamutClipper& clipper, const float* in, float* out, 
 
 constexpr std::size_t max_float_lanes = HWY_MAX_BYTES / sizeof(float);
 
-/// ln x for positive normal float x, without a division: x = 2^e m with m in [√½, √2),
-/// ln m = 2 atanh(t), t = (m − 1)/(m + 1) in [−0.172, 0.172], by its series
-/// 2t (1 + t²/3 + t⁴/5 + t⁶/7 + t⁸/9) (truncation below 1e-9), 1/(m + 1) by the approximate
-/// reciprocal and one Newton step, and e ln 2 with ln 2 split in two (Cody and Waite) so that
-/// e ln 2_hi is exact. Within a few 1e-8 of ln x, absolutely, over the normal range.
+/// log2 x for positive normal float x, without a division: x = 2^e m with m in [√½, √2),
+/// log2 m = (2/ln 2) atanh(t), t = (m − 1)/(m + 1) in [−0.172, 0.172], by its series
+/// (2/ln 2) t (1 + t²/3 + t⁴/5 + t⁶/7) (truncation below 5e-8), 1/(m + 1) by the approximate
+/// reciprocal and one Newton step. Within about 1e-7 of log2 x, absolutely, over the normal range
+/// (what the curve needs: it uses log2 only through v = 2^(−p|log2 nd|), see ForwardCurve).
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE V FastLog(D d, V x) {
+HWY_INLINE V FastLog2(D d, V x) {
     const hn::RebindToSigned<D> di;
     // Offset so that the exponent field counts from √½ (0x3F3504F3 = the bits of √½).
     const auto bits = hn::Sub(hn::BitCast(di, x), hn::Set(di, 0x3F3504F3));
@@ -195,75 +310,119 @@ HWY_INLINE V FastLog(D d, V x) {
     inv = hn::Mul(inv, hn::NegMulAdd(den, inv, two));  // Newton: y (2 − a y)
     const V t = hn::Mul(hn::Sub(m, one), inv);
     const V t2 = hn::Mul(t, t);
-    V series = hn::MulAdd(t2, hn::Set(d, 1.0f / 9.0f), hn::Set(d, 1.0f / 7.0f));
-    series = hn::MulAdd(series, t2, hn::Set(d, 1.0f / 5.0f));
+    V series = hn::MulAdd(t2, hn::Set(d, 1.0f / 7.0f), hn::Set(d, 1.0f / 5.0f));
     series = hn::MulAdd(series, t2, hn::Set(d, 1.0f / 3.0f));
     series = hn::Mul(series, t2);
-    const V ln_m = hn::MulAdd(hn::Mul(two, t), series, hn::Mul(two, t));
-    // ln 2 = 0.693145751953125 (exact in 16 bits) + 1.4286068203094172e-6.
-    return hn::MulAdd(e, hn::Set(d, 0.693145751953125f),
-                      hn::MulAdd(e, hn::Set(d, 1.4286068203094172e-6f), ln_m));
+    const V u = hn::Mul(t, hn::Set(d, static_cast<float>(2.0 / std::numbers::ln2)));
+    return hn::Add(e, hn::MulAdd(u, series, u));
 }
 
-/// e^x for x <= 0 in float, 0 below −87 (where e^x is no longer a normal float and matters to no
-/// colour): x = k ln 2 + r, |r| <= ln2/2, e^r by its Taylor series to r^7/7! (truncation below
-/// 6e-9 relative), times 2^k from the exponent bits.
+/// 2^y for y in [−127, 0] in float (0 at −127, where 2^y is no longer a normal float and
+/// matters to no colour): y = k + r, k = round(y) by adding and subtracting 1.5·2^23, |r| <= ½,
+/// 2^r = e^(r ln 2) by its Taylor series to degree 6 (truncation below 1.2e-7 relative), times
+/// 2^k from the exponent bits (k + 127 sits in the low bits of y + 1.5·2^23).
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE V FastExpNonPositive(D d, V x) {
+HWY_INLINE V FastExp2(D d, V y) {
     const hn::RebindToSigned<D> di;
-    const V k = hn::Round(hn::Mul(x, hn::Set(d, 1.4426950408889634f)));  // x / ln 2
-    const V r = hn::NegMulAdd(k, hn::Set(d, 1.4286068203094172e-6f),
-                              hn::NegMulAdd(k, hn::Set(d, 0.693145751953125f), x));
-    V p = hn::MulAdd(r, hn::Set(d, 1.0f / 5040.0f), hn::Set(d, 1.0f / 720.0f));
-    p = hn::MulAdd(p, r, hn::Set(d, 1.0f / 120.0f));
-    p = hn::MulAdd(p, r, hn::Set(d, 1.0f / 24.0f));
-    p = hn::MulAdd(p, r, hn::Set(d, 1.0f / 6.0f));
-    p = hn::MulAdd(p, r, hn::Set(d, 0.5f));
+    const V magic = hn::Set(d, 12582912.0f);  // 1.5·2^23
+    const V shifted = hn::Add(y, magic);
+    const V r = hn::Sub(y, hn::Sub(shifted, magic));
+    constexpr double l = std::numbers::ln2;
+    V p = hn::MulAdd(r, hn::Set(d, static_cast<float>(l * l * l * l * l * l / 720.0)),
+                     hn::Set(d, static_cast<float>(l * l * l * l * l / 120.0)));
+    p = hn::MulAdd(p, r, hn::Set(d, static_cast<float>(l * l * l * l / 24.0)));
+    p = hn::MulAdd(p, r, hn::Set(d, static_cast<float>(l * l * l / 6.0)));
+    p = hn::MulAdd(p, r, hn::Set(d, static_cast<float>(l * l / 2.0)));
+    p = hn::MulAdd(p, r, hn::Set(d, static_cast<float>(l)));
     p = hn::MulAdd(p, r, hn::Set(d, 1.0f));
-    p = hn::MulAdd(p, r, hn::Set(d, 1.0f));
-    const V scale = hn::BitCast(d, hn::ShiftLeft<23>(hn::Add(hn::ConvertTo(di, k), hn::Set(di, 127))));
-    return hn::IfThenElseZero(hn::Ge(x, hn::Set(d, -87.0f)), hn::Mul(p, scale));
+    const V scale = hn::BitCast(d, hn::ShiftLeft<23>(hn::Add(hn::BitCast(di, shifted), hn::Set(di, 127))));
+    return hn::Mul(p, scale);
 }
 
-/// The forward curve f(nd) = nd / (1 + nd^p)^(1/p) = exp(min(L, 0) − ln(1 + exp(−p|L|))/p),
-/// L = ln nd, in float (nd >= 0; exponents never above 0, so nothing overflows). ln(1 + e) for
-/// e in [0, 1] is taken as Log(1 + e): its absolute error (an ulp of 1, 6e-8) is what f needs.
+/// The forward curve f(nd) = nd / (1 + nd^p)^(1/p) in float (nd >= 0, also +inf), written as
+/// min(nd, 1) q(v) with v = min(nd, 1/nd)^p = 2^(−p |log2 nd|) in [0, 1] and
+/// q(v) = (1 + v)^(−1/p) (for nd > 1, nd (1 + nd^p)^(−1/p) = (1 + nd^(−p))^(−1/p)); q is the
+/// polynomial of tail_polynomial in t = 2v − 1 (coefficients `tail`). Nothing overflows, and
+/// the error of log2 moves q by at most ln 2 · v/(1 + v) of it, that of 2^r by 1/(2p): f is
+/// within about 2e-7 of itself, relatively.
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE V ForwardCurve(D d, V nd, V power, V inv_power) {
+HWY_INLINE V ForwardCurve(D d, V nd, V neg_power, const V (&tail)[tail_terms]) {
     using T = hn::TFromD<D>;
-    const V safe = hn::Min(hn::Max(nd, hn::Set(d, std::numeric_limits<T>::min())),
-                           hn::Set(d, static_cast<T>(1e30)));
-    const V L = FastLog(d, safe);
-    const V e = FastExpNonPositive(d, hn::Neg(hn::Mul(power, hn::Abs(L))));
-    const V l1 = FastLog(d, hn::Add(hn::Set(d, static_cast<T>(1.0)), e));
-    return FastExpNonPositive(d, hn::NegMulAdd(l1, inv_power, hn::Min(L, hn::Zero(d))));
+    const V one = hn::Set(d, static_cast<T>(1.0));
+    const V y = hn::Max(hn::Mul(neg_power, hn::Abs(FastLog2(d, nd))), hn::Set(d, static_cast<T>(-127.0)));
+    const V t = hn::MulAdd(FastExp2(d, y), hn::Set(d, static_cast<T>(2.0)), hn::Neg(one));
+    V q = tail[tail_terms - 1];
+    for (std::size_t k = tail_terms - 1; k-- > 0;) q = hn::MulAdd(q, t, tail[k]);
+    return hn::Mul(hn::Min(nd, one), q);
 }
 
-/// Colours per block of the forward: its compressed channels are gathered into dense buffers so
-/// that the curve runs on full vectors of them only (a third of the channels on the benchmark's
-/// input, nearly every vector having some).
-constexpr std::size_t block_colours = 512;
+/// Expand, the inverse of Compress: the lanes set in the mask whose StoreMaskBits are `bits` take,
+/// in order, the first lanes of `packed`; the others keep `fallback`. AVX-512 has an instruction
+/// (register form); the other x86 targets look the lane indices up in expand_table, permute and
+/// blend; other architectures go lane by lane.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ExpandLanes(D d, V packed, const std::uint8_t* bits, V fallback) {
+#if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+    return V{_mm512_mask_expand_ps(fallback.raw, hn::LoadMaskBits(d, bits).raw, packed.raw)};
+#elif HWY_ARCH_X86 && HWY_TARGET != HWY_SCALAR
+    static_assert(hn::MaxLanes(D()) <= 8, "the table covers up to 8 lanes");
+    const hn::RebindToUnsigned<D> du;
+    const auto shifts = hn::ShiftLeft<2>(hn::Iota(du, 0));
+    const auto idx = hn::And(hn::Shr(hn::Set(du, expand_table.nibbles[bits[0]]), shifts),
+                             hn::Set(du, static_cast<std::uint32_t>(hn::MaxLanes(D()) - 1)));
+    return hn::IfThenElse(hn::LoadMaskBits(d, bits),
+                          hn::TableLookupLanes(packed, hn::IndicesFromVec(d, idx)), fallback);
+#else
+    using T = hn::TFromD<D>;
+    constexpr std::size_t lanes = HWY_MAX_BYTES / sizeof(T);
+    alignas(64) T p[lanes], f[lanes];
+    hn::Store(packed, d, p);
+    hn::Store(fallback, d, f);
+    for (std::size_t k = 0, j = 0; k < hn::Lanes(d); ++k) {
+        if ((bits[k / 8] >> (k % 8)) & 1u) f[k] = p[j++];
+    }
+    return hn::Load(d, f);
+#endif
+}
 
-/// The forward in float, in blocks: (1) per vector, the untouched channels are stored and the
-/// compressed ones packed (Compress) as nd with out = A + B·f(nd), A = ach − thr·|ach|,
-/// B = −s·|ach|, and their position; (2) the curve on the packed values; (3) the results written
-/// to their positions; then the hard lanes by the double reference.
-std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, std::size_t colours) {
+/// Colours per block of the forward (its buffers, about 16 KiB, stay in L1).
+constexpr std::size_t block_colours = 256;
+
+/// The forward in float, in blocks of block_colours, in three passes:
+/// (1) per vector: the non-finite rule, ach, and per channel d = (ach − c)·(1/|ach|) (one
+///     division per vector); the lanes at or beyond the threshold are packed (Compress) as d and
+///     ach into that channel's list, their mask and count kept; the channel as it is (0 where
+///     ach = 0, clamped into the cube when confined) is stored in a planar buffer;
+/// (2) per channel, the curve on full vectors of its list only (a third of the channels on the
+///     benchmark's input, where nearly every vector has some): nd = (d − thr)/s and
+///     out = ach − (thr + s f(nd))·|ach|;
+/// (3) per vector: each channel's results expanded (Expand) over its planar values by the kept
+///     mask, stored interleaved; then the hard lanes by the double reference.
+/// `out` may be `in`: a block is read whole before it is written.
+template <bool kConfined>
+std::size_t ForwardBlocks(const GamutClipper& clipper, const float* in, float* out,
+                          std::size_t colours) {
     using D = hn::ScalableTag<float>;
-    using DI = hn::RebindToSigned<D>;
     const D d;
-    const DI di;
     using V = hn::Vec<D>;
-    using VI = hn::Vec<DI>;
     const std::size_t n = hn::Lanes(d);
     const AcesV<D> P(d, clipper, 16.0, 1e30);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), tiny = hn::Set(d, 1e-30f);
-    const V cap = hn::Set(d, 1e30f);
-    const VI lane3 = hn::Mul(hn::Iota(di, 0), hn::Set(di, 3));
-    constexpr std::size_t capacity = 3 * block_colours + max_float_lanes;
-    // Zeroed once per call: the last vector of a pass reads past the packed values.
-    alignas(64) float nd_buf[capacity]{}, a_buf[capacity]{}, b_buf[capacity]{};
-    alignas(64) std::int32_t at_buf[capacity]{};
+    const V cap = hn::Set(d, 1e30f), nan = hn::Set(d, std::numeric_limits<float>::quiet_NaN());
+    const V neg_power = hn::Neg(P.power);
+    V tail[tail_terms];
+    {
+        float coeffs[tail_terms];
+        tail_polynomial(clipper.derived()[7], coeffs);
+        for (std::size_t k = 0; k < tail_terms; ++k) tail[k] = hn::Set(d, coeffs[k]);
+    }
+    constexpr std::size_t capacity = block_colours + max_float_lanes;
+    constexpr std::size_t mask_bytes = (max_float_lanes + 7) / 8;
+    alignas(64) float planar[3][block_colours];
+    // Zeroed once per call: the last vector of a list reads past its packed values.
+    alignas(64) float nd_buf[3][capacity]{}, ach_buf[3][capacity]{};
+    alignas(8) std::uint8_t mask_buf[3][block_colours * mask_bytes];
+    std::uint8_t count_buf[3][block_colours];
     alignas(64) float hard_buf[3 * block_colours];
     std::size_t hard_at[block_colours];
     alignas(64) float flag[max_float_lanes];
@@ -271,8 +430,9 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
     const std::size_t whole = colours / n * n;
     for (std::size_t begin = 0; begin < whole; begin += block_colours) {
         const std::size_t end = std::min(whole, begin + block_colours);
-        std::size_t packed = 0, hard_count = 0;
-        for (std::size_t i = begin; i < end; i += n) {
+        std::size_t count[3] = {0, 0, 0}, hard_count = 0;
+        // (1)
+        for (std::size_t i = begin, vi = 0; i < end; i += n, ++vi) {
             V c[3];
             hn::LoadInterleaved3(d, in + 3 * i, c[0], c[1], c[2]);
             if (HWY_UNLIKELY(!hn::AllTrue(d, hn::And(hn::And(hn::IsFinite(c[0]), hn::IsFinite(c[1])),
@@ -284,61 +444,76 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
             const auto is_zero = hn::Eq(ach, zero);
             const auto hard =
                 hn::AndNot(is_zero, hn::Or(hn::Lt(abs_ach, tiny), hn::Gt(abs_ach, P.large)));
-            const auto skip = hn::Or(is_zero, hard);
-            const V inv_abs = hn::Div(one, hn::IfThenElse(skip, one, abs_ach));
-            const VI base = hn::Add(lane3, hn::Set(di, static_cast<std::int32_t>(3 * (i - begin))));
+            V inv_abs = hn::Div(one, abs_ach);
+            if (HWY_UNLIKELY(!hn::AllFalse(d, hn::Or(is_zero, hard)))) {
+                // NaN: d compares false with every threshold, so nothing is packed.
+                inv_abs = hn::IfThenElse(hn::Or(is_zero, hard), nan, inv_abs);
+                for (V& v : c) v = hn::IfThenZeroElse(is_zero, v);
+                if (!hn::AllFalse(d, hard)) {
+                    hn::Store(hn::IfThenElseZero(hard, one), d, flag);
+                    for (std::size_t k = 0; k < n; ++k) {
+                        if (flag[k] == 0.0f) continue;
+                        for (std::size_t m = 0; m < 3; ++m) {
+                            hard_buf[3 * hard_count + m] = in[3 * (i + k) + m];
+                        }
+                        hard_at[hard_count++] = i + k;
+                    }
+                }
+            }
             for (std::size_t k = 0; k < 3; ++k) {
                 const ChannelV<V>& C = P.ch[k];
                 const V dist = hn::Mul(hn::Sub(ach, c[k]), inv_abs);
-                const auto active = hn::AndNot(skip, hn::Ge(dist, C.thr));
-                if (!hn::AllFalse(d, active)) {
-                    const V nd = hn::Mul(hn::Sub(dist, C.thr), C.inv_scale);
-                    const V a = hn::NegMulAdd(C.thr, abs_ach, ach);
-                    const V b = hn::Neg(hn::Mul(C.scale, abs_ach));
-                    // Compress in registers, then a full store (the buffers have a vector of
-                    // slack): a compressing store to memory is microcoded and slow on x86.
-                    const VI at = hn::Add(base, hn::Set(di, static_cast<std::int32_t>(k)));
-                    hn::StoreU(hn::Compress(nd, active), d, nd_buf + packed);
-                    hn::StoreU(hn::Compress(a, active), d, a_buf + packed);
-                    hn::StoreU(hn::Compress(b, active), d, b_buf + packed);
-                    hn::StoreU(hn::Compress(at, hn::RebindMask(di, active)), di, at_buf + packed);
-                    packed += hn::CountTrue(d, active);
-                }
-                V v = hn::IfThenZeroElse(is_zero, c[k]);
-                if (P.confined) v = hn::Min(hn::Max(v, zero), P.max);
-                c[k] = v;
+                const auto active = hn::Ge(dist, C.thr);
+                hn::StoreMaskBits(d, active, mask_buf[k] + vi * mask_bytes);
+                // Compress in registers, then a full store (the lists have a vector of slack):
+                // a compressing store to memory is microcoded and slow on x86.
+                hn::StoreU(CompressLanes(d, dist, active), d, nd_buf[k] + count[k]);
+                hn::StoreU(CompressLanes(d, ach, active), d, ach_buf[k] + count[k]);
+                const std::size_t added = hn::CountTrue(d, active);
+                count_buf[k][vi] = static_cast<std::uint8_t>(added);
+                count[k] += added;
+                V v = c[k];
+                if (kConfined) v = hn::Min(hn::Max(v, zero), P.max);
+                hn::Store(v, d, planar[k] + (i - begin));
             }
-            if (HWY_UNLIKELY(!hn::AllFalse(d, hard))) {
-                hn::Store(hn::IfThenElseZero(hard, one), d, flag);
-                for (std::size_t k = 0; k < n; ++k) {
-                    if (flag[k] == 0.0f) continue;
-                    for (std::size_t m = 0; m < 3; ++m) hard_buf[3 * hard_count + m] = in[3 * (i + k) + m];
-                    hard_at[hard_count++] = i + k;
-                }
+        }
+        // (2) Two vectors at a time: the curve is one long dependent chain, and two independent
+        // chains keep the pipeline fuller. The last vector's unused lanes are left-over values,
+        // computed and never read.
+        for (std::size_t k = 0; k < 3; ++k) {
+            const ChannelV<V>& C = P.ch[k];
+            float* nd_k = nd_buf[k];
+            const float* ach_k = ach_buf[k];
+            const auto finish = [&](std::size_t j, V f) {
+                const V a = hn::Load(d, ach_k + j);
+                V o = hn::NegMulAdd(hn::MulAdd(C.scale, f, C.thr), hn::Abs(a), a);
+                o = kConfined ? hn::Min(hn::Max(o, zero), P.max)
+                              : hn::Min(hn::Max(o, hn::Neg(cap)), cap);
+                hn::Store(o, d, nd_k + j);
+            };
+            const auto curve = [&](std::size_t j) {
+                const V nd = hn::Mul(hn::Sub(hn::Load(d, nd_k + j), C.thr), C.inv_scale);
+                return ForwardCurve(d, nd, neg_power, tail);
+            };
+            std::size_t j = 0;
+            for (; j + n < count[k]; j += 2 * n) {
+                const V f0 = curve(j), f1 = curve(j + n);
+                finish(j, f0);
+                finish(j + n, f1);
             }
-            hn::StoreInterleaved3(c[0], c[1], c[2], d, out + 3 * i);
+            for (; j < count[k]; j += n) finish(j, curve(j));
         }
-        // (2) The curve on the packed channels (the last vector's unused lanes are left over
-        // values, computed and not written).
-        const auto finish = [&](std::size_t j, V f) {
-            V o = hn::MulAdd(hn::Load(d, b_buf + j), f, hn::Load(d, a_buf + j));
-            o = hn::Min(hn::Max(o, hn::Neg(cap)), cap);
-            if (P.confined) o = hn::Min(hn::Max(o, zero), P.max);
-            hn::Store(o, d, nd_buf + j);
-        };
-        // Two vectors at a time: the curve is a chain of four dependent transcendentals, and
-        // two independent chains keep the pipeline fuller.
-        std::size_t j = 0;
-        for (; j + 2 * n <= packed + n - 1; j += 2 * n) {
-            const V f0 = ForwardCurve(d, hn::Load(d, nd_buf + j), P.power, P.inv_power);
-            const V f1 = ForwardCurve(d, hn::Load(d, nd_buf + j + n), P.power, P.inv_power);
-            finish(j, f0);
-            finish(j + n, f1);
+        // (3)
+        std::size_t at[3] = {0, 0, 0};
+        for (std::size_t i = begin, vi = 0; i < end; i += n, ++vi) {
+            V o[3];
+            for (std::size_t k = 0; k < 3; ++k) {
+                o[k] = ExpandLanes(d, hn::LoadU(d, nd_buf[k] + at[k]), mask_buf[k] + vi * mask_bytes,
+                                   hn::Load(d, planar[k] + (i - begin)));
+                at[k] += count_buf[k][vi];
+            }
+            hn::StoreInterleaved3(o[0], o[1], o[2], d, out + 3 * i);
         }
-        for (; j < packed; j += n) finish(j, ForwardCurve(d, hn::Load(d, nd_buf + j), P.power, P.inv_power));
-        // (3) Back to their places.
-        float* block_out = out + 3 * begin;
-        for (std::size_t q = 0; q < packed; ++q) block_out[at_buf[q]] = nd_buf[q];
         for (std::size_t h = 0; h < hard_count; ++h) {
             const float* c = hard_buf + 3 * h;
             const Rgb o = clipper.clip({c[0], c[1], c[2]});
@@ -349,6 +524,12 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
         }
     }
     return whole;
+}
+
+/// The forward: ForwardBlocks with or without the cube.
+std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, std::size_t colours) {
+    return clipper.confines_to_cube() ? ForwardBlocks<true>(clipper, in, out, colours)
+                                      : ForwardBlocks<false>(clipper, in, out, colours);
 }
 
 /// The inverse in double (its slope grows without bound toward the asymptote and would amplify
