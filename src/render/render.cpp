@@ -391,7 +391,11 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         outside += out ? 1 : 0;
     }
     result.linear.pixels = rgb;
-    const GamutClipper clipper(method, Gamut(*space, 1.0));
+    // The displayed image must fit the display: aces-rgc with its final clip, as irid clip
+    // does for images.
+    ClipSettings clip_settings;
+    if (method == ClipMethod::aces_rgc) clip_settings.set("clip", 1.0);
+    const GamutClipper clipper(method, Gamut(*space, 1.0), clip_settings);
     arena.execute([&] { clip_batch(clipper, rgb, BatchOptions{threads}); });
     result.display = io::Image::blank(W, H, 3);
     result.display.color_space = space->name();

@@ -100,7 +100,10 @@ void clip_like_the_cli(io::Image image, bool exr_in, std::uint64_t h) {
         if (rgb[0] < 0 || rgb[1] < 0 || rgb[2] < 0) return;
         xyz = true;
     }
-    const irid::GamutClipper clipper(method, irid::Gamut(dest, max));
+    // As irid clip does for images: aces-rgc with its final clip (clip=true).
+    irid::ClipSettings settings;
+    if (method == irid::ClipMethod::aces_rgc) settings.set("clip", 1.0);
+    const irid::GamutClipper clipper(method, irid::Gamut(dest, max), settings);
     const std::size_t pixels = image.pixel_count();
     const auto stride = static_cast<std::size_t>(image.channels);
     const int alpha = image.channel_index("A");
