@@ -346,16 +346,24 @@ HWY_INLINE Vf Chroma(Vf a, Vf b) {
     return hn::Sqrt(hn::MulAdd(a, a, hn::Mul(b, b)));
 }
 
-/// Rewrites the flagged lanes of colours [i, i + lanes) of `out` with the double reference.
-HWY_INLINE void RedoInDouble(Df d, Mf flagged, const GamutClipper& clipper, const float* in,
+/// Rewrites the flagged lanes of colours [i, i + lanes) of `out` with the double reference of
+/// the input colours (r, g, b), kept in registers: `out` may be the input itself (in place), so
+/// the input must not be read back from memory after the vector's result was stored.
+HWY_INLINE void RedoInDouble(Df d, Mf flagged, const GamutClipper& clipper, Vf r, Vf g, Vf b,
                              float* out, std::size_t i) {
     if (hn::AllFalse(d, flagged)) return;
     HWY_ALIGN float flags[hn::MaxLanes(d)];
+    HWY_ALIGN float in_r[hn::MaxLanes(d)];
+    HWY_ALIGN float in_g[hn::MaxLanes(d)];
+    HWY_ALIGN float in_b[hn::MaxLanes(d)];
     hn::Store(hn::IfThenElseZero(flagged, hn::Set(d, 1.0f)), d, flags);
+    hn::Store(r, d, in_r);
+    hn::Store(g, d, in_g);
+    hn::Store(b, d, in_b);
     for (std::size_t lane = 0; lane < hn::Lanes(d); ++lane) {
         if (flags[lane] == 0.0f) continue;
         const std::size_t k = 3 * (i + lane);
-        const Rgb o = clipper.clip({in[k], in[k + 1], in[k + 2]});
+        const Rgb o = clipper.clip({in_r[lane], in_g[lane], in_b[lane]});
         out[k] = static_cast<float>(o.r);
         out[k + 1] = static_cast<float>(o.g);
         out[k + 2] = static_cast<float>(o.b);
@@ -660,7 +668,7 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         const Mf flagged = hn::AndNot(
             inside, hn::Or(hn::Or(hn::Or(near_l, huge), hn::Or(hn::Or(wild, grazing), hn::Or(dark_path, diverging))),
                            hn::AndNot(hn::Or(white, black), hn::Lt(c0, hn::Set(d, hueless_chroma)))));
-        RedoInDouble(d, flagged, clipper, in, out, i);
+        RedoInDouble(d, flagged, clipper, r, g, b, out, i);
     }
     return i;
 }
@@ -770,7 +778,7 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
         gg = hn::IfThenElse(inside, g, gg);
         bb = hn::IfThenElse(inside, b, bb);
         hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
-        RedoInDouble(d, hn::AndNot(inside, flagged), clipper, in, out, i);
+        RedoInDouble(d, hn::AndNot(inside, flagged), clipper, r, g, b, out, i);
     }
     return i;
 }

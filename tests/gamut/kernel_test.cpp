@@ -121,6 +121,26 @@ TEST(Kernels, ResultsAreTheSameBytesForAnyThreadCount) {
     }
 }
 
+// A kernel that recomputes a hard lane in double must take the lane's input from its registers,
+// not from memory: in place, the vector's result has already replaced it there (fuzz finding
+// clip css-in-place-1: css redid such lanes from the overwritten input).
+TEST(Kernels, InPlaceGivesTheSameBytesAsOutOfPlace) {
+    for (const double max : {1.0, 4.0}) {
+        const Gamut gamut(display_p3(), max);
+        const std::vector<float> in = colours_for(max, 30000, 17u);
+        for (const ClipMethod method : clip_methods()) {
+            if (method == ClipMethod::luv_hue) continue;
+            const GamutClipper clipper(method, gamut);
+            std::vector<float> out(in.size());
+            clip_batch(clipper, in, out, {.threads = 1, .simd = true});
+            std::vector<float> in_place = in;
+            clip_batch(clipper, in_place, {.threads = 1, .simd = true});
+            EXPECT_EQ(std::memcmp(out.data(), in_place.data(), out.size() * sizeof(float)), 0)
+                << clip_method_name(method) << " max " << max;
+        }
+    }
+}
+
 TEST(Kernels, ConfiningMethodsKeepEveryKernelOutputInsideTheCube) {
     for (const double max : {1.0, 4.0}) {
         const Gamut gamut(rec2020(), max);
