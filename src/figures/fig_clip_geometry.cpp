@@ -4,6 +4,7 @@
 
 #include <irid/color/spaces.h>
 #include <irid/error.h>
+#include <irid/gamut/report.h>
 
 #include "figure_data.h"
 #include "figure_support.h"
@@ -73,7 +74,8 @@ std::vector<ClipLanding> clip_landings(const Gamut& gamut, const Xyz& xyz,
     const double hue_in = luv_to_lch(xyz_to_luv(xyz, white)).h;
     std::vector<ClipLanding> out;
     for (const ClipMethod method : methods) {
-        const GamutClipper clipper(method, gamut);
+        // aces-rgc with its final clip, as the report measures it: where a display lands it.
+        const GamutClipper clipper = report_clipper(method, gamut);
         ClipLanding landing{method, clipper.clip(input), {}, 0.0};
         const Xyz clipped = space.to_xyz(landing.rgb);
         landing.xyy = xyz_to_xyy(clipped);

@@ -480,6 +480,14 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
         hard = hn::Or(hard, hn::Lt(hn::Abs(L), lw_margin));
         hard = hn::Or(hard, hn::Lt(hn::Abs(hn::Sub(L, s.white_l)), white_margin));
         hard = hn::Or(hard, hn::Gt(C, big_c));
+        // A channel beyond 1e30 (what ±Inf becomes) is near float's range, where simd::Cbrt's
+        // Halley step overflows (fuzz finding clip oklab-overflow-1: 2.55e38 on Display P3 at
+        // max 4 came out black instead of white): the double reference takes those.
+        // Their L is wrong, so even a black or white verdict is redone (below).
+        const V magnitude = hn::Max(hn::Max(hn::Abs(r), hn::Abs(g)), hn::Abs(b));
+        const M overflow = hn::Or(hn::Gt(magnitude, hn::Set(d, 1e30f)),
+                                  hn::Not(hn::And(hn::IsFinite(L), hn::IsFinite(C))));
+        hard = hn::Or(hard, overflow);
 
         // L0.
         V L0 = L;
@@ -704,9 +712,10 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             res[ch] = hn::IfThenElse(outside, res[ch], c1[ch]);
         }
         hn::StoreInterleaved3(res[0], res[1], res[2], d, out + 3 * i);
-        // Black and white lanes are final unless within rounding of the cube (tested first).
-        const M redo =
-            hn::And(outside, hn::Or(within_tol, hn::AndNot(hn::Or(black, white), hard)));
+        // Black and white lanes are final unless within rounding of the cube (tested first) or
+        // beyond float's range for the transforms.
+        const M redo = hn::And(
+            outside, hn::Or(hn::Or(within_tol, overflow), hn::AndNot(hn::Or(black, white), hard)));
         if (HWY_UNLIKELY(!hn::AllFalse(d, redo))) {
             hn::Store(r0, d, raw[0]);
             hn::Store(g0, d, raw[1]);

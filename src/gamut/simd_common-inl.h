@@ -65,7 +65,9 @@ HWY_INLINE void Mul3(const MatV& M, Vf x0, Vf x1, Vf x2, Vf& o0, Vf& o1, Vf& o2)
 }
 
 /// The real cube root with the sign of x; 0 for ±0 (and for subnormal x, below 1.2e-38, whose
-/// cube root 2.3e-13 matters to no colour).
+/// cube root 2.3e-13 matters to no colour). For |x| up to 1e37: above about 1.1e38 the Halley
+/// step's 2y³ + |x| overflows and the result is wrong (callers send such lanes to the double
+/// reference; inputs are at most 1e30 after the non-finite rule).
 HWY_INLINE Vf Cbrt(Df d, Vf x) {
     const hn::RebindToSigned<Df> di;
     const Vf a = hn::Abs(x);

@@ -351,13 +351,16 @@ TEST(FilmSpectra, ThesisSeriesIsEquation21) {
 TEST(Table1, MarkdownRowsCarryTheCountsAndTheThesisRow) {
     const Table1 t = count_smits_operations();
     // The thesis' clip divides once per crossed plane and multiplies 7 times whatever the
-    // case (Smits 1990, Table 1: 7 multiplications, 1–3 divisions).
-    EXPECT_EQ(t.one_plane.divisions, 1);
-    EXPECT_EQ(t.two_planes.divisions, 2);
-    EXPECT_EQ(t.three_planes.divisions, 3);
+    // case (Smits 1990, Table 1: 7 multiplications, 1–3 divisions). irid's compares the
+    // planes' parameters by cross-multiplication and divides once: two more multiplications
+    // per plane after the first (clip.h, smits_clip_rgb).
     for (const OperationCounts* c : {&t.one_plane, &t.two_planes, &t.three_planes}) {
-        EXPECT_TRUE(thesis_multiplications.contains(c->multiplications));
+        EXPECT_EQ(c->divisions, 1);
     }
+    EXPECT_EQ(t.one_plane.multiplications, 7);
+    EXPECT_EQ(t.two_planes.multiplications, 9);
+    EXPECT_EQ(t.three_planes.multiplications, 11);
+    EXPECT_TRUE(thesis_multiplications.contains(t.one_plane.multiplications));
     const std::string md = table1_markdown(t);
     const auto row = [](const char* name, const OperationCounts& c) {
         return std::string("| ") + name + " | " + std::to_string(c.comparisons);
