@@ -253,11 +253,11 @@ public:
     /// name the method does not have.
     [[nodiscard]] double parameter(std::string_view name) const;
     /// Every parameter of the method with its value, in clip_parameters() order.
-    /// What a method precomputes from its parameters, for its batch kernel (layout: prepare_*).
-    [[nodiscard]] const std::array<double, 16>& derived() const noexcept { return m_derived; }
     [[nodiscard]] const std::vector<std::pair<std::string, double>>& parameters() const noexcept {
         return m_parameters;
     }
+    /// What a method precomputes from its parameters, for its batch kernel (layout: prepare_*).
+    [[nodiscard]] const std::array<double, 16>& derived() const noexcept { return m_derived; }
     [[nodiscard]] bool inverse() const noexcept { return m_inverse; }
     /// Whether outputs are confined to [0, max]³ (false only for aces-rgc without clip and for
     /// the inverse of smits-soft, which expands toward the limit).
