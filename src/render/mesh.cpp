@@ -143,7 +143,11 @@ bool hit_box(const Aabb& box, const PreparedRay& r, double t_min, double t_max) 
     if (exit_x * slab_exit_factor < t_max) t_max = exit_x * slab_exit_factor;
     if (exit_y * slab_exit_factor < t_max) t_max = exit_y * slab_exit_factor;
     if (exit_z * slab_exit_factor < t_max) t_max = exit_z * slab_exit_factor;
-    return t_min <= t_max;
+    // A relative slack of 1e-6 in t: a ray from 4e7 away grazing a sliver 1.8e7 long and 1 wide
+    // missed its box by more than the slab factor allows while the watertight triangle test hit
+    // the sliver (fuzz finding obj-4; 1e-9 was not enough, the cause is not yet understood). The
+    // slack only visits a few more boxes; the exact test and the nearest t decide the hit.
+    return t_min <= t_max + 1e-6 * (std::abs(t_max) + std::abs(t_min));
 }
 
 // --- BVH construction -----------------------------------------------------------------------
