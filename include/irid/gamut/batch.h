@@ -21,7 +21,8 @@
 // could take another branch of the method (listed in each kernel's file) are recomputed with
 // the double GamutClipper::clip. With `BatchOptions::simd == false`, smits and clamp run the
 // scalar float specification and every other method the double GamutClipper::clip per colour
-// (float → double → float); luv-hue always does.
+// (float → double → float); luv-hue always does, and so does every method but smits and clamp
+// when the peak is below 1e-6 (float's subnormals are near).
 //
 // Threads: the span is cut into fixed chunks of `batch_chunk_colours` colours (independent of the
 // thread count) run by oneTBB in an arena of the requested concurrency. Each colour is computed
