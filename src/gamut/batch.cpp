@@ -94,8 +94,17 @@ void clip_range(const GamutClipper& clipper, const detail::BatchFloatParams& p, 
             // they lose the relative precision the 1e-5 × max contract needs (fuzz finding
             // clip-4: smits-soft at a peak of 2e-41): the double reference runs instead.
             const bool float_range = clipper.gamut().max() >= 1e-6;
-            const detail::ClipKernel kernel =
-                simd && float_range ? detail::simd_kernel(clipper.method()) : nullptr;
+            // A primary of zero or negative luminance (ACES2065-1's blue, Y = -0.072) makes
+            // the geometry of the hue- and lightness-keeping methods ill-conditioned in float in
+            // places no hard-lane test foresees (fuzz findings clip-6, smits-xyz black instead
+            // of the colour, and clip-7, luv-lightness-hue 3e-5 × max off, both on
+            // aces2065-1): such a gamut runs the double reference. Nobody displays
+            // ACES2065-1's cube; its colours are clipped in AP1.
+            const Vec3& lum = clipper.gamut().luminance_row();
+            const bool real_primaries = lum[0] > 0.0 && lum[1] > 0.0 && lum[2] > 0.0;
+            const detail::ClipKernel kernel = simd && float_range && real_primaries
+                                                  ? detail::simd_kernel(clipper.method())
+                                                  : nullptr;
             const std::size_t done = kernel ? kernel(clipper, in, out, colours) : 0;
             clipper_scalar(clipper, in + 3 * done, out + 3 * done, colours - done);
             return;

@@ -30,8 +30,8 @@
 // - css-raytrace clamps a colour within oklab_rounding_tolerance × max of the cube, as its
 //   reference does, and flags lanes whose lightness is within rounding of white or black, whose
 //   origin has no hue, whose magnitude is beyond split_limit, whose rays or restores make them
-//   sensitive to float rounding (wild_ray_t, grazing_gain, diverging_ratio), and dark ones whose
-//   anchor the two bounds treat differently (dark_channel).
+//   sensitive to float rounding (wild_ray_t, grazing_gain, diverging_ratio), and those whose
+//   anchor the two bounds treat differently (bounds_path).
 // - On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube, 2^20 colours)
 //   0.31 % of the lanes of css-raytrace (0.47 % before its transforms went to double) and
 //   0.40 % of those of css are flagged; the largest difference from the double reference was
@@ -113,10 +113,10 @@ constexpr float grazing_gain = 16.0f;
 /// path.
 constexpr float diverging_ratio = 2.0f;
 /// css-raytrace: a lane whose anchor the float bounds (1e-6) keep where the double reference's
-/// (1e-12) would move it, while its brightest channel is below this × max, goes to the double
-/// path (such a colour's channels are within a few hundred times 1e-6 max of 0, where the two
-/// bounds make its passes differ by more than rounding).
-constexpr float dark_channel = 1e-3f;
+/// (1e-12) would move it goes to the double path: its passes then differ by more than rounding,
+/// for a dark colour (whose channels are near 1e-6 max) and for a light one too (fuzz finding
+/// clip-9: on SMPTE-C at max 100, a channel of 4.8e-5 left the anchor in place in float and the
+/// result 3e-5 max away).
 
 /// A double 3×3 matrix (row-major) as float pairs, m = hi + lo to about 2^-48 |m|.
 struct PairMatrix {
@@ -543,7 +543,6 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
     const Vf tol = hn::Mul(hn::Set(d, static_cast<float>(oklab_rounding_tolerance)), p.max);
     const Vf low_d = hn::Mul(hn::Set(d, 1e-12f), p.max);
     const Vf high_d = hn::Sub(p.max, low_d);
-    const Vf dark = hn::Mul(hn::Set(d, dark_channel), p.max);
     const Vf lmargin = hn::Set(d, lightness_margin);
     const Vf wild_t = hn::Set(d, wild_ray_t);
 #if HWY_TARGET != HWY_SCALAR && HWY_HAVE_FLOAT64
@@ -588,7 +587,7 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         // Within rounding of the cube (oklab_rounding_tolerance, as css_raytrace.cpp): clamped.
         const Mf near_cube = InCube(r, g, b, hn::Neg(tol), hn::Add(p.max, tol));
         Mf active = hn::Not(hn::Or(hn::Or(inside, near_cube), hn::Or(white, black)));
-        Mf wild = hn::Lt(zero, zero), grazing = wild, dark_path = wild, diverging = wild;
+        Mf wild = hn::Lt(zero, zero), grazing = wild, bounds_path = wild, diverging = wild;
         Vf last_moved = zero;
         for (int it = 0; it < 4; ++it) {
             if (it > 0) {
@@ -634,15 +633,12 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
                     hn::And(hn::Lt(low, c_b), hn::Lt(c_b, high)));
                 const Mf move = hn::And(active, below);
                 // The double reference's bounds (1e-12) would move the anchor where these do
-                // not: for a dark colour, whose channels are themselves near 1e-6 max, that
-                // changes its path (for a lighter one only by rounding).
+                // not: the double path takes the lane.
                 const Mf below_double = hn::And(
                     hn::And(hn::And(hn::Lt(low_d, c_r), hn::Lt(c_r, high_d)),
                             hn::And(hn::Lt(low_d, c_g), hn::Lt(c_g, high_d))),
                     hn::And(hn::Lt(low_d, c_b), hn::Lt(c_b, high_d)));
-                const Vf brightest = hn::Max(hn::Max(c_r, c_g), c_b);
-                dark_path = hn::Or(dark_path, hn::And(hn::AndNot(below, hn::And(active, below_double)),
-                                                      hn::Lt(brightest, dark)));
+                bounds_path = hn::Or(bounds_path, hn::AndNot(below, hn::And(active, below_double)));
                 a0 = hn::IfThenElse(move, c_r, a0);
                 a1 = hn::IfThenElse(move, c_g, a1);
                 a2 = hn::IfThenElse(move, c_b, a2);
@@ -666,7 +662,7 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         const Mf near_l = hn::Or(hn::Lt(hn::Abs(hn::Sub(L, p.white_l)), lmargin),
                                  hn::Lt(hn::Abs(L), lmargin));
         const Mf flagged = hn::AndNot(
-            inside, hn::Or(hn::Or(hn::Or(near_l, huge), hn::Or(hn::Or(wild, grazing), hn::Or(dark_path, diverging))),
+            inside, hn::Or(hn::Or(hn::Or(near_l, huge), hn::Or(hn::Or(wild, grazing), hn::Or(bounds_path, diverging))),
                            hn::AndNot(hn::Or(white, black), hn::Lt(c0, hn::Set(d, hueless_chroma)))));
         RedoInDouble(d, flagged, clipper, r, g, b, out, i);
     }

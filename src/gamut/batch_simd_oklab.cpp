@@ -17,9 +17,10 @@
 //    bracket, else bisection), from the chord estimate, to 1e-4 relative, and one more step at
 //    that t whose linear point f + f' Δt is the float result. A vector keeps it when on each
 //    of its lanes float's rounding of the channels, times the exit's conditioning, is under
-//    6.4e-6 max (estimate in ClipProjection; not on a gamut without the sectors' structure,
-//    m_derived[15] = 0): on the benchmark's sRGB input 29 % of the vectors of oklab, 98 % of
-//    oklab-adaptive and 78 % of oklab-cusp. Every other vector takes, in double, the
+//    8e-7 max (estimate in ClipProjection; not on a gamut without the sectors' structure,
+//    m_derived[15] = 0). The estimate runs up to 4 times short of the error: at a bound of
+//    6.4e-6 max, 2 million colours uniform in [-0.5, 1.5]³ found errors of 1.6e-5 (Display P3)
+//    and 2.7e-5 (Adobe RGB); at 8e-7 the largest is 5e-7. Every other vector takes, in double, the
 //    colour's Oklab (a Newton step on each float cube root), the cusp's L (a Newton step on
 //    S_max and one on its cube root), L0, one Newton step on each leaving channel near its root
 //    (the first root kept) and the point's RGB, its exit channel set exactly to its bound and the whole clamped
@@ -31,7 +32,9 @@
 //    neutral axis leaves the cube there), a colour within 2 × the rounding tolerance of the cube
 //    (clip.h's rule, tested first), L within 1e-5 of 0 or 1e-4 of the white's, a chroma over 16 times the white's L, an exit where the leaving
 //    channel's slope is under 1/1024 of the channels' total (nearly tangent), a non-finite t, and
-//    for oklab-cusp a cusp whose Halley iteration did not settle or that is not at S_max.
+//    for oklab-cusp a cusp whose Halley iteration did not settle or that is not at S_max, and a
+//    hue within 2e-5 (of the white's L, as a distance in a, b) of a primary's, where the cusp
+//    may jump (CuspLightness).
 // The cusp (oklab-cusp): the zero channel of the hue's sector (m_derived, see
 // prepare_oklab_projection), its S_max by three Halley steps on that channel's cubic in S from
 // the per-gamut linear fit, then L_cusp = cbrt(max / largest channel at (1, S_max a', S_max b')).
@@ -107,13 +110,24 @@ HWY_INLINE V ChannelAt(const Setup& s, int i, const V P[3], const V Q[3], V t) {
 
 /// The L of the cusp of each lane's hue (unit au, bu), with its S_max and zero channel (for the
 /// final step in double); `hard` gains the lanes where it is not reliable (see the file comment).
-HWY_INLINE V CuspLightness(const Setup& s, V au, V bu, M& hard, V& s_max, V& zero_channel) {
+HWY_INLINE V CuspLightness(const Setup& s, V au, V bu, V C, M& hard, V& s_max,
+                           V& zero_channel) {
     const D d;
     const V zero = hn::Zero(d);
     // Sector of the hue: red → green reaches b = 0, green → blue r = 0, blue → red g = 0.
     const V cross_r = hn::Sub(hn::Mul(s.prim[0], bu), hn::Mul(s.prim[1], au));
     const V cross_g = hn::Sub(hn::Mul(s.prim[2], bu), hn::Mul(s.prim[3], au));
     const V cross_b = hn::Sub(hn::Mul(s.prim[4], bu), hn::Mul(s.prim[5], au));
+    // At a primary's hue the cusp may jump: on Rec.2020 a ray just past the blue primary's hue
+    // keeps a sliver of the cube near the primary (r dips below 0 and comes back), whose chroma
+    // is the cusp, while a ray just before it misses the sliver (L_cusp 0.457 against 0.423;
+    // fuzz finding clip-5). Float's hue cannot say which side a colour is on there: a colour
+    // within 2e-5 of the white's L of a primary's hue line (|cross| C, float's error in a and b
+    // is about 1e-7 of it) goes to the double reference.
+    const V near = hn::Mul(hn::Set(d, 2e-5f), s.white_l);
+    const V off_r = hn::Mul(hn::Abs(cross_r), C), off_g = hn::Mul(hn::Abs(cross_g), C),
+            off_b = hn::Mul(hn::Abs(cross_b), C);
+    hard = hn::Or(hard, hn::Lt(hn::Min(hn::Min(off_r, off_g), off_b), near));
     const M in_rg = hn::And(hn::Ge(cross_r, zero), hn::Lt(cross_g, zero));
     const M in_gb = hn::And(hn::Ge(cross_g, zero), hn::Lt(cross_b, zero));
     // Zero channel z: 2 in red → green, 0 in green → blue, 1 otherwise.
@@ -441,7 +455,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = s.half;
     // The float result may stand without the double step (see its use below).
     const bool float_only = kind == Projection::constant_l || derived[15] == 1.0;
-    const V float_bound = hn::Mul(hn::Set(d, 64.0f), s.max);
+    const V float_bound = hn::Mul(hn::Set(d, 8.0f), s.max);
     const V near = hn::Mul(hn::Set(d, 1e-5f), s.max);
     const V lw_margin = hn::Mul(hn::Set(d, 1e-5f), s.white_l);
     // Within 1e-4 of the white (its L, or a grey channel of max) the exit is within a few 1e-2
@@ -476,9 +490,11 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             hn::And(hn::And(hn::Ge(r, neg_tol), hn::Ge(g, neg_tol)), hn::Ge(b, neg_tol)),
             hn::And(hn::And(hn::Le(r, max_plus_tol), hn::Le(g, max_plus_tol)),
                     hn::Le(b, max_plus_tol)));
-        M hard = within_tol;
-        hard = hn::Or(hard, hn::Lt(hn::Abs(L), lw_margin));
-        hard = hn::Or(hard, hn::Lt(hn::Abs(hn::Sub(L, s.white_l)), white_margin));
+        // L near 0 or near the white's: float may take the black or white verdict (or miss
+        // it) where double does not, so those lanes are redone whatever float decided.
+        const M near_verdict = hn::Or(hn::Lt(hn::Abs(L), lw_margin),
+                                      hn::Lt(hn::Abs(hn::Sub(L, s.white_l)), white_margin));
+        M hard = hn::Or(within_tol, near_verdict);
         hard = hn::Or(hard, hn::Gt(C, big_c));
         // A channel beyond 1e30 (what ±Inf becomes) is near float's range, where simd::Cbrt's
         // Halley step overflows (fuzz finding clip oklab-overflow-1: 2.55e38 on Display P3 at
@@ -499,7 +515,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
                 const V inv_c = hn::Div(one, hn::IfThenElse(grey, one, C));
                 const V au = hn::IfThenElse(grey, one, hn::Mul(A, inv_c));
                 const V bu = hn::IfThenZeroElse(grey, hn::Mul(B, inv_c));
-                centre = CuspLightness(s, au, bu, hard, cusp_s, cusp_zero);
+                centre = CuspLightness(s, au, bu, C, hard, cusp_s, cusp_zero);
             }
             L0 = AdaptiveL0(s, L, C, centre);
         }
@@ -683,7 +699,8 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
         V exit_ch = zero;  // set by Exact3: the exit channel, or −1
         // The float result is kept when, on every active lane, float's rounding of the channels
         // (about 1e-7 of the sum of their terms' sizes, Σ_j (Σ_i |M_ij|) |u_j|³) moved along
-        // the exit by the conditioning (1 + total / slope) stays under 64 × 1e-7 max; the
+        // the exit by the conditioning (1 + total / slope) stays under 8 × 1e-7 max (see the
+        // file comment for why not more); the
         // double step is taken for the whole vector otherwise, and always on a gamut without
         // the sectors' structure (m_derived[15] = 0: ACES2065-1, where float alone was measured
         // 1.8e-5 max off with oklab-adaptive, for reasons this estimate does not capture).
@@ -712,10 +729,12 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             res[ch] = hn::IfThenElse(outside, res[ch], c1[ch]);
         }
         hn::StoreInterleaved3(res[0], res[1], res[2], d, out + 3 * i);
-        // Black and white lanes are final unless within rounding of the cube (tested first) or
-        // beyond float's range for the transforms.
+        // Black and white lanes are final unless within rounding of the cube (tested first),
+        // beyond float's range for the transforms, or with L near the verdict's threshold (fuzz
+        // finding clip-8: on Rec.2020 a colour of L 3e-8 below the white's came out white).
         const M redo = hn::And(
-            outside, hn::Or(hn::Or(within_tol, overflow), hn::AndNot(hn::Or(black, white), hard)));
+            outside, hn::Or(hn::Or(hn::Or(within_tol, overflow), near_verdict),
+                            hn::AndNot(hn::Or(black, white), hard)));
         if (HWY_UNLIKELY(!hn::AllFalse(d, redo))) {
             hn::Store(r0, d, raw[0]);
             hn::Store(g0, d, raw[1]);

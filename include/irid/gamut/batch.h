@@ -22,7 +22,8 @@
 // the double GamutClipper::clip. With `BatchOptions::simd == false`, smits and clamp run the
 // scalar float specification and every other method the double GamutClipper::clip per colour
 // (float → double → float); luv-hue always does, and so does every method but smits and clamp
-// when the peak is below 1e-6 (float's subnormals are near).
+// when the peak is below 1e-6 (float's subnormals are near) or when a primary of the gamut has
+// a luminance of 0 or below (ACES2065-1), where float is ill-conditioned.
 //
 // Threads: the span is cut into fixed chunks of `batch_chunk_colours` colours (independent of the
 // thread count) run by oneTBB in an arena of the requested concurrency. Each colour is computed
