@@ -55,8 +55,9 @@ ChromaticAdaptation parse_chromatic_adaptation(std::string_view name) {
     if (name == "cat02") return ChromaticAdaptation::cat02;
     if (name == "von-kries") return ChromaticAdaptation::von_kries;
     if (name == "none") return ChromaticAdaptation::none;
-    throw Error("unknown chromatic adaptation '" + std::string(name) +
-                "'; valid names: bradford, cat02, von-kries, none");
+    throw UnknownNameError("unknown chromatic adaptation '" + std::string(name) +
+                               "'; valid names: bradford, cat02, von-kries, none",
+                           {"bradford", "cat02", "von-kries", "none"});
 }
 
 }  // namespace irid

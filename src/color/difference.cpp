@@ -1,5 +1,8 @@
 #include <irid/color/difference.h>
 #include <irid/color/spaces.h>
+#include <irid/error.h>
+
+#include <string>
 
 #include <cmath>
 #include <numbers>
@@ -104,6 +107,36 @@ double delta_s_uv(const Luv& a, const Luv& b) noexcept {
 double delta_e_ok(const Oklab& a, const Oklab& b) noexcept {
     return std::sqrt((a.L - b.L) * (a.L - b.L) + (a.a - b.a) * (a.a - b.a) +
                      (a.b - b.b) * (a.b - b.b));
+}
+
+DeltaEMetric parse_delta_e_metric(std::string_view name) {
+    for (const DeltaEMetric m :
+         {DeltaEMetric::ciede2000, DeltaEMetric::cie76, DeltaEMetric::cieuv, DeltaEMetric::oklab}) {
+        if (name == delta_e_metric_name(m)) return m;
+    }
+    throw UnknownNameError("unknown metric '" + std::string(name) +
+                               "'; valid names: ciede2000, cie76, cieuv, oklab",
+                           {"ciede2000", "cie76", "cieuv", "oklab"});
+}
+
+std::string_view delta_e_metric_name(DeltaEMetric metric) noexcept {
+    switch (metric) {
+        case DeltaEMetric::ciede2000: return "ciede2000";
+        case DeltaEMetric::cie76: return "cie76";
+        case DeltaEMetric::cieuv: return "cieuv";
+        case DeltaEMetric::oklab: return "oklab";
+    }
+    return "";
+}
+
+double delta_e(DeltaEMetric metric, const Vec3& a, const Vec3& b) noexcept {
+    switch (metric) {
+        case DeltaEMetric::ciede2000: return delta_e_2000({a[0], a[1], a[2]}, {b[0], b[1], b[2]});
+        case DeltaEMetric::cie76: return delta_e_76({a[0], a[1], a[2]}, {b[0], b[1], b[2]});
+        case DeltaEMetric::cieuv: return delta_e_uv({a[0], a[1], a[2]}, {b[0], b[1], b[2]});
+        case DeltaEMetric::oklab: return delta_e_ok({a[0], a[1], a[2]}, {b[0], b[1], b[2]});
+    }
+    return 0.0;
 }
 
 }  // namespace irid

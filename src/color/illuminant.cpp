@@ -143,9 +143,10 @@ DenseSpectrum illuminant_by_name(std::string_view name) {
                     "Spectral illuminants: D50, D55, D65, D75, A, E, D<CCT in K, 4000-25000> (e.g. "
                     "D6774, close to C), blackbody:<T in K>");
     }
-    throw Error("unknown illuminant " + quote_untrusted(name) +
-                "; valid: D50, D55, D65, D75, A, E, D<CCT in K, 4000-25000> (e.g. D9300), "
-                "blackbody:<T in K>");
+    throw UnknownNameError("unknown illuminant " + quote_untrusted(name) +
+                               "; valid: D50, D55, D65, D75, A, E, D<CCT in K, 4000-25000> (e.g. "
+                               "D9300), blackbody:<T in K>",
+                           {"D50", "D55", "D65", "D75", "A", "E", "D<CCT>", "blackbody:<T>"});
 }
 
 std::vector<std::string> white_point_names() { return {"D65", "D50", "D55", "D75", "A", "C", "E"}; }
@@ -167,8 +168,10 @@ Xy white_point_xy(std::string_view name) {
         throw Error("white point '" + std::string(name) +
                     "': chromaticity must have x > 0, y > 0 and x + y < 1");
     }
-    throw Error("unknown white point '" + std::string(name) +
-                "'; valid: D65, D50, D55, D75, A, C, E, or x,y (for example 0.3127,0.329)");
+    throw UnknownNameError("unknown white point '" + std::string(name) +
+                               "'; valid: D65, D50, D55, D75, A, C, E, or x,y (for example "
+                               "0.3127,0.329)",
+                           white_point_names());
 }
 
 }  // namespace irid

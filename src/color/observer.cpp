@@ -5,7 +5,9 @@
 
 #include "cie_tables.h"
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace irid {
 namespace {
@@ -33,7 +35,9 @@ const ColorMatchingFunctions& color_matching_functions(Observer observer) noexce
 Observer parse_observer(std::string_view name) {
     if (name == "cie1931" || name == "2") return Observer::cie1931_2deg;
     if (name == "cie1964" || name == "10") return Observer::cie1964_10deg;
-    throw Error("unknown observer '" + std::string(name) + "'; valid names: cie1931, cie1964");
+    throw UnknownNameError("unknown observer '" + std::string(name) +
+                               "'; valid names: cie1931, cie1964",
+                           {"cie1931", "cie1964"});
 }
 
 std::string_view observer_name(Observer observer) noexcept {
@@ -51,6 +55,45 @@ Xy spectral_locus_xy(double lambda_nm, Observer observer) {
                     " nm is outside 360-830 nm");
     }
     return xyz_to_xy(monochromatic_xyz(lambda_nm, observer));
+}
+
+void check_sample_wavelengths(std::span<const double> w) {
+    if (w.size() < 2) {
+        throw Error("a spectrum needs at least two wavelengths, found " + std::to_string(w.size()));
+    }
+    for (std::size_t i = 0; i < w.size(); ++i) {
+        if (!(std::isfinite(w[i]) && w[i] > 0.0)) {
+            throw Error("wavelength " + std::to_string(i) + " (" + format_shortest(w[i]) +
+                        " nm) must be finite and positive");
+        }
+        if (i > 0 && !(w[i] > w[i - 1])) {
+            throw Error("wavelength " + std::to_string(i) + " (" + format_shortest(w[i]) +
+                        " nm) must be greater than the one before (" + format_shortest(w[i - 1]) +
+                        " nm)");
+        }
+    }
+    if (w.back() < lambda_min_nm || w.front() > lambda_max_nm) {
+        throw Error("the wavelengths " + format_shortest(w.front()) + "-" + format_shortest(w.back()) +
+                    " nm do not overlap the visible range 360-830 nm");
+    }
+}
+
+Xyz sampled_reflectance_to_xyz(std::span<const double> wavelengths_nm,
+                               std::span<const double> values, const DenseSpectrum& illuminant,
+                               Observer observer) {
+    if (values.size() != wavelengths_nm.size()) {
+        throw Error("a spectrum has " + std::to_string(values.size()) + " values for " +
+                    std::to_string(wavelengths_nm.size()) + " wavelengths");
+    }
+    check_sample_wavelengths(wavelengths_nm);
+    const PiecewiseLinearSpectrum measured(
+        std::vector<double>(wavelengths_nm.begin(), wavelengths_nm.end()),
+        std::vector<double>(values.begin(), values.end()), Extrapolation::hold_ends);
+    const Xyz xyz = reflectance_to_xyz(DenseSpectrum::resample(measured), illuminant, observer);
+    if (!std::isfinite(xyz.X) || !std::isfinite(xyz.Y) || !std::isfinite(xyz.Z)) {
+        throw Error("the spectrum overflows: its values are too large for XYZ (or not finite)");
+    }
+    return xyz;
 }
 
 Xyz reflectance_to_xyz(const DenseSpectrum& reflectance, const DenseSpectrum& illuminant,

@@ -10,6 +10,7 @@
 #include <array>
 #include <numbers>
 #include <string>
+#include <utility>
 
 namespace irid::figures {
 namespace {
@@ -63,11 +64,15 @@ std::string_view clip_report_set_name(ClipReportSet set) noexcept {
 std::vector<ClipReportSet> parse_clip_report_sets(std::string_view name) {
     if (name == "all") return {all_sets.begin(), all_sets.end()};
     std::string names;
+    std::vector<std::string> valid;
     for (const ClipReportSet s : all_sets) {
         if (clip_report_set_name(s) == name) return {s};
         names += std::string(clip_report_set_name(s)) + ", ";
+        valid.emplace_back(clip_report_set_name(s));
     }
-    throw Error("unknown set '" + std::string(name) + "'; valid: " + names + "all");
+    valid.emplace_back("all");
+    throw UnknownNameError("unknown set '" + std::string(name) + "'; valid: " + names + "all",
+                           std::move(valid));
 }
 
 ColorSet clip_report_color_set(ClipReportSet set, const RgbSpace& destination) {

@@ -12,6 +12,8 @@
 #include <limits>
 #include <string>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 namespace irid {
 namespace {
@@ -192,11 +194,14 @@ ClipSettings& ClipSettings::set(std::string_view name_equals_value) {
 
 ClipMethod parse_clip_method(std::string_view name) {
     std::string names;
+    std::vector<std::string> valid;
     for (const ClipMethod m : all_methods) {
         if (clip_method_name(m) == name) return m;
         names += (names.empty() ? "" : ", ") + std::string(clip_method_name(m));
+        valid.emplace_back(clip_method_name(m));
     }
-    throw Error("unknown clip method '" + std::string(name) + "'; valid: " + names);
+    throw UnknownNameError("unknown clip method '" + std::string(name) + "'; valid: " + names,
+                           std::move(valid));
 }
 
 Gamut::Gamut(const RgbSpace& space, double max) : m_space(space), m_max(max) {
@@ -236,9 +241,13 @@ GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut, const ClipSett
         const auto it = std::find_if(known.begin(), known.end(),
                                      [&](const ClipParameterInfo& p) { return p.name == key; });
         if (it == known.end()) {
-            throw Error("method " + name + " has no parameter '" + key + "'" +
-                        (known.empty() ? "; it takes none"
-                                       : "; its parameters: " + describe_parameters(method)));
+            std::vector<std::string> valid;
+            for (const ClipParameterInfo& p : known) valid.emplace_back(p.name);
+            throw UnknownNameError(
+                "method " + name + " has no parameter '" + key + "'" +
+                    (known.empty() ? "; it takes none"
+                                   : "; its parameters: " + describe_parameters(method)),
+                std::move(valid));
         }
         const bool ok = it->boolean ? (value == 0.0 || value == 1.0)
                                     : (std::isfinite(value) && value >= it->min && value <= it->max);
@@ -289,8 +298,11 @@ double GamutClipper::parameter(std::string_view name) const {
     for (const auto& [n, v] : m_parameters) {
         if (n == name) return v;
     }
-    throw Error("method " + std::string(clip_method_name(m_method)) + " has no parameter '" +
-                std::string(name) + "'");
+    std::vector<std::string> valid;
+    for (const auto& [n, v] : m_parameters) valid.push_back(n);
+    throw UnknownNameError("method " + std::string(clip_method_name(m_method)) +
+                               " has no parameter '" + std::string(name) + "'",
+                           std::move(valid));
 }
 
 Oklab GamutClipper::to_oklab(const Rgb& c) const noexcept {

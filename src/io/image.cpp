@@ -43,6 +43,12 @@ std::vector<fs::path> module_candidates() {
         out.push_back(exe.parent_path() / IRID_OIIO_MODULE_NAME);
         out.push_back(exe.parent_path().parent_path() / "lib" / "irid" / IRID_OIIO_MODULE_NAME);
     }
+    // Beside the shared object this code is linked into (the Python extension, whose package
+    // carries a copy of the module; for a program, the program itself, as above).
+    Dl_info self{};
+    if (dladdr(reinterpret_cast<void*>(&module_candidates), &self) != 0 && self.dli_fname != nullptr) {
+        out.push_back(fs::path(self.dli_fname).parent_path() / IRID_OIIO_MODULE_NAME);
+    }
     out.emplace_back(IRID_OIIO_MODULE_BUILD_PATH);
     out.emplace_back(IRID_OIIO_MODULE_INSTALL_PATH);
     return out;

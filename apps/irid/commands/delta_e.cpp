@@ -9,37 +9,23 @@
 namespace irid::cli {
 namespace {
 
-enum class Metric { ciede2000, cie76, cieuv, oklab };
-
 struct DeltaEOptions {
     std::string metric;
 };
 
-Metric parse_metric(const std::string& name) {
-    if (name == "ciede2000") return Metric::ciede2000;
-    if (name == "cie76") return Metric::cie76;
-    if (name == "cieuv") return Metric::cieuv;
-    if (name == "oklab") return Metric::oklab;
-    throw UsageError("unknown metric '" + name +
-                     "' for --metric; valid names: ciede2000, cie76, cieuv, oklab");
-}
-
-double difference(Metric metric, std::span<const double> r) {
-    switch (metric) {
-        case Metric::ciede2000: return delta_e_2000({r[0], r[1], r[2]}, {r[3], r[4], r[5]});
-        case Metric::cie76: return delta_e_76({r[0], r[1], r[2]}, {r[3], r[4], r[5]});
-        case Metric::cieuv: return delta_e_uv({r[0], r[1], r[2]}, {r[3], r[4], r[5]});
-        case Metric::oklab: return delta_e_ok({r[0], r[1], r[2]}, {r[3], r[4], r[5]});
-    }
-    return 0.0;
-}
-
 int run_delta_e(const DeltaEOptions& o) {
-    const Metric metric = parse_metric(o.metric);
+    DeltaEMetric metric{};
+    try {
+        metric = parse_delta_e_metric(o.metric);
+    } catch (const Error&) {
+        throw UsageError("unknown metric '" + o.metric +
+                         "' for --metric; valid names: ciede2000, cie76, cieuv, oklab");
+    }
     const NumericTable table = read_stdin_table(6);
     std::string out = "delta_e\n";
     for (std::size_t r = 0; r < table.rows(); ++r) {
-        const double d = difference(metric, table.row(r));
+        const std::span<const double> v = table.row(r);
+        const double d = delta_e(metric, {v[0], v[1], v[2]}, {v[3], v[4], v[5]});
         if (!std::isfinite(d)) {
             throw Error("<stdin>:" + std::to_string(table.line_numbers[r]) +
                         ": the difference overflows; values are too large");

@@ -58,11 +58,11 @@ int run_xyz(const XyzOptions& o) {
     for (std::size_t c = 1; c < table.columns; ++c) {
         std::vector<double> values(table.rows());
         for (std::size_t r = 0; r < table.rows(); ++r) values[r] = table.row(r)[c];
-        const PiecewiseLinearSpectrum measured(lambda, std::move(values), Extrapolation::hold_ends);
-        const Xyz xyz = reflectance_to_xyz(DenseSpectrum::resample(measured), illuminant, observer);
-        if (!std::isfinite(xyz.X) || !std::isfinite(xyz.Y) || !std::isfinite(xyz.Z)) {
-            throw Error("<stdin>: spectrum column " + std::to_string(c + 1) +
-                        " overflows: its values are too large for XYZ");
+        Xyz xyz;
+        try {
+            xyz = sampled_reflectance_to_xyz(lambda, values, illuminant, observer);
+        } catch (const Error& e) {
+            throw Error("<stdin>: spectrum column " + std::to_string(c + 1) + ": " + e.what());
         }
         append_csv_line(out, std::array{xyz.X, xyz.Y, xyz.Z});
     }

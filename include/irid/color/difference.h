@@ -1,6 +1,9 @@
 #pragma once
 
+#include <irid/color/matrix.h>
 #include <irid/color/types.h>
+
+#include <string_view>
 
 namespace irid {
 
@@ -26,5 +29,14 @@ namespace irid {
 
 /// ΔEOK: Euclidean distance in Oklab (CSS Color Module Level 4, §13.2).
 [[nodiscard]] double delta_e_ok(const Oklab& a, const Oklab& b) noexcept;
+
+/// The colour differences by name, each on triples of its own space: ciede2000 and cie76 on
+/// CIELAB, cieuv (ΔE*uv) on CIELUV, oklab (ΔEOK) on Oklab.
+enum class DeltaEMetric { ciede2000, cie76, cieuv, oklab };
+/// Throws UnknownNameError listing the names.
+[[nodiscard]] DeltaEMetric parse_delta_e_metric(std::string_view name);
+[[nodiscard]] std::string_view delta_e_metric_name(DeltaEMetric metric) noexcept;
+/// The metric's difference between two triples of its space.
+[[nodiscard]] double delta_e(DeltaEMetric metric, const Vec3& a, const Vec3& b) noexcept;
 
 }  // namespace irid

@@ -3,6 +3,7 @@
 #include <irid/color/spectrum.h>
 #include <irid/color/types.h>
 
+#include <span>
 #include <string_view>
 
 namespace irid {
@@ -45,6 +46,18 @@ inline constexpr double max_luminous_efficacy_lm_per_w = 683.0;
 /// k = 1 / Σ S(λ) ȳ(λ) Δλ so the perfect reflecting diffuser has Y = 1.
 [[nodiscard]] Xyz reflectance_to_xyz(const DenseSpectrum& reflectance, const DenseSpectrum& illuminant,
                                      Observer observer = Observer::cie1931_2deg) noexcept;
+
+/// reflectance_to_xyz of a reflectance sampled at strictly increasing wavelengths (any
+/// spacing), resampled to 1 nm by linear interpolation with the ends held (CIE 015:2018 §7.2.2).
+/// Throws irid::Error for fewer than two samples, sizes that differ, a wavelength that is not
+/// finite and positive or not above the one before, wavelengths that miss 360-830 nm, or a
+/// result too large to be finite.
+[[nodiscard]] Xyz sampled_reflectance_to_xyz(std::span<const double> wavelengths_nm,
+                                             std::span<const double> values,
+                                             const DenseSpectrum& illuminant,
+                                             Observer observer = Observer::cie1931_2deg);
+/// The wavelength checks of sampled_reflectance_to_xyz alone.
+void check_sample_wavelengths(std::span<const double> wavelengths_nm);
 
 /// The illuminant's white: reflectance_to_xyz of the perfect reflecting diffuser (Y = 1).
 [[nodiscard]] Xyz illuminant_white(const DenseSpectrum& illuminant,

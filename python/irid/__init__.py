@@ -1,0 +1,300 @@
+"""irid: interference colours and gamut mapping, on numpy arrays.
+
+The library behind the ``irid`` command (C++20), for Python:
+
+* colour: :func:`convert` between every space of ``irid convert``, :func:`delta_e`, the CIE
+  observers (:func:`cmfs`) and illuminants (:func:`illuminant`, :func:`blackbody`),
+  :func:`spectrum_to_xyz` for many spectra at once, and the thesis' primaries transform
+  (:func:`primaries_transform`, Smits 1990, Figure 2);
+* gamut mapping: :func:`clip` with every method and parameter of ``irid clip``
+  (:func:`clip_methods`, :func:`clip_parameters`) and :func:`clip_report`;
+* images: :func:`read_image` and :func:`write_image` through OpenImageIO.
+
+Arrays in, arrays out: a colour argument is any array of shape (..., 3), float32 or float64
+(anything else is taken as float64), and the result has the same shape. A float32 C-contiguous
+array is read without a copy and gives float32; ``out=`` writes the result into an existing
+array (it may be the input itself). Long calls release the GIL.
+
+Errors: ``ValueError`` for bad values (with the library's message), ``KeyError`` for unknown
+names (listing the valid ones), ``OSError`` for files.
+
+Example::
+
+    import numpy as np, irid
+    rgb = np.array([[1.2, -0.1, 0.3], [0.5, 0.5, 0.5]], dtype=np.float32)
+    irid.clip(rgb, "oklab-cusp", out=rgb)        # in place, sRGB linear
+    lab = irid.convert(rgb, "srgb-linear", "oklab")
+"""
+
+from __future__ import annotations
+
+import functools
+import numbers
+
+import numpy as np
+
+from . import _irid
+
+__all__ = [
+    "ClipPipeline",
+    "blackbody",
+    "clip",
+    "clip_methods",
+    "clip_parameters",
+    "clip_report",
+    "cmfs",
+    "color_spaces",
+    "convert",
+    "delta_e",
+    "illuminant",
+    "primaries_transform",
+    "read_image",
+    "rgb_color_spaces",
+    "simd_target",
+    "spectrum_to_xyz",
+    "white_point",
+    "write_image",
+]
+
+__version__ = "0.1.0"
+
+ClipPipeline = _irid.ClipPipeline
+
+
+def _white(white):
+    """A reference white given by name ('D65', ...) or as chromaticity (x, y) → (x, y)."""
+    if isinstance(white, str):
+        return _irid.white_point(white)
+    try:
+        x, y = (float(v) for v in white)
+    except (TypeError, ValueError):
+        raise ValueError(
+            f"white: {white!r} is neither a white point's name nor a chromaticity (x, y)"
+        ) from None
+    if not (x > 0 and y > 0 and x + y < 1):
+        raise ValueError(f"white: chromaticity ({x}, {y}) must have x > 0, y > 0 and x + y < 1")
+    return x, y
+
+
+def color_spaces():
+    """Every space name of :func:`convert`: xyz, xyy, luv, lab, lchuv, lchab, oklab, oklch,
+    then NAME (encoded) and NAME-linear of each built-in RGB space."""
+    return _irid.color_space_names()
+
+
+def rgb_color_spaces():
+    """The RGB space names only (the gamuts :func:`clip` can map into)."""
+    return _irid.rgb_color_space_names()
+
+
+def white_point(name):
+    """The chromaticity (x, y) of a named white: D65, D50, D55, D75, A, C, E, or "x,y"."""
+    return _irid.white_point(name)
+
+
+def convert(a, source, target, white="D65", adaptation="bradford", out=None):
+    """Converts colours from one space to another (what ``irid convert`` does).
+
+    a: array (..., 3) of triples of ``source``; float32 stays float32, anything else is float64.
+    source, target: names from :func:`color_spaces` ("srgb", "srgb-linear", "xyz", "lab",
+        "oklab", "acescg", ...). XYZ has Y = 1 for the reference white.
+    white: the reference white of XYZ, CIELUV and CIELAB, a name ("D65") or (x, y).
+    adaptation: where a space's own white differs from the reference white: "bradford",
+        "cat02", "von-kries" or "none".
+    out: an array of the result's dtype and shape to write into (may be ``a`` itself).
+
+    Returns the converted array, of the same shape. Between two forms of one space (srgb and
+    srgb-linear) only the transfer function is applied, so colours come back bit for bit.
+    Raises KeyError for an unknown space or white, ValueError for a bad shape or an xyY
+    colour with y = 0 and Y != 0.
+    """
+    wx, wy = _white(white)
+    return _irid.convert(a, source, target, wx, wy, adaptation, out)
+
+
+def delta_e(a, b, metric="ciede2000"):
+    """Colour differences of pairs: ``a`` and ``b`` broadcast against each other, shape (..., 3).
+
+    metric: "ciede2000" (CIE 142:2001) or "cie76" on CIELAB, "cieuv" (ΔE*uv) on CIELUV,
+        "oklab" (ΔEOK) on Oklab.
+
+    Returns float64 of the broadcast shape without its last axis.
+    """
+    a = np.asarray(a, dtype=np.float64)
+    b = np.asarray(b, dtype=np.float64)
+    try:
+        a, b = np.broadcast_arrays(a, b)
+    except ValueError:
+        raise ValueError(f"a and b: shapes {a.shape} and {b.shape} do not broadcast") from None
+    return _irid.delta_e(a, b, metric)
+
+
+def cmfs(observer="cie1931"):
+    """A CIE standard observer's colour-matching functions (CIE 015:2018), 360-830 nm at 1 nm.
+
+    observer: "cie1931" (2°) or "cie1964" (10°).
+    Returns (wavelengths (471,), values (471, 3) as x̄, ȳ, z̄).
+    """
+    return _irid.cmfs(observer)
+
+
+def illuminant(name="D65", cct=None):
+    """An illuminant's relative spectral power, 360-830 nm at 1 nm (100 at 560 nm for D and A).
+
+    name: "D65", "D50", "D55", "D75", "A", "E", "D<CCT>" ("D9300"), "blackbody:<T>"; or "D"
+        with ``cct`` (4000-25000 K) for the CIE daylight of that correlated colour temperature.
+    Returns (wavelengths (471,), values (471,)).
+    """
+    if cct is not None:
+        if name.upper() != "D":
+            raise ValueError(f"illuminant: cct is for the daylight series, name 'D', not {name!r}")
+        if not isinstance(cct, numbers.Real):
+            raise ValueError(f"illuminant: cct {cct!r} is not a number")
+        return _irid.daylight(float(cct))
+    return _irid.illuminant(name)
+
+
+def blackbody(t):
+    """Planck's law at temperature ``t`` (K), 360-830 nm at 1 nm, normalised as the library's
+    blackbody illuminant. Returns (wavelengths (471,), values (471,))."""
+    if not isinstance(t, numbers.Real):
+        raise ValueError(f"blackbody: temperature {t!r} is not a number")
+    return _irid.blackbody(float(t))
+
+
+def spectrum_to_xyz(wavelengths, values, illuminant="D65", observer="cie1931"):
+    """XYZ of reflectance spectra under an illuminant, white Y = 1 (what ``irid xyz`` does).
+
+    wavelengths: (n,) strictly increasing, in nm, any spacing (resampled to 1 nm, ends held,
+        CIE 015:2018 §7.2.2); must overlap 360-830 nm.
+    values: (..., n), one spectrum per row.
+    illuminant, observer: names as for :func:`illuminant` and :func:`cmfs`.
+    Returns float64 (..., 3).
+    """
+    return _irid.spectrum_to_xyz(wavelengths, values, illuminant, observer)
+
+
+def primaries_transform(red=645.0, green=526.0, blue=444.0, observer="cie1931"):
+    """The thesis' Figure 2: colour-matching functions of three monochromatic primaries.
+
+    Returns (wavelengths (471,), rgb (471, 3), xyz_to_rgb (3, 3)) with
+    rgb(λ) = xyz_to_rgb · (x̄, ȳ, z̄)(λ).
+    """
+    return _irid.primary_matching_functions(float(red), float(green), float(blue), observer)
+
+
+def clip_methods():
+    """The names of the gamut-mapping methods, in the order of the reports."""
+    return _irid.clip_methods()
+
+
+def clip_parameters(method):
+    """The parameters of a method: a list of dicts (name, default, min, max, boolean,
+    description). As keyword arguments of :func:`clip` a '-' in a name is written '_'."""
+    return _irid.clip_parameters(method)
+
+
+def simd_target():
+    """The SIMD instruction set the float32 batch kernels run on here (AVX3, AVX2, ...)."""
+    return _irid.simd_target()
+
+
+@functools.lru_cache(maxsize=64)
+def _pipeline(method, source, target, peak, white, adaptation, params, inverse):
+    return _irid.ClipPipeline(method, source, target, peak, white[0], white[1], adaptation,
+                              list(params), inverse)
+
+
+def _parameter_value(name, value):
+    if isinstance(value, (bool, np.bool_)):
+        return 1.0 if value else 0.0
+    if isinstance(value, numbers.Real):
+        return float(value)
+    raise ValueError(f"parameter {name}: {value!r} is not a number or a boolean")
+
+
+def clip(rgb, method, source="srgb-linear", target=None, max=1.0, white="D65",
+         adaptation="bradford", threads=0, inverse=False, out=None, **params):
+    """Brings colours into an RGB space's gamut (what ``irid clip`` does to colours).
+
+    rgb: array (..., 3) of triples of ``source``.
+    method: one of :func:`clip_methods` ("smits", "oklab-cusp", "aces-rgc", ...).
+    source: any space of :func:`convert`.
+    target: the destination RGB space, whose linear cube [0, max]^3 is the gamut; the result is
+        in it (encoded for an encoded name such as "srgb"). Default: ``source`` when it is an
+        RGB space, else "srgb-linear".
+    max: the gamut's peak (HDR), 0 < max <= 1e6.
+    white, adaptation: as for :func:`convert`.
+    threads: threads to use, 0 for all.
+    inverse: apply the method's inverse (aces-rgc, smits-soft).
+    out: an array of the result's dtype and shape to write into (may be ``rgb`` itself).
+    **params: the method's parameters (:func:`clip_parameters`), '-' written '_':
+        ``clip(a, "aces-rgc", limit_cyan=1.2, clip=True)``.
+
+    float32 input runs the SIMD batch kernels (within 1e-5 × max of the double methods);
+    float64 runs the double methods, exactly what ``irid clip`` prints for CSV. aces-rgc leaves
+    colours beyond its limits slightly outside the cube unless ``clip=True``, as OpenColorIO
+    does. Raises KeyError for unknown names, ValueError for bad values and shapes.
+    """
+    if target is None:
+        target = source if source in _irid.rgb_color_space_names() else "srgb-linear"
+    if not isinstance(threads, numbers.Integral) or isinstance(threads, bool):
+        raise ValueError(f"threads: {threads!r} is not a whole number")
+    if not isinstance(max, numbers.Real) or isinstance(max, bool):
+        raise ValueError(f"max: {max!r} is not a number")
+    settings = tuple(sorted((k.replace("_", "-"), _parameter_value(k, v)) for k, v in params.items()))
+    p = _pipeline(method, source, target, float(max), _white(white), adaptation, settings,
+                  bool(inverse))
+    return p.run(rgb, int(threads), out)
+
+
+def read_image(path):
+    """Reads an image through OpenImageIO (EXR, TIFF, PNG, JPEG, HDR, ...).
+
+    Returns (pixels, metadata): pixels float32 of shape (height, width, channels), as stored
+    (8- and 16-bit files scaled to [0, 1] and still encoded: decode them with
+    ``convert(..., "srgb", "srgb-linear")`` or the space they are in); metadata a dict with
+    "channels" (names), "color_space" (irid's or OpenImageIO's name, may be empty),
+    "description", "bits" (per sample as stored) and "integer" (stored as integers).
+    Raises OSError for a file that cannot be read (missing, not an image, corrupt, larger than
+    64 Mpixel).
+    """
+    return _irid.read_image(str(path))
+
+
+def write_image(path, array, channels=None, color_space="", description="", bits=8,
+                compression=""):
+    """Writes an image; the format follows the extension (.exr: 32-bit float, linear values;
+    .png, .tif/.tiff: ``bits`` 8 or 16, encoded values in [0, 1]).
+
+    array: (height, width) or (height, width, channels), any real dtype (written from float32).
+    channels: names, default Y / Y,A / R,G,B / R,G,B,A by count.
+    color_space, description: stored as attributes (irid:ColorSpace, ImageDescription).
+    compression: OpenImageIO's name for the format (e.g. "zip", "piz" for EXR), or its default.
+
+    The file appears only when complete and never replaces what is not a regular file. Raises
+    ValueError for a bad array or channel list, OSError when the file cannot be written.
+    """
+    if not isinstance(bits, numbers.Integral) or isinstance(bits, bool):
+        raise ValueError(f"bits: {bits!r} is not 8 or 16")
+    return _irid.write_image(str(path), array, list(channels or []), color_space, description,
+                             int(bits), compression)
+
+
+def clip_report(set="all", target="srgb", min_seconds=0.2):
+    """Every clip method measured on a set of colours (what ``irid clip-report`` prints, as data).
+
+    set: "spectrum", "interference", "rec2020", "ramps" or "all" (each set, then their union).
+    target: the destination RGB space (its linear cube is the gamut).
+    min_seconds: how long each method's timing runs (0: one pass).
+
+    Returns a list with one dict per set: "set", "description", "destination", "max", "size",
+    "out_of_gamut", "ramps", "input_banding" and "methods", a dict by method name of its
+    measures: "delta_e2000", "hue_lab", "hue_oklab", "hue_luv", "delta_y", "in_gamut_moved",
+    "banding", "collapse", "collapse_relative" (each {"mean", "p95", "max", "count"}),
+    "hue_undefined", "chroma_kept", "chroma_kept_count" and "colors_per_second". The
+    definitions are in docs/GAMUT.md. aces-rgc is measured with clip=True.
+    """
+    if not isinstance(min_seconds, numbers.Real) or isinstance(min_seconds, bool):
+        raise ValueError(f"min_seconds: {min_seconds!r} is not a number")
+    return _irid.clip_report(set, target, float(min_seconds))

@@ -1,0 +1,106 @@
+#pragma once
+
+// Arrays of triples between numpy and the library: shape (..., 3), float32 or float64, kept as
+// they are when C-contiguous (no copy), converted otherwise; results in a new array or in out=.
+
+#include <irid/error.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstddef>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace irid::python {
+
+namespace py = pybind11;
+
+/// A file irid_io could not read or write: OSError in Python (module.cpp).
+class FileError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// "(2, 3)" for messages.
+inline std::string shape_text(const py::array& a) {
+    std::string s = "(";
+    for (py::ssize_t i = 0; i < a.ndim(); ++i) {
+        s += (i ? ", " : "") + std::to_string(a.shape(i));
+    }
+    return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+/// Whether a value is a float32 numpy array: the float path, without a copy when contiguous.
+inline bool is_float32(const py::handle& h) {
+    return py::isinstance<py::array>(h) &&
+           py::reinterpret_borrow<py::array>(h).dtype().is(py::dtype::of<float>());
+}
+
+/// A (..., k) array of T, C-contiguous (a copy when the input is not, or has another dtype).
+template <class T>
+struct Rows {
+    py::array_t<T, py::array::c_style | py::array::forcecast> array;
+    std::vector<py::ssize_t> shape;  // the whole shape, last axis k
+    std::size_t count = 0;           // how many rows of k
+
+    [[nodiscard]] std::span<const T> values() const {
+        return {array.data(), static_cast<std::size_t>(array.size())};
+    }
+};
+
+/// Takes `value` as rows of `k` (the last axis). Throws ValueError naming `what` otherwise.
+template <class T>
+Rows<T> rows_of(const py::handle& value, py::ssize_t k, const char* what) {
+    Rows<T> r;
+    try {
+        r.array = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(value);
+    } catch (const py::error_already_set&) {
+        throw py::value_error(std::string(what) + ": not an array of numbers");
+    }
+    if (!r.array) {
+        PyErr_Clear();
+        throw py::value_error(std::string(what) + ": not an array of numbers");
+    }
+    if (r.array.ndim() < 1 || r.array.shape(r.array.ndim() - 1) != k) {
+        throw py::value_error(std::string(what) + ": shape " + shape_text(r.array) +
+                              "; expected (..., " + std::to_string(k) + ")");
+    }
+    for (py::ssize_t i = 0; i < r.array.ndim(); ++i) r.shape.push_back(r.array.shape(i));
+    r.count = static_cast<std::size_t>(r.array.size() / k);
+    return r;
+}
+
+/// The result array: `out` when given (checked: a C-contiguous, writeable ndarray of T with
+/// exactly `shape`), else a new one.
+template <class T>
+py::array_t<T> result_array(const py::object& out, const std::vector<py::ssize_t>& shape) {
+    if (out.is_none()) return py::array_t<T>(shape);
+    if (!py::isinstance<py::array>(out)) throw py::value_error("out: not a numpy array");
+    py::array a = py::reinterpret_borrow<py::array>(out);
+    const char* dtype = std::is_same_v<T, float> ? "float32" : "float64";
+    if (!a.dtype().is(py::dtype::of<T>())) {
+        throw py::value_error(std::string("out: dtype ") + std::string(py::str(a.dtype())) +
+                              "; this call writes " + dtype);
+    }
+    bool same = a.ndim() == static_cast<py::ssize_t>(shape.size());
+    for (std::size_t i = 0; same && i < shape.size(); ++i) same = a.shape(static_cast<py::ssize_t>(i)) == shape[i];
+    if (!same) {
+        std::string expected = "(";
+        for (std::size_t i = 0; i < shape.size(); ++i) expected += (i ? ", " : "") + std::to_string(shape[i]);
+        throw py::value_error("out: shape " + shape_text(a) + "; expected " + expected +
+                              (shape.size() == 1 ? ",)" : ")"));
+    }
+    if (!(a.flags() & py::array::c_style)) throw py::value_error("out: not C-contiguous");
+    if (!a.writeable()) throw py::value_error("out: read-only");
+    return py::reinterpret_borrow<py::array_t<T>>(out);
+}
+
+template <class T>
+std::span<T> mutable_values(py::array_t<T>& a) {
+    return {a.mutable_data(), static_cast<std::size_t>(a.size())};
+}
+
+}  // namespace irid::python

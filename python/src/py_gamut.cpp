@@ -1,0 +1,179 @@
+// Gamut mapping for Python: the clip methods and their parameters, and ClipPipeline (what
+// `irid clip` does to colours) on arrays, float32 through the SIMD batch kernels, float64
+// through the double methods.
+
+#include "arrays.h"
+
+#include <irid/color.h>
+#include <irid/gamut/batch.h>
+#include <irid/gamut/clip.h>
+#include <irid/gamut/pipeline.h>
+#include <irid/gamut/report.h>
+#include <irid/figures/clip_sets.h>
+
+#include <pybind11/stl.h>
+
+#include <string>
+#include <utility>
+
+namespace irid::python {
+namespace {
+
+template <class T>
+py::array run_pipeline(const ClipPipeline& p, const py::handle& a, int threads, const py::object& out) {
+    if (threads < 0) throw py::value_error("threads: " + std::to_string(threads) + " must be >= 0 (0: all)");
+    Rows<T> in = rows_of<T>(a, 3, "colours");
+    py::array_t<T> result = result_array<T>(out, in.shape);
+    std::span<T> dst = mutable_values(result);
+    {
+        py::gil_scoped_release release;
+        if constexpr (std::is_same_v<T, float>) {
+            p.clip(in.values(), dst, BatchOptions{.threads = threads, .simd = true});
+        } else {
+            p.clip(in.values(), dst, threads);
+        }
+    }
+    return result;
+}
+
+py::dict statistics(const ClipStatistics& s) {
+    py::dict d;
+    d["mean"] = s.mean;
+    d["p95"] = s.p95;
+    d["max"] = s.max;
+    d["count"] = s.count;
+    return d;
+}
+
+py::dict method_report(const MethodClipReport& m) {
+    py::dict d;
+    d["delta_e2000"] = statistics(m.delta_e2000);
+    d["hue_lab"] = statistics(m.hue_lab);
+    d["hue_oklab"] = statistics(m.hue_oklab);
+    d["hue_luv"] = statistics(m.hue_luv);
+    d["hue_undefined"] = m.hue_undefined;
+    d["delta_y"] = statistics(m.delta_y);
+    d["chroma_kept"] = m.chroma_kept;
+    d["chroma_kept_count"] = m.chroma_kept_count;
+    d["colors_per_second"] = m.colors_per_second;
+    d["in_gamut_moved"] = statistics(m.in_gamut_moved);
+    d["banding"] = statistics(m.banding);
+    d["collapse"] = statistics(m.collapse);
+    d["collapse_relative"] = statistics(m.collapse_relative);
+    return d;
+}
+
+py::dict report_dict(const ClipReport& r) {
+    py::dict d;
+    d["set"] = r.set_name;
+    d["description"] = r.set_description;
+    d["destination"] = r.destination;
+    d["max"] = r.max;
+    d["size"] = r.size;
+    d["out_of_gamut"] = r.out_of_gamut;
+    d["ramps"] = r.ramps;
+    d["input_banding"] = statistics(r.input_banding);
+    py::dict methods;
+    for (const MethodClipReport& m : r.methods) {
+        methods[py::str(std::string(clip_method_name(m.method)))] = method_report(m);
+    }
+    d["methods"] = methods;
+    return d;
+}
+
+}  // namespace
+
+void add_gamut(py::module_& m) {
+    m.def("clip_methods", [] {
+        std::vector<std::string> names;
+        for (const ClipMethod c : clip_methods()) names.emplace_back(clip_method_name(c));
+        return names;
+    });
+    m.def("clip_parameters", [](const std::string& method) {
+        py::list out;
+        for (const ClipParameterInfo& p : clip_parameters(parse_clip_method(method))) {
+            py::dict d;
+            d["name"] = std::string(p.name);
+            d["default"] = p.boolean ? py::object(py::bool_(p.default_value != 0.0))
+                                     : py::object(py::float_(p.default_value));
+            d["min"] = p.min;
+            d["max"] = p.max;
+            d["boolean"] = p.boolean;
+            d["description"] = std::string(p.description);
+            out.append(d);
+        }
+        return out;
+    });
+    m.def("has_inverse", [](const std::string& method) { return has_inverse(parse_clip_method(method)); });
+    m.def("simd_target", [] { return std::string(simd_target_name()); });
+
+    py::class_<ClipPipeline>(m, "ClipPipeline")
+        .def(py::init([](const std::string& method, const std::string& source,
+                         const std::string& target, double max, double wx, double wy,
+                         const std::string& adaptation, const std::vector<std::pair<std::string, double>>& params,
+                         bool inverse) {
+                 const ClipMethod cm = parse_clip_method(method);
+                 const ColorSpace from = color_space(source);
+                 const ColorSpace to = color_space(target);
+                 if (!to.is_rgb()) {
+                     throw Error("target '" + target +
+                                 "' is not an RGB space; the gamut is an RGB space's cube");
+                 }
+                 ClipPipelineOptions o;
+                 o.max = max;
+                 o.white = {wx, wy};
+                 o.adaptation = parse_chromatic_adaptation(adaptation);
+                 o.settings.inverse = inverse;
+                 for (const auto& [k, v] : params) o.settings.set(k, v);
+                 return ClipPipeline(cm, from, to, o);
+             }),
+             py::arg("method"), py::arg("source"), py::arg("target"), py::arg("max"), py::arg("wx"),
+             py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"))
+        .def(
+            "run",
+            [](const ClipPipeline& p, const py::handle& a, int threads, const py::object& out) {
+                if (is_float32(a)) return run_pipeline<float>(p, a, threads, out);
+                return run_pipeline<double>(p, a, threads, out);
+            },
+            py::arg("a"), py::arg("threads"), py::arg("out"))
+        .def_property_readonly("method",
+                               [](const ClipPipeline& p) { return std::string(clip_method_name(p.clipper().method())); })
+        .def_property_readonly("parameters",
+                               [](const ClipPipeline& p) {
+                                   py::dict d;
+                                   for (const auto& [k, v] : p.clipper().parameters()) d[py::str(k)] = v;
+                                   return d;
+                               })
+        .def_property_readonly("inverse", [](const ClipPipeline& p) { return p.clipper().inverse(); })
+        .def_property_readonly("confines_to_cube",
+                               [](const ClipPipeline& p) { return p.clipper().confines_to_cube(); });
+
+    m.def(
+        "clip_report",
+        [](const std::string& set, const std::string& target, double min_seconds) {
+            const std::vector<figures::ClipReportSet> kinds = figures::parse_clip_report_sets(set);
+            const ColorSpace to = color_space(target);
+            if (!to.is_rgb()) {
+                throw Error("target '" + target + "' is not an RGB space; the gamut is an RGB space's cube");
+            }
+            std::vector<ClipReport> reports;
+            {
+                py::gil_scoped_release release;
+                const Gamut gamut(*to.rgb);
+                std::vector<ColorSet> sets;
+                for (const figures::ClipReportSet k : kinds) {
+                    sets.push_back(figures::clip_report_color_set(k, *to.rgb));
+                }
+                if (sets.size() > 1) sets.push_back(union_color_set(sets, set));
+                ClipReportOptions options;
+                options.min_seconds = min_seconds;
+                for (const ColorSet& s : sets) reports.push_back(measure_clip_report(s, gamut, options));
+            }
+            py::list out;
+            for (const ClipReport& r : reports) out.append(report_dict(r));
+            return out;
+        },
+        py::arg("set"), py::arg("target"), py::arg("min_seconds"));
+}
+
+}  // namespace irid::python

@@ -1,0 +1,80 @@
+"""Images from Python through irid_io: round trips, an independent reader (PIL), metadata and
+the refusals (OSError for files, ValueError for arrays)."""
+
+import os
+import socket
+import stat
+
+import numpy as np
+import pytest
+
+import irid
+
+
+def test_exr_round_trip_is_exact(tmp_path):
+    rng = np.random.default_rng(1)
+    a = rng.uniform(-2, 5, (13, 17, 4)).astype(np.float32)
+    irid.write_image(tmp_path / "a.exr", a, color_space="acescg", description="test")
+    b, meta = irid.read_image(tmp_path / "a.exr")
+    assert b.dtype == np.float32 and b.shape == (13, 17, 4)
+    np.testing.assert_array_equal(b, a)
+    assert meta["channels"] == ["R", "G", "B", "A"]
+    assert meta["color_space"] == "acescg"
+    assert meta["bits"] == 32 and not meta["integer"]
+    one, meta = irid.read_image(str(tmp_path / "a.exr"))
+    np.testing.assert_array_equal(one, a)
+
+
+def test_png_matches_an_independent_reader(tmp_path):
+    pil = pytest.importorskip("PIL.Image")
+    rng = np.random.default_rng(2)
+    a = rng.uniform(0, 1, (9, 11, 3))
+    irid.write_image(tmp_path / "a.png", a, bits=8)
+    with pil.open(tmp_path / "a.png") as im:
+        assert im.mode == "RGB" and im.size == (11, 9)
+        pixels = np.asarray(im)
+    # 8-bit samples are round(v × 255) (docs/RELIABILITY.md, irid/io/image.h).
+    np.testing.assert_array_equal(pixels, np.round(a.astype(np.float32) * 255).astype(np.uint8))
+    back, meta = irid.read_image(tmp_path / "a.png")
+    assert meta["integer"] and meta["bits"] == 8
+    np.testing.assert_allclose(back, pixels / 255.0, atol=1e-7)
+
+
+def test_sixteen_bit_tiff_and_grey(tmp_path):
+    a = np.linspace(0, 1, 64, dtype=np.float32).reshape(8, 8)
+    irid.write_image(tmp_path / "g.tif", a, bits=16)
+    back, meta = irid.read_image(tmp_path / "g.tif")
+    assert back.shape == (8, 8, 1) and meta["bits"] == 16
+    np.testing.assert_allclose(back[..., 0], np.round(a * 65535) / 65535, atol=1e-7)
+
+
+def test_refusals(tmp_path):
+    with pytest.raises(OSError, match="no such file"):
+        irid.read_image(tmp_path / "missing.exr")
+    (tmp_path / "bad.png").write_bytes(b"not a png at all")
+    with pytest.raises(OSError):
+        irid.read_image(tmp_path / "bad.png")
+    with pytest.raises(OSError):
+        irid.read_image(tmp_path)                       # a folder
+    a = np.zeros((4, 4, 3), dtype=np.float32)
+    with pytest.raises(OSError, match="extension"):
+        irid.write_image(tmp_path / "a.bmp", a)
+    # What is neither a regular file nor a stream (a character device, a FIFO) is never
+    # replaced: a folder, a socket.
+    (tmp_path / "dir.exr").mkdir()
+    with pytest.raises(OSError, match="directory"):
+        irid.write_image(tmp_path / "dir.exr", a)
+    assert (tmp_path / "dir.exr").is_dir()
+    with socket.socket(socket.AF_UNIX) as s:
+        s.bind(str(tmp_path / "sock.exr"))
+        with pytest.raises(OSError, match="socket"):
+            irid.write_image(tmp_path / "sock.exr", a)
+        assert stat.S_ISSOCK(os.stat(tmp_path / "sock.exr").st_mode)
+    for bad in [np.zeros((4,)), np.zeros((0, 4, 3)), "text"]:
+        with pytest.raises(ValueError):
+            irid.write_image(tmp_path / "x.exr", bad)
+    with pytest.raises(ValueError, match="names"):
+        irid.write_image(tmp_path / "x.exr", a, channels=["R", "G"])
+    with pytest.raises(OSError):
+        irid.write_image(tmp_path / "x.png", a, bits=12)
+    assert not (tmp_path / "x.png").exists() and not (tmp_path / "x.exr").exists()
