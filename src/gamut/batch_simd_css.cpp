@@ -113,10 +113,13 @@ constexpr float grazing_gain = 16.0f;
 /// path.
 constexpr float diverging_ratio = 2.0f;
 /// css-raytrace: a lane whose anchor the float bounds (1e-6) keep where the double reference's
-/// (1e-12) would move it goes to the double path: its passes then differ by more than rounding,
-/// for a dark colour (whose channels are near 1e-6 max) and for a light one too (fuzz finding
-/// clip-9: on SMPTE-C at max 100, a channel of 4.8e-5 left the anchor in place in float and the
-/// result 3e-5 max away).
+/// (1e-12) would move it goes to the double path when that changes its passes by more than
+/// rounding: a dark colour (brightest channel below dark_channel × max), or a colour with a
+/// channel of its own between rounding_channel × max and the float bound (near 0 or near max;
+/// fuzz finding clip-9: on SMPTE-C at max 100, a channel of 4.8e-5 left the anchor in place in
+/// float and the result 3e-5 max away).
+constexpr float dark_channel = 1e-3f;
+constexpr float rounding_channel = 2e-7f;
 
 /// A double 3×3 matrix (row-major) as float pairs, m = hi + lo to about 2^-48 |m|.
 struct PairMatrix {
@@ -588,6 +591,14 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         const Mf near_cube = InCube(r, g, b, hn::Neg(tol), hn::Add(p.max, tol));
         Mf active = hn::Not(hn::Or(hn::Or(inside, near_cube), hn::Or(white, black)));
         Mf wild = hn::Lt(zero, zero), grazing = wild, bounds_path = wild, diverging = wild;
+        const Vf dark = hn::Mul(hn::Set(d, dark_channel), p.max);
+        const Vf rounding = hn::Mul(hn::Set(d, rounding_channel), p.max);
+        // A channel of the colour itself between the two bounds, by more than rounding.
+        const auto between = [&](Vf v) {
+            return hn::Or(hn::And(hn::Ge(v, rounding), hn::Le(v, low)),
+                          hn::And(hn::Ge(v, high), hn::Le(v, hn::Sub(p.max, rounding))));
+        };
+        bounds_path = hn::And(active, hn::Or(hn::Or(between(r), between(g)), between(b)));
         Vf last_moved = zero;
         for (int it = 0; it < 4; ++it) {
             if (it > 0) {
@@ -638,7 +649,14 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
                     hn::And(hn::And(hn::Lt(low_d, c_r), hn::Lt(c_r, high_d)),
                             hn::And(hn::Lt(low_d, c_g), hn::Lt(c_g, high_d))),
                     hn::And(hn::Lt(low_d, c_b), hn::Lt(c_b, high_d)));
-                bounds_path = hn::Or(bounds_path, hn::AndNot(below, hn::And(active, below_double)));
+                // That matters for a dark colour (channels near 1e-6 max themselves); for a
+                // lighter one the points' channels between the two bounds are a face point's
+                // rounding, which moves the double path by rounding only (the colour's own
+                // channels between them are flagged before the loop).
+                const Vf brightest = hn::Max(hn::Max(c_r, c_g), c_b);
+                bounds_path = hn::Or(bounds_path,
+                                     hn::And(hn::AndNot(below, hn::And(active, below_double)),
+                                             hn::Lt(brightest, dark)));
                 a0 = hn::IfThenElse(move, c_r, a0);
                 a1 = hn::IfThenElse(move, c_g, a1);
                 a2 = hn::IfThenElse(move, c_b, a2);

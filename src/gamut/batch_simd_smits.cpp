@@ -11,7 +11,7 @@
 // large terms). Per kernel, the few cases the comment of each kernel names. On the benchmark's
 // input (2^20 colours uniform in [-0.5, 1.5]^3, redrawn until out of sRGB) the hard lanes are:
 // smits-xyz 0, luv-lightness-hue 0.8 %, smits-corrected 6 % (measured before its step bound went
-// from 0.1 to 0.4, which sends more lanes to the double path), smits-soft 0 (forward and inverse).
+// from 0.1 to 0.2, which sends more lanes to the double path), smits-soft 0 (forward and inverse).
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE __BASE_FILE__
@@ -337,7 +337,7 @@ std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, flo
     const Vf min_lms_bound = hn::Mul(max, hn::Set(d, 0.003f));
     const Vf third = hn::Set(d, 1.0f / 3.0f);
     const Vf tie = hn::Set(d, 2e-5f);
-    const Vf slow = hn::Set(d, 0.4f);
+    const Vf slow = hn::Set(d, 0.2f);
     return RunKernel(clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& rr, Vf& gg, Vf& bb) {
         const Mf outside = Outside(r, g, b, zero, max);
         Vf p[3];
@@ -418,9 +418,10 @@ std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, flo
         gg = hn::IfThenElse(outside, Clamp(o[1], zero, max), g);
         bb = hn::IfThenElse(outside, Clamp(o[2], zero, max), b);
         // The step's float error, about 3e-7/C rad of hue over the slope along d, times |d|:
-        // C · |slope| >= 0.4 |d| keeps it small. (At 0.1, 1 million colours on SMPTE-C found
-        // 9.96e-6 max, at the contract's edge; at 0.4 the largest of 2 million on each built-in
-        // space is 3.8e-6.)
+        // C · |slope| >= 0.2 |d| keeps it small. (At 0.1, and still at 0.14, 2 million colours
+        // on SMPTE-C found 9.96e-6 max, at the contract's edge; at 0.2 the largest of 2 million
+        // on sRGB, SMPTE-C, Display P3 is 4.3e-6. The price: 4.1 M colours/s on one thread
+        // instead of 18.4 M, more lanes taking the double path.)
         const Vf chroma = hn::Sqrt(hn::Min(t_c2, p_c2));
         const Mf ill =
             hn::Or(hn::Or(hn::Lt(t_c2, min_chroma2), hn::Lt(p_c2, min_chroma2)),
