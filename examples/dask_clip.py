@@ -34,19 +34,14 @@ def clip_array(array, method, **options):
 
 
 def clip_frame(source_path, target_path, method, source="acescg", target="acescg", threads=1):
-    """One frame: the R, G, B channels of an EXR clipped, every other channel kept as it was.
-    Returns the target path."""
+    """One EXR frame clipped as ``irid clip --method M --from SOURCE --to TARGET IN OUT`` does
+    (irid.clip_image: the colour unpremultiplied by alpha, clipped, premultiplied again; other
+    channels kept; aces-rgc with clip=True). Returns the target path."""
     pixels, meta = irid.read_image(source_path)
-    names = meta["channels"]
-    try:
-        rgb = [names.index(c) for c in "RGB"]
-    except ValueError:
-        raise ValueError(f"{source_path}: channels {names}; R, G and B are needed") from None
-    colour = np.ascontiguousarray(pixels[..., rgb])
-    irid.clip(colour, method, source=source, target=target, threads=threads, out=colour)
-    pixels[..., rgb] = colour
-    irid.write_image(target_path, pixels, channels=names, color_space=target,
-                     description=f"irid.clip method {method} from {source} to {target}")
+    clipped, names = irid.clip_image(pixels, meta["channels"], method, source=source,
+                                     target=target, premultiplied=True, threads=threads)
+    irid.write_image(target_path, clipped, channels=names, color_space=f"{target}-linear",
+                     description=f"irid.clip_image method {method} from {source} to {target}")
     return str(target_path)
 
 
@@ -87,9 +82,9 @@ def main(argv=None):
     with LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
                       dashboard_address=None) as cluster, Client(cluster) as client, \
             tempfile.TemporaryDirectory() as scratch:
-        # 1. An array of 64 Mcolours (768 MB of float32), 16 chunks.
-        shape = (8192, 8192, 3)
-        array = da.random.RandomState(2).uniform(-0.3, 1.4, size=shape, chunks=(2048, 2048, 3))
+        # 1. An array of 16 Mcolours (201 MB of float32), 16 chunks.
+        shape = (4096, 4096, 3)
+        array = da.random.RandomState(2).uniform(-0.3, 1.4, size=shape, chunks=(1024, 1024, 3))
         array = array.astype(np.float32)
         start = time.perf_counter()
         clipped = clip_array(array, "oklab-cusp", source="srgb-linear")

@@ -6,7 +6,8 @@ The library behind the ``irid`` command (C++20), for Python:
   observers (:func:`cmfs`) and illuminants (:func:`illuminant`, :func:`blackbody`),
   :func:`spectrum_to_xyz` for many spectra at once, and the thesis' primaries transform
   (:func:`primaries_transform`, Smits 1990, Figure 2);
-* gamut mapping: :func:`clip` with every method and parameter of ``irid clip``
+* gamut mapping: :func:`clip` and :func:`clip_image` with every method and parameter of
+  ``irid clip``
   (:func:`clip_methods`, :func:`clip_parameters`) and :func:`clip_report`;
 * images: :func:`read_image` and :func:`write_image` through OpenImageIO.
 
@@ -30,15 +31,16 @@ from __future__ import annotations
 
 import functools
 import numbers
+import os
 
 import numpy as np
 
 from . import _irid
 
 __all__ = [
-    "ClipPipeline",
     "blackbody",
     "clip",
+    "clip_image",
     "clip_methods",
     "clip_parameters",
     "clip_report",
@@ -58,13 +60,59 @@ __all__ = [
 
 __version__ = "0.1.0"
 
-ClipPipeline = _irid.ClipPipeline
+_RGB_SPACES = frozenset(_irid.rgb_color_space_names())
+
+
+def _name(value, what):
+    """A name argument: a str (KeyError from the library when it is unknown)."""
+    if not isinstance(value, str):
+        raise ValueError(f"{what}: {value!r} is not a name (str)")
+    return value
+
+
+def _text(value, what):
+    """A text argument stored in a file: a str without NUL bytes."""
+    if not isinstance(value, str):
+        raise ValueError(f"{what}: {value!r} is not a str")
+    if "\0" in value:
+        raise ValueError(f"{what}: contains a NUL byte")
+    return value
+
+
+def _path(path):
+    """A file name: str, bytes or os.PathLike, without NUL bytes."""
+    try:
+        p = os.fsdecode(os.fspath(path))
+    except TypeError:
+        raise ValueError(f"path: {path!r} is not a file name") from None
+    if "\0" in p:
+        raise ValueError(f"path: {p!r} contains a NUL byte")
+    return p
+
+
+def _whole(value, what, lo, hi):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise ValueError(f"{what}: {value!r} is not a whole number")
+    if not lo <= value <= hi:
+        raise ValueError(f"{what}: {value} must be in [{lo}, {hi}]")
+    return int(value)
+
+
+def _flag(value, what):
+    if not isinstance(value, (bool, np.bool_)):
+        raise ValueError(f"{what}: {value!r} is not True or False")
+    return bool(value)
+
+
+@functools.lru_cache(maxsize=32)
+def _named_white(name):
+    return _irid.white_point(name)
 
 
 def _white(white):
     """A reference white given by name ('D65', ...) or as chromaticity (x, y) → (x, y)."""
     if isinstance(white, str):
-        return _irid.white_point(white)
+        return _named_white(white)
     try:
         x, y = (float(v) for v in white)
     except (TypeError, ValueError):
@@ -101,15 +149,18 @@ def convert(a, source, target, white="D65", adaptation="bradford", out=None):
     white: the reference white of XYZ, CIELUV and CIELAB, a name ("D65") or (x, y).
     adaptation: where a space's own white differs from the reference white: "bradford",
         "cat02", "von-kries" or "none".
-    out: an array of the result's dtype and shape to write into (may be ``a`` itself).
+    out: a C-contiguous array of the result's dtype and shape to write into (may be ``a``
+        itself, not a part of it).
 
-    Returns the converted array, of the same shape. Between two forms of one space (srgb and
-    srgb-linear) only the transfer function is applied, so colours come back bit for bit.
-    Raises KeyError for an unknown space or white, ValueError for a bad shape or an xyY
-    colour with y = 0 and Y != 0.
+    Returns the converted array, of the same shape. Converting a space to itself returns the
+    colours bit for bit; between two forms of one space (srgb and srgb-linear) only the
+    transfer function is applied (no trip through XYZ). Raises KeyError for an unknown space or
+    white, ValueError for a bad shape, a non-numeric array or an xyY colour with y = 0 and
+    Y != 0.
     """
     wx, wy = _white(white)
-    return _irid.convert(a, source, target, wx, wy, adaptation, out)
+    return _irid.convert(a, _name(source, "source"), _name(target, "target"), wx, wy,
+                         _name(adaptation, "adaptation"), out)
 
 
 def delta_e(a, b, metric="ciede2000"):
@@ -126,7 +177,7 @@ def delta_e(a, b, metric="ciede2000"):
         a, b = np.broadcast_arrays(a, b)
     except ValueError:
         raise ValueError(f"a and b: shapes {a.shape} and {b.shape} do not broadcast") from None
-    return _irid.delta_e(a, b, metric)
+    return _irid.delta_e(a, b, _name(metric, "metric"))
 
 
 def cmfs(observer="cie1931"):
@@ -135,7 +186,7 @@ def cmfs(observer="cie1931"):
     observer: "cie1931" (2°) or "cie1964" (10°).
     Returns (wavelengths (471,), values (471, 3) as x̄, ȳ, z̄).
     """
-    return _irid.cmfs(observer)
+    return _irid.cmfs(_name(observer, "observer"))
 
 
 def illuminant(name="D65", cct=None):
@@ -145,6 +196,7 @@ def illuminant(name="D65", cct=None):
         with ``cct`` (4000-25000 K) for the CIE daylight of that correlated colour temperature.
     Returns (wavelengths (471,), values (471,)).
     """
+    _name(name, "illuminant")
     if cct is not None:
         if name.upper() != "D":
             raise ValueError(f"illuminant: cct is for the daylight series, name 'D', not {name!r}")
@@ -155,8 +207,8 @@ def illuminant(name="D65", cct=None):
 
 
 def blackbody(t):
-    """Planck's law at temperature ``t`` (K), 360-830 nm at 1 nm, normalised as the library's
-    blackbody illuminant. Returns (wavelengths (471,), values (471,))."""
+    """Planck's law at temperature ``t`` (100 to 1e6 K), 360-830 nm at 1 nm, normalised to 100
+    at 560 nm. Returns (wavelengths (471,), values (471,))."""
     if not isinstance(t, numbers.Real):
         raise ValueError(f"blackbody: temperature {t!r} is not a number")
     return _irid.blackbody(float(t))
@@ -168,10 +220,12 @@ def spectrum_to_xyz(wavelengths, values, illuminant="D65", observer="cie1931"):
     wavelengths: (n,) strictly increasing, in nm, any spacing (resampled to 1 nm, ends held,
         CIE 015:2018 §7.2.2); must overlap 360-830 nm.
     values: (..., n), one spectrum per row.
-    illuminant, observer: names as for :func:`illuminant` and :func:`cmfs`.
+    illuminant: "D65", "D50", "D55", "D75", "A", "E", "D<CCT>" ("D5000") or "blackbody:<T>".
+    observer: "cie1931" or "cie1964".
     Returns float64 (..., 3).
     """
-    return _irid.spectrum_to_xyz(wavelengths, values, illuminant, observer)
+    return _irid.spectrum_to_xyz(wavelengths, values, _name(illuminant, "illuminant"),
+                                 _name(observer, "observer"))
 
 
 def primaries_transform(red=645.0, green=526.0, blue=444.0, observer="cie1931"):
@@ -180,7 +234,8 @@ def primaries_transform(red=645.0, green=526.0, blue=444.0, observer="cie1931"):
     Returns (wavelengths (471,), rgb (471, 3), xyz_to_rgb (3, 3)) with
     rgb(λ) = xyz_to_rgb · (x̄, ȳ, z̄)(λ).
     """
-    return _irid.primary_matching_functions(float(red), float(green), float(blue), observer)
+    return _irid.primary_matching_functions(float(red), float(green), float(blue),
+                                            _name(observer, "observer"))
 
 
 def clip_methods():
@@ -191,7 +246,7 @@ def clip_methods():
 def clip_parameters(method):
     """The parameters of a method: a list of dicts (name, default, min, max, boolean,
     description). As keyword arguments of :func:`clip` a '-' in a name is written '_'."""
-    return _irid.clip_parameters(method)
+    return _irid.clip_parameters(_name(method, "method"))
 
 
 def simd_target():
@@ -227,25 +282,93 @@ def clip(rgb, method, source="srgb-linear", target=None, max=1.0, white="D65",
     white, adaptation: as for :func:`convert`.
     threads: threads to use, 0 for all.
     inverse: apply the method's inverse (aces-rgc, smits-soft).
-    out: an array of the result's dtype and shape to write into (may be ``rgb`` itself).
+    out: a C-contiguous array of the result's dtype and shape to write into (may be ``rgb``
+        itself, not a part of it).
     **params: the method's parameters (:func:`clip_parameters`), '-' written '_':
         ``clip(a, "aces-rgc", limit_cyan=1.2, clip=True)``.
 
-    float32 input runs the SIMD batch kernels (within 1e-5 × max of the double methods);
-    float64 runs the double methods, exactly what ``irid clip`` prints for CSV. aces-rgc leaves
-    colours beyond its limits slightly outside the cube unless ``clip=True``, as OpenColorIO
-    does. Raises KeyError for unknown names, ValueError for bad values and shapes.
+    float64 runs the double methods: exactly what ``irid clip`` prints for CSV. float32 (any
+    byte order) converts each colour to the target's linear RGB in double, rounds it to float
+    and runs the SIMD batch kernels: smits and clamp give the bits of their float form, the
+    others are within 1e-5 × max of the double methods on that float linear input (a method
+    sensitive to its input, such as css across spaces, can differ more from the float64 path,
+    which does not round in between). aces-rgc leaves colours beyond its limits slightly
+    outside the cube unless ``clip=True``, as OpenColorIO does. Raises KeyError for unknown
+    names, ValueError for bad values, shapes and non-numeric arrays.
     """
+    # The pipelines already built, by their arguments as given: a repeated call skips the
+    # checks (one dictionary lookup), which keeps the call on one colour near a microsecond.
+    try:
+        key = (method, source, target, max, white, adaptation, inverse, tuple(params.items()))
+        p = _recent.get(key)
+    except TypeError:   # an unhashable argument: the checks below refuse it
+        key, p = None, None
+    if p is None:
+        p = _clip_pipeline(method, source, target, max, white, adaptation, inverse, params)
+        if key is not None:
+            if len(_recent) >= 256:
+                _recent.clear()
+            _recent[key] = p
+    if threads.__class__ is not int or not 0 <= threads <= 1 << 20:
+        threads = _whole(threads, "threads", 0, 1 << 20)
+    return p.run(rgb, threads, out)
+
+
+_recent = {}
+
+
+def _clip_pipeline(method, source, target, max, white, adaptation, inverse, params,
+                   image=False):
+    _name(method, "method")
+    _name(source, "source")
     if target is None:
-        target = source if source in _irid.rgb_color_space_names() else "srgb-linear"
-    if not isinstance(threads, numbers.Integral) or isinstance(threads, bool):
-        raise ValueError(f"threads: {threads!r} is not a whole number")
+        target = source if source in _RGB_SPACES else "srgb-linear"
+    _name(target, "target")
     if not isinstance(max, numbers.Real) or isinstance(max, bool):
         raise ValueError(f"max: {max!r} is not a number")
-    settings = tuple(sorted((k.replace("_", "-"), _parameter_value(k, v)) for k, v in params.items()))
-    p = _pipeline(method, source, target, float(max), _white(white), adaptation, settings,
-                  bool(inverse))
-    return p.run(rgb, int(threads), out)
+    values = {k.replace("_", "-"): _parameter_value(k, v) for k, v in params.items()}
+    if image and method == "aces-rgc":
+        values.setdefault("clip", 1.0)   # a file cannot hold what a display cannot show
+    return _pipeline(method, source, target, float(max), _white(white),
+                     _name(adaptation, "adaptation"), tuple(sorted(values.items())),
+                     _flag(inverse, "inverse"))
+
+
+def clip_image(pixels, channels, method, source=None, target=None, premultiplied=False,
+               premultiplied_out=None, encode=False, max=1.0, white="D65", adaptation="bradford",
+               threads=0, inverse=False, **params):
+    """Clips an image's colours as ``irid clip IN OUT`` does; returns (pixels, channels).
+
+    pixels: (height, width, channels), as :func:`read_image` returns them.
+    channels: their names. The colour is R, G and B by name, else X, Y and Z (a CIE XYZ image,
+        whose channels come back named R, G, B); every other channel, alpha ("A") included, is
+        returned as it was.
+    source: the colour's space; default "srgb-linear", or "xyz" for X, Y, Z channels (which
+        allow no other).
+    premultiplied: the colour is premultiplied by A (an EXR's, the OpenEXR convention): it is
+        clipped unpremultiplied (a pixel of alpha 0 keeps its values).
+    premultiplied_out: premultiply the result by A again (default: as ``premultiplied``; False
+        for a PNG or TIFF file, whose colour is not premultiplied).
+    encode: apply the target's transfer function (for a PNG or TIFF file).
+    The other arguments are :func:`clip`'s; aces-rgc gets ``clip=True`` unless given, as images
+    do on the command line. The result is a new float32 array.
+    """
+    names = [_text(c, "channels") for c in channels]
+    xyz_channels = _irid.image_colour_channels(names)[3]
+    if source is None:
+        source = "xyz" if xyz_channels else "srgb-linear"
+    elif xyz_channels and source != "xyz":
+        raise ValueError(f"channels X, Y, Z hold CIE XYZ but source is {source!r}; give "
+                         f"source='xyz' or leave it out")
+    p = _clip_pipeline(method, source, target, max, white, adaptation, inverse, params, image=True)
+    out = np.array(pixels, dtype=np.float32, order="C", copy=True)
+    if out.ndim != 3:
+        raise ValueError(f"pixels: shape {out.shape}; expected (height, width, channels)")
+    pre_in = _flag(premultiplied, "premultiplied")
+    pre_out = pre_in if premultiplied_out is None else _flag(premultiplied_out, "premultiplied_out")
+    names = _irid.clip_image(out, names, p, pre_in, pre_out, _flag(encode, "encode"),
+                             _whole(threads, "threads", 0, 1 << 20))
+    return out, names
 
 
 def read_image(path):
@@ -259,7 +382,7 @@ def read_image(path):
     Raises OSError for a file that cannot be read (missing, not an image, corrupt, larger than
     64 Mpixel).
     """
-    return _irid.read_image(str(path))
+    return _irid.read_image(_path(path))
 
 
 def write_image(path, array, channels=None, color_space="", description="", bits=8,
@@ -275,10 +398,12 @@ def write_image(path, array, channels=None, color_space="", description="", bits
     The file appears only when complete and never replaces what is not a regular file. Raises
     ValueError for a bad array or channel list, OSError when the file cannot be written.
     """
-    if not isinstance(bits, numbers.Integral) or isinstance(bits, bool):
-        raise ValueError(f"bits: {bits!r} is not 8 or 16")
-    return _irid.write_image(str(path), array, list(channels or []), color_space, description,
-                             int(bits), compression)
+    if isinstance(bits, bool) or bits not in (8, 16):
+        raise ValueError(f"bits: {bits!r}; valid values are 8 and 16")
+    names = [_text(c, "channels") for c in (channels or [])]
+    return _irid.write_image(_path(path), array, names, _text(color_space, "color_space"),
+                             _text(description, "description"), int(bits),
+                             _text(compression, "compression"))
 
 
 def clip_report(set="all", target="srgb", min_seconds=0.2):
@@ -297,4 +422,4 @@ def clip_report(set="all", target="srgb", min_seconds=0.2):
     """
     if not isinstance(min_seconds, numbers.Real) or isinstance(min_seconds, bool):
         raise ValueError(f"min_seconds: {min_seconds!r} is not a number")
-    return _irid.clip_report(set, target, float(min_seconds))
+    return _irid.clip_report(_name(set, "set"), _name(target, "target"), float(min_seconds))

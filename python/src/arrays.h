@@ -33,10 +33,35 @@ inline std::string shape_text(const py::array& a) {
     return s + (a.ndim() == 1 ? ",)" : ")");
 }
 
-/// Whether a value is a float32 numpy array: the float path, without a copy when contiguous.
-inline bool is_float32(const py::handle& h) {
-    return py::isinstance<py::array>(h) &&
-           py::reinterpret_borrow<py::array>(h).dtype().is(py::dtype::of<float>());
+/// `value` as a numpy array of numbers (bool, integer, unsigned or float; lists are converted).
+/// Throws ValueError naming `what` for anything else (strings, objects, complex, dates), and
+/// lets a MemoryError through.
+inline py::array numeric_array(const py::handle& value, const char* what) {
+    if (py::isinstance<py::array>(value)) {
+        py::array a = py::reinterpret_borrow<py::array>(value);
+        const char kind = a.dtype().kind();
+        if (kind == 'b' || kind == 'i' || kind == 'u' || kind == 'f') return a;
+    }
+    // numpy's own conversion (PyArray_FromAny without a dtype), keeping its exceptions.
+    constexpr int ensure_array = 0x40;  // NPY_ARRAY_ENSUREARRAY
+    py::array a = py::reinterpret_steal<py::array>(py::detail::npy_api::get().PyArray_FromAny_(
+        value.ptr(), nullptr, 0, 0, ensure_array, nullptr));
+    if (!a) {
+        if (PyErr_ExceptionMatches(PyExc_MemoryError)) throw py::error_already_set();
+        PyErr_Clear();
+        throw py::value_error(std::string(what) + ": not an array of numbers");
+    }
+    const char kind = a.dtype().kind();
+    if (kind != 'b' && kind != 'i' && kind != 'u' && kind != 'f') {
+        throw py::value_error(std::string(what) + ": dtype " + std::string(py::str(a.dtype())) +
+                              "; numbers are needed (bool, integer or float)");
+    }
+    return a;
+}
+
+/// Whether a numeric array holds 4-byte floats (of either byte order): the float path.
+inline bool is_float32(const py::array& a) {
+    return a.dtype().kind() == 'f' && a.dtype().itemsize() == 4;
 }
 
 /// A (..., k) array of T, C-contiguous (a copy when the input is not, or has another dtype).
@@ -51,19 +76,30 @@ struct Rows {
     }
 };
 
-/// Takes `value` as rows of `k` (the last axis). Throws ValueError naming `what` otherwise.
+/// Takes `value` (numeric_array's) as rows of `k` (the last axis). Throws ValueError naming
+/// `what` otherwise.
+/// `value` (numeric_array's) as a C-contiguous array of T: numpy.ascontiguousarray, which makes
+/// no copy for a C-contiguous array of T and raises numpy's exceptions (MemoryError) for a
+/// conversion that cannot be made.
+template <class T>
+py::array_t<T, py::array::c_style | py::array::forcecast> contiguous_of(const py::handle& value,
+                                                                         const char* what) {
+    using Contiguous = py::array_t<T, py::array::c_style | py::array::forcecast>;
+    if (py::isinstance<py::array_t<T>>(value) &&
+        (py::reinterpret_borrow<py::array>(value).flags() & py::array::c_style)) {
+        return py::reinterpret_borrow<Contiguous>(value);  // already right: no call into numpy
+    }
+    // Held for the life of the process: no destructor after the interpreter has finished.
+    static const py::object* const contiguous =
+        new py::object(py::module_::import("numpy").attr("ascontiguousarray"));
+    return py::reinterpret_borrow<py::array_t<T, py::array::c_style | py::array::forcecast>>(
+        (*contiguous)(numeric_array(value, what), py::dtype::of<T>()));
+}
+
 template <class T>
 Rows<T> rows_of(const py::handle& value, py::ssize_t k, const char* what) {
     Rows<T> r;
-    try {
-        r.array = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(value);
-    } catch (const py::error_already_set&) {
-        throw py::value_error(std::string(what) + ": not an array of numbers");
-    }
-    if (!r.array) {
-        PyErr_Clear();
-        throw py::value_error(std::string(what) + ": not an array of numbers");
-    }
+    r.array = contiguous_of<T>(value, what);
     if (r.array.ndim() < 1 || r.array.shape(r.array.ndim() - 1) != k) {
         throw py::value_error(std::string(what) + ": shape " + shape_text(r.array) +
                               "; expected (..., " + std::to_string(k) + ")");
@@ -81,7 +117,7 @@ py::array_t<T> result_array(const py::object& out, const std::vector<py::ssize_t
     if (!py::isinstance<py::array>(out)) throw py::value_error("out: not a numpy array");
     py::array a = py::reinterpret_borrow<py::array>(out);
     const char* dtype = std::is_same_v<T, float> ? "float32" : "float64";
-    if (!a.dtype().is(py::dtype::of<T>())) {
+    if (!py::isinstance<py::array_t<T>>(out)) {
         throw py::value_error(std::string("out: dtype ") + std::string(py::str(a.dtype())) +
                               "; this call writes " + dtype);
     }

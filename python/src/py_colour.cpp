@@ -7,6 +7,11 @@
 
 #include <pybind11/stl.h>
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <functional>
+
 #include <string>
 #include <utility>
 
@@ -32,7 +37,22 @@ py::array convert_rows(const py::handle& a, const Converter& c, const py::object
     std::span<T> dst = mutable_values(result);
     {
         py::gil_scoped_release release;
-        c.convert(in.values(), dst);
+        // Pieces of 64 Ki colours on every core (Converter is const and thread-safe). xyY
+        // sources stay whole: a refused colour must stop the call before anything is written.
+        const std::span<const T> src = in.values();
+        constexpr std::size_t piece = std::size_t{3} << 16;
+        const std::less<const T*> less;
+        if (src.size() <= piece || c.from().family == SpaceFamily::xyy) {
+            c.convert(src, dst);
+        } else if (src.data() != dst.data() && less(src.data(), dst.data() + dst.size()) &&
+                   less(dst.data(), src.data() + src.size())) {
+            throw Error("convert: input and output overlap; they must be the same array or disjoint");
+        } else {
+            tbb::parallel_for(std::size_t{0}, (src.size() + piece - 1) / piece, [&](std::size_t k) {
+                const std::size_t b = k * piece, e = std::min(src.size(), b + piece);
+                c.convert(src.subspan(b, e - b), dst.subspan(b, e - b));
+            });
+        }
     }
     return result;
 }
@@ -53,8 +73,9 @@ void add_colour(py::module_& m) {
            double wy, const std::string& adaptation, const py::object& out) -> py::array {
             const Converter c(color_space(source), color_space(target), Xy{wx, wy},
                               parse_chromatic_adaptation(adaptation));
-            if (is_float32(a)) return convert_rows<float>(a, c, out);
-            return convert_rows<double>(a, c, out);
+            const py::array numbers = numeric_array(a, "colours");
+            if (is_float32(numbers)) return convert_rows<float>(numbers, c, out);
+            return convert_rows<double>(numbers, c, out);
         },
         py::arg("a"), py::arg("source"), py::arg("target"), py::arg("wx"), py::arg("wy"),
         py::arg("adaptation"), py::arg("out"));
@@ -105,12 +126,8 @@ void add_colour(py::module_& m) {
            const std::string& observer_name) {
             const DenseSpectrum light = illuminant_by_name(illuminant);
             const Observer observer = parse_observer(observer_name);
-            py::array_t<double, py::array::c_style | py::array::forcecast> w =
-                py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(wavelengths);
-            if (!w || w.ndim() != 1) {
-                PyErr_Clear();
-                throw py::value_error("wavelengths: expected a 1-D array of numbers (nm)");
-            }
+            const auto w = contiguous_of<double>(wavelengths, "wavelengths");
+            if (w.ndim() != 1) throw py::value_error("wavelengths: expected a 1-D array of numbers (nm)");
             const std::span<const double> ws(w.data(), static_cast<std::size_t>(w.size()));
             check_sample_wavelengths(ws);
             const Rows<double> v = rows_of<double>(values, w.size(), "values");

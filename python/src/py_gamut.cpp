@@ -9,7 +9,11 @@
 #include <irid/gamut/clip.h>
 #include <irid/gamut/pipeline.h>
 #include <irid/gamut/report.h>
+#include <irid/exchange/image_clip.h>
 #include <irid/figures/clip_sets.h>
+#include <irid/io/image.h>
+
+#include <cstring>
 
 #include <pybind11/stl.h>
 
@@ -106,6 +110,13 @@ void add_gamut(py::module_& m) {
     });
     m.def("has_inverse", [](const std::string& method) { return has_inverse(parse_clip_method(method)); });
     m.def("simd_target", [] { return std::string(simd_target_name()); });
+    m.def("image_colour_channels", [](std::vector<std::string> names) {
+        io::Image image;
+        image.channels = static_cast<int>(names.size());
+        image.channel_names = std::move(names);
+        const ImageColourChannels c = image_colour_channels(image, "image");
+        return py::make_tuple(c.index[0], c.index[1], c.index[2], c.xyz);
+    });
 
     py::class_<ClipPipeline>(m, "ClipPipeline")
         .def(py::init([](const std::string& method, const std::string& source,
@@ -132,8 +143,9 @@ void add_gamut(py::module_& m) {
         .def(
             "run",
             [](const ClipPipeline& p, const py::handle& a, int threads, const py::object& out) {
-                if (is_float32(a)) return run_pipeline<float>(p, a, threads, out);
-                return run_pipeline<double>(p, a, threads, out);
+                const py::array numbers = numeric_array(a, "colours");
+                if (is_float32(numbers)) return run_pipeline<float>(p, numbers, threads, out);
+                return run_pipeline<double>(p, numbers, threads, out);
             },
             py::arg("a"), py::arg("threads"), py::arg("out"))
         .def_property_readonly("method",
@@ -174,6 +186,40 @@ void add_gamut(py::module_& m) {
             return out;
         },
         py::arg("set"), py::arg("target"), py::arg("min_seconds"));
+
+    m.def(
+        "clip_image",
+        [](py::array_t<float> pixels, std::vector<std::string> channels, const ClipPipeline& p,
+           bool premultiplied_in, bool premultiplied_out, bool encode, int threads) {
+            if (pixels.ndim() != 3 || !(pixels.flags() & py::array::c_style) || !pixels.writeable()) {
+                throw py::value_error("pixels: a writeable C-contiguous float32 (height, width, channels) array is needed");
+            }
+            if (static_cast<py::ssize_t>(channels.size()) != pixels.shape(2)) {
+                throw py::value_error("channels: " + std::to_string(channels.size()) + " names for " +
+                                      std::to_string(pixels.shape(2)) + " channels");
+            }
+            io::Image image;
+            image.height = static_cast<int>(pixels.shape(0));
+            image.width = static_cast<int>(pixels.shape(1));
+            image.channels = static_cast<int>(pixels.shape(2));
+            image.channel_names = std::move(channels);
+            float* data = pixels.mutable_data();
+            image.pixels.assign(data, data + pixels.size());
+            {
+                py::gil_scoped_release release;
+                const ImageColourChannels colour = image_colour_channels(image, "image");
+                clip_image(image, colour, p,
+                           ImageClipOptions{.premultiplied_in = premultiplied_in,
+                                            .premultiplied_out = premultiplied_out,
+                                            .encode = encode,
+                                            .threads = threads},
+                           "image");
+                std::memcpy(data, image.pixels.data(), image.pixels.size() * sizeof(float));
+            }
+            return image.channel_names;
+        },
+        py::arg("pixels"), py::arg("channels"), py::arg("pipeline"), py::arg("premultiplied_in"),
+        py::arg("premultiplied_out"), py::arg("encode"), py::arg("threads"));
 }
 
 }  // namespace irid::python

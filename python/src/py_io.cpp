@@ -45,12 +45,7 @@ void add_io(py::module_& m) {
         [](const std::string& path, const py::handle& array, std::vector<std::string> channels,
            const std::string& color_space, const std::string& description, int bits,
            const std::string& compression) {
-            py::array_t<float, py::array::c_style | py::array::forcecast> a =
-                py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array);
-            if (!a) {
-                PyErr_Clear();
-                throw py::value_error("image: not an array of numbers");
-            }
+            const auto a = contiguous_of<float>(array, "image");
             if (a.ndim() != 2 && a.ndim() != 3) {
                 throw py::value_error("image: shape " + shape_text(a) +
                                       "; expected (height, width) or (height, width, channels)");
@@ -76,6 +71,14 @@ void add_io(py::module_& m) {
             if (static_cast<int>(channels.size()) != image.channels) {
                 throw py::value_error("channels: " + std::to_string(channels.size()) + " names for " +
                                       std::to_string(image.channels) + " channels");
+            }
+            for (std::size_t i = 0; i < channels.size(); ++i) {
+                if (channels[i].empty()) throw py::value_error("channels: name " + std::to_string(i) + " is empty");
+                for (std::size_t j = 0; j < i; ++j) {
+                    if (channels[j] == channels[i]) {
+                        throw py::value_error("channels: '" + channels[i] + "' is given twice");
+                    }
+                }
             }
             image.channel_names = std::move(channels);
             image.color_space = color_space;

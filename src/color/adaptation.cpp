@@ -1,5 +1,6 @@
 #include <irid/color/adaptation.h>
 #include <irid/error.h>
+#include <irid/text_input.h>
 
 #include <cmath>
 #include <string>
@@ -55,8 +56,8 @@ ChromaticAdaptation parse_chromatic_adaptation(std::string_view name) {
     if (name == "cat02") return ChromaticAdaptation::cat02;
     if (name == "von-kries") return ChromaticAdaptation::von_kries;
     if (name == "none") return ChromaticAdaptation::none;
-    throw UnknownNameError("unknown chromatic adaptation '" + std::string(name) +
-                               "'; valid names: bradford, cat02, von-kries, none",
+    throw UnknownNameError("unknown chromatic adaptation " + quote_untrusted(name) +
+                               "; valid names: bradford, cat02, von-kries, none",
                            {"bradford", "cat02", "von-kries", "none"});
 }
 

@@ -6,6 +6,8 @@
 #include <irid/error.h>
 #include <irid/text_input.h>
 
+#include <cmath>
+#include <functional>
 #include <string>
 #include <utility>
 
@@ -148,6 +150,12 @@ void Converter::convert_span(std::span<const T> in, std::span<T> out) const {
         throw Error("convert: " + std::to_string(in.size()) + " values in, " +
                     std::to_string(out.size()) + " out; both must be the same multiple of 3");
     }
+    // The same memory, or none in common (std::less: a total order on unrelated pointers).
+    const std::less<const T*> less;
+    if (in.data() != out.data() && less(in.data(), out.data() + out.size()) &&
+        less(out.data(), in.data() + in.size())) {
+        throw Error("convert: input and output overlap; they must be the same array or disjoint");
+    }
     const std::size_t n = in.size() / 3;
     // An xyY y = 0 with Y ≠ 0 is refused before anything is written (out may be in).
     if (m_from.family == SpaceFamily::xyy) {
@@ -158,6 +166,26 @@ void Converter::convert_span(std::span<const T> in, std::span<T> out) const {
                             " has no XYZ (only black may have y = 0)");
             }
         }
+    }
+    // Linear source → Oklab: one matrix to LMS (M1 after the adaptation to D65, after the
+    // source's matrix to XYZ), the cube roots, M2.
+    const bool linear_source =
+        m_from.family == SpaceFamily::xyz || m_from.family == SpaceFamily::rgb_linear;
+    if (linear_source && m_to.family == SpaceFamily::oklab) {
+        const Mat3 source_to_xyz = m_from.family == SpaceFamily::xyz
+                                       ? Mat3::identity()
+                                       : m_from_native * m_from.rgb->to_xyz_matrix();
+        const Mat3 to_lms = oklab_m1 * (m_to_native * source_to_xyz);
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec3 lms = to_lms * Vec3{static_cast<double>(in[3 * i]),
+                                           static_cast<double>(in[3 * i + 1]),
+                                           static_cast<double>(in[3 * i + 2])};
+            const Vec3 lab = oklab_m2 * Vec3{std::cbrt(lms[0]), std::cbrt(lms[1]), std::cbrt(lms[2])};
+            out[3 * i] = static_cast<T>(lab[0]);
+            out[3 * i + 1] = static_cast<T>(lab[1]);
+            out[3 * i + 2] = static_cast<T>(lab[2]);
+        }
+        return;
     }
     const std::optional<Mat3> m = m_from == m_to ? std::nullopt : linear_matrix();
     if (m) {

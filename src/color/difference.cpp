@@ -1,6 +1,7 @@
 #include <irid/color/difference.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
+#include <irid/text_input.h>
 
 #include <string>
 
@@ -114,8 +115,8 @@ DeltaEMetric parse_delta_e_metric(std::string_view name) {
          {DeltaEMetric::ciede2000, DeltaEMetric::cie76, DeltaEMetric::cieuv, DeltaEMetric::oklab}) {
         if (name == delta_e_metric_name(m)) return m;
     }
-    throw UnknownNameError("unknown metric '" + std::string(name) +
-                               "'; valid names: ciede2000, cie76, cieuv, oklab",
+    throw UnknownNameError("unknown metric " + quote_untrusted(name) +
+                               "; valid names: ciede2000, cie76, cieuv, oklab",
                            {"ciede2000", "cie76", "cieuv", "oklab"});
 }
 

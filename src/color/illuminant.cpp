@@ -168,8 +168,8 @@ Xy white_point_xy(std::string_view name) {
         throw Error("white point '" + std::string(name) +
                     "': chromaticity must have x > 0, y > 0 and x + y < 1");
     }
-    throw UnknownNameError("unknown white point '" + std::string(name) +
-                               "'; valid: D65, D50, D55, D75, A, C, E, or x,y (for example "
+    throw UnknownNameError("unknown white point " + quote_untrusted(name) +
+                               "; valid: D65, D50, D55, D75, A, C, E, or x,y (for example "
                                "0.3127,0.329)",
                            white_point_names());
 }

@@ -2,6 +2,7 @@
 #include <irid/color/observer.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
+#include <irid/text_input.h>
 
 #include "cie_tables.h"
 
@@ -35,8 +36,8 @@ const ColorMatchingFunctions& color_matching_functions(Observer observer) noexce
 Observer parse_observer(std::string_view name) {
     if (name == "cie1931" || name == "2") return Observer::cie1931_2deg;
     if (name == "cie1964" || name == "10") return Observer::cie1964_10deg;
-    throw UnknownNameError("unknown observer '" + std::string(name) +
-                               "'; valid names: cie1931, cie1964",
+    throw UnknownNameError("unknown observer " + quote_untrusted(name) +
+                               "; valid names: cie1931, cie1964",
                            {"cie1931", "cie1964"});
 }
 

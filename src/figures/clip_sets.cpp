@@ -3,6 +3,7 @@
 #include <irid/color/numeric_table.h>
 #include <irid/color/observer.h>
 #include <irid/error.h>
+#include <irid/text_input.h>
 #include <irid/figures/clip_sets.h>
 #include <irid/optics/film_color.h>
 #include <irid/optics/material.h>
@@ -71,7 +72,7 @@ std::vector<ClipReportSet> parse_clip_report_sets(std::string_view name) {
         valid.emplace_back(clip_report_set_name(s));
     }
     valid.emplace_back("all");
-    throw UnknownNameError("unknown set '" + std::string(name) + "'; valid: " + names + "all",
+    throw UnknownNameError("unknown set " + quote_untrusted(name) + "; valid: " + names + "all",
                            std::move(valid));
 }
 

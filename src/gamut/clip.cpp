@@ -3,6 +3,7 @@
 #include <irid/color/numeric_table.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
+#include <irid/text_input.h>
 #include <irid/gamut/clip.h>
 
 #include <algorithm>
@@ -200,7 +201,7 @@ ClipMethod parse_clip_method(std::string_view name) {
         names += (names.empty() ? "" : ", ") + std::string(clip_method_name(m));
         valid.emplace_back(clip_method_name(m));
     }
-    throw UnknownNameError("unknown clip method '" + std::string(name) + "'; valid: " + names,
+    throw UnknownNameError("unknown clip method " + quote_untrusted(name) + "; valid: " + names,
                            std::move(valid));
 }
 
@@ -244,7 +245,7 @@ GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut, const ClipSett
             std::vector<std::string> valid;
             for (const ClipParameterInfo& p : known) valid.emplace_back(p.name);
             throw UnknownNameError(
-                "method " + name + " has no parameter '" + key + "'" +
+                "method " + name + " has no parameter " + quote_untrusted(key) +
                     (known.empty() ? "; it takes none"
                                    : "; its parameters: " + describe_parameters(method)),
                 std::move(valid));
@@ -301,7 +302,7 @@ double GamutClipper::parameter(std::string_view name) const {
     std::vector<std::string> valid;
     for (const auto& [n, v] : m_parameters) valid.push_back(n);
     throw UnknownNameError("method " + std::string(clip_method_name(m_method)) +
-                               " has no parameter '" + std::string(name) + "'",
+                               " has no parameter " + quote_untrusted(name),
                            std::move(valid));
 }
 

@@ -218,7 +218,8 @@ void ClipPipeline::clip(std::span<const float> in, std::span<float> out,
     const RgbSpace& dest = destination();
     const bool keep = passes_through();
     parallel_ranges(chunks, options.threads, [&](std::size_t first, std::size_t last) {
-        std::vector<float> linear(3 * batch_chunk_colours), clipped(3 * batch_chunk_colours);
+        const std::size_t room = 3 * std::min(batch_chunk_colours, colours);
+        std::vector<float> linear(room), clipped(room);
         for (std::size_t k = first; k < last; ++k) {
             const std::size_t begin = k * batch_chunk_colours;
             const std::size_t n = std::min(batch_chunk_colours, colours - begin);

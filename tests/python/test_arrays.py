@@ -136,3 +136,40 @@ def test_clip_releases_the_gil():
     ta.join()
     tb.join()
     assert times["b"] < times["a"]
+
+
+def test_dtypes_that_are_equal_but_not_identical():
+    # An array back from pickle (multiprocessing, Dask) has an equal but distinct dtype object;
+    # a big-endian float32 is float32 too.
+    import pickle
+    a = pickle.loads(pickle.dumps(np.full((4, 3), 0.5, dtype=np.float32)))
+    assert irid.clip(a, "smits").dtype == np.float32
+    r = irid.clip(a, "smits", out=a)
+    assert np.shares_memory(r, a)
+    assert irid.clip(np.zeros((2, 3), dtype=">f4"), "smits").dtype == np.float32
+    b = pickle.loads(pickle.dumps(np.zeros((4, 3))))
+    assert np.shares_memory(irid.convert(b, "xyz", "lab", out=b), b)
+
+
+def test_refusals_of_non_numbers_and_bad_arguments():
+    for bad in [np.array([[None, 2, 3]], dtype=object), np.array(["1", "2", "3"]),
+                np.zeros((2, 3), dtype=complex), np.zeros((2, 3), dtype="datetime64[s]")]:
+        with pytest.raises(ValueError, match="number"):
+            irid.clip(bad, "smits")
+        with pytest.raises(ValueError, match="number"):
+            irid.convert(bad, "xyz", "lab")
+    a = np.zeros((4, 3))
+    with pytest.raises(ValueError):
+        irid.clip(a, ["smits"])
+    with pytest.raises(ValueError):
+        irid.clip(a, "smits", threads=2**40)
+    with pytest.raises(ValueError):
+        irid.clip(a, "smits-soft", inverse="False")
+    with pytest.raises(ValueError):
+        irid.illuminant(None, cct=5000)
+    with pytest.raises(KeyError, match="smits-soft"):     # the whole message, NUL escaped
+        irid.clip(a, "smits\0junk")
+    overlap = np.random.default_rng(0).uniform(0, 1, 33)
+    with pytest.raises(ValueError, match="overlap"):
+        irid.convert(overlap[:30].reshape(10, 3), "xyz", "srgb-linear",
+                     out=overlap[3:33].reshape(10, 3))

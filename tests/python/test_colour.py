@@ -161,9 +161,25 @@ def test_spectrum_to_xyz():
 def test_primaries_transform_thesis_figure_2():
     w, rgb, m = irid.primaries_transform(645, 526, 444)
     _, cmf = irid.cmfs("cie1931")
-    np.testing.assert_allclose(rgb, cmf @ m.T, rtol=1e-12, atol=1e-15)
     # Light at a primary's own wavelength is matched by that primary alone.
     for k, nm in enumerate([645, 526, 444]):
         row = rgb[w == nm][0]
         assert row[k] > 0
         np.testing.assert_allclose(np.delete(row, k), 0.0, atol=1e-12)
+    # The equal-energy stimulus is matched by equal amounts, each sum that of ȳ (CIE 1931 RGB's
+    # normalisation).
+    np.testing.assert_allclose(rgb.sum(axis=0), cmf[:, 1].sum(), rtol=1e-12)
+
+
+def test_primaries_transform_reproduces_cie_1931_rgb():
+    # With the CIE 1931 primaries (700, 546.1, 435.8 nm) the transform gives the CIE 1931 RGB
+    # colour-matching functions, up to their overall scale. Published values (CIE 1931 standard
+    # observer in RGB, Wyszecki & Stiles, Color Science, 2nd ed., Table I(3.3.3)):
+    published = {450: (-0.01213, 0.00678, 0.31670), 500: (-0.07173, 0.08536, 0.04776),
+                 600: (0.34357, 0.06246, -0.00060)}
+    w, rgb, _ = irid.primaries_transform(700, 546.1, 435.8)
+    ours = np.array([rgb[w == nm][0] for nm in published])
+    cie = np.array(list(published.values()))
+    big = np.abs(cie) > 0.005
+    scale = (ours[big] / cie[big]).mean()
+    np.testing.assert_allclose(ours[big] / scale, cie[big], rtol=6e-3)

@@ -3,6 +3,7 @@ processes, and a folder of EXR frames clipped in parallel; both equal to the sam
 one process."""
 
 import importlib.util
+import subprocess
 
 import numpy as np
 import pytest
@@ -11,8 +12,8 @@ import irid
 
 from conftest import REPO
 
-dask_array = pytest.importorskip("dask.array")
-distributed = pytest.importorskip("distributed")
+import dask.array as dask_array  # noqa: E402  (scripts/install-deps installs python3-dask)
+import distributed  # noqa: E402
 
 
 def load_example():
@@ -44,18 +45,23 @@ def test_map_blocks_on_two_worker_processes(client):
     assert len(set(workers.values())) == 2
 
 
-def test_folder_of_frames_in_parallel(client, tmp_path):
+def test_folder_of_frames_in_parallel(client, tmp_path, irid_cli):
     example = load_example()
     example.make_frames(tmp_path / "in", 4, height=64, width=96)
     written = example.clip_frames(client, tmp_path / "in", tmp_path / "out", "aces-rgc")
     assert [p.rsplit("/", 1)[1] for p in written] == [f"frame.{i:04d}.exr" for i in range(4)]
     for path in written:
         name = path.rsplit("/", 1)[1]
-        example.clip_frame(tmp_path / "in" / name, tmp_path / name, "aces-rgc")
+        # The same frame through the command line, in this process' own program.
+        subprocess.run([irid_cli, "clip", "--method", "aces-rgc", "--from", "acescg", "--to",
+                        "acescg", str(tmp_path / "in" / name), str(tmp_path / name)], check=True)
         got, meta = irid.read_image(path)
-        expected, _ = irid.read_image(tmp_path / name)
-        assert meta["channels"] == ["R", "G", "B", "A"]
+        expected, cli_meta = irid.read_image(tmp_path / name)
+        assert meta["channels"] == cli_meta["channels"] == ["R", "G", "B", "A"]
         np.testing.assert_array_equal(got, expected)
         original, _ = irid.read_image(tmp_path / "in" / name)
         np.testing.assert_array_equal(got[..., 3], original[..., 3])   # alpha untouched
-        assert not np.array_equal(got[..., :3], original[..., :3])
+        # Unpremultiplied, every colour is inside the cube (aces-rgc with clip=True).
+        alpha = got[..., 3:]
+        colour = np.where(alpha > 0, got[..., :3] / np.where(alpha > 0, alpha, 1), 0)
+        assert colour.min() >= -1e-6 and colour.max() <= 1 + 1e-6

@@ -103,7 +103,7 @@ def test_aces_rgc_equals_opencolorio():
     # (as tests/gamut/aces_rgc_ocio_test.cpp): 1e-6 × max(1, |ach| + |value|), OCIO computing in
     # float, times the inverse's slope κ where the inverse is ill-conditioned; channels at the
     # inverse's asymptote are left out.
-    ocio = pytest.importorskip("PyOpenColorIO")
+    import PyOpenColorIO as ocio  # scripts/install-deps installs python3-pyopencolorio
     rng = np.random.default_rng(7)
     rgb = np.concatenate([rng.uniform(-1.5, 2.5, (100000, 3)),
                           [[0, 0, 0], [1, 1, 1], [-1, 0.5, 2], [0, 0, -0.2], [4, -3, 0.1]]])
@@ -183,3 +183,42 @@ def test_clip_report_is_structured_and_right():
         irid.clip_report("nope")
     with pytest.raises(ValueError):
         irid.clip_report("spectrum", target="lab")
+
+
+@pytest.mark.parametrize("peak", [4.0, 16.0, 100.0, 1000.0])
+def test_float32_kernels_within_contract_at_hdr_peaks(peak):
+    rgb = (np.random.default_rng(11).uniform(-3, 4, (20000, 3)) * peak).astype(np.float32)
+    for method in irid.clip_methods():
+        params = {"clip": True} if method == "aces-rgc" else {}
+        fast = irid.clip(rgb, method, max=peak, **params)
+        exact = irid.clip(rgb.astype(np.float64), method, max=peak, **params)
+        assert np.max(np.abs(fast - exact)) <= 1e-5 * peak, method
+
+
+def test_clip_image_equals_the_command_line(tmp_path, irid_cli):
+    rng = np.random.default_rng(12)
+    rgba = rng.uniform(-0.4, 1.6, (24, 40, 4)).astype(np.float32)
+    rgba[..., 3] = rng.uniform(0, 1, (24, 40))
+    rgba[0, 0, 3] = 0.0
+    irid.write_image(tmp_path / "in.exr", rgba, channels=["R", "G", "B", "A"])
+    for method, args in [("oklab-cusp", []), ("aces-rgc", ["--param", "power=1.4"])]:
+        subprocess.run([irid_cli, "clip", "--method", method, "--from", "srgb-linear", "--to",
+                        "display-p3", *args, str(tmp_path / "in.exr"), str(tmp_path / "cli.exr")],
+                       check=True)
+        expected, _ = irid.read_image(tmp_path / "cli.exr")
+        params = {"power": 1.4} if args else {}
+        got, names = irid.clip_image(rgba, ["R", "G", "B", "A"], method, source="srgb-linear",
+                                     target="display-p3", premultiplied=True, **params)
+        assert names == ["R", "G", "B", "A"]
+        np.testing.assert_array_equal(got, expected)
+    # PNG: unpremultiplied and encoded.
+    subprocess.run([irid_cli, "clip", "--method", "smits", "--from", "srgb-linear", "--to", "srgb",
+                    str(tmp_path / "in.exr"), str(tmp_path / "cli.png")], check=True)
+    png, _ = irid.read_image(tmp_path / "cli.png")
+    got, _ = irid.clip_image(rgba, ["R", "G", "B", "A"], "smits", target="srgb", encode=True,
+                             premultiplied=True, premultiplied_out=False)
+    np.testing.assert_allclose(got[..., :3], png[..., :3], atol=0.5 / 255 + 1e-6)
+    with pytest.raises(ValueError, match="xyz"):
+        irid.clip_image(rgba, ["X", "Y", "Z", "A"], "smits", source="srgb")
+    with pytest.raises(ValueError):
+        irid.clip_image(rgba, ["A", "B", "C", "D"], "smits")

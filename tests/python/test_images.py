@@ -21,12 +21,13 @@ def test_exr_round_trip_is_exact(tmp_path):
     assert meta["channels"] == ["R", "G", "B", "A"]
     assert meta["color_space"] == "acescg"
     assert meta["bits"] == 32 and not meta["integer"]
-    one, meta = irid.read_image(str(tmp_path / "a.exr"))
-    np.testing.assert_array_equal(one, a)
+    for name in [str(tmp_path / "a.exr"), os.fsencode(tmp_path / "a.exr")]:   # str, bytes
+        one, meta = irid.read_image(name)
+        np.testing.assert_array_equal(one, a)
 
 
 def test_png_matches_an_independent_reader(tmp_path):
-    pil = pytest.importorskip("PIL.Image")
+    import PIL.Image as pil  # scripts/install-deps installs python3-pil
     rng = np.random.default_rng(2)
     a = rng.uniform(0, 1, (9, 11, 3))
     irid.write_image(tmp_path / "a.png", a, bits=8)
@@ -75,6 +76,14 @@ def test_refusals(tmp_path):
             irid.write_image(tmp_path / "x.exr", bad)
     with pytest.raises(ValueError, match="names"):
         irid.write_image(tmp_path / "x.exr", a, channels=["R", "G"])
-    with pytest.raises(OSError):
+    with pytest.raises(ValueError, match="8 and 16"):
         irid.write_image(tmp_path / "x.png", a, bits=12)
+    with pytest.raises(ValueError, match="twice"):
+        irid.write_image(tmp_path / "x.exr", a, channels=["R", "R", "B"])
+    with pytest.raises(ValueError, match="NUL"):
+        irid.write_image(str(tmp_path / "x.png") + "\0.exr", a)
+    with pytest.raises(ValueError, match="NUL"):
+        irid.read_image(str(tmp_path / "a.exr") + "\0junk")
+    with pytest.raises(ValueError, match="NUL"):
+        irid.write_image(tmp_path / "x.exr", a, description="x\0y")
     assert not (tmp_path / "x.png").exists() and not (tmp_path / "x.exr").exists()

@@ -79,8 +79,9 @@ public:
     [[nodiscard]] Vec3 operator()(const Vec3& in) const;
 
     /// `in` and `out` hold whole triples (size a multiple of 3, the same for both; they may be
-    /// the same memory). Throws irid::Error naming the triple's index for an xyY y = 0 with
-    /// Y ≠ 0, or for sizes that do not fit, before anything is written.
+    /// the same memory, or disjoint). Throws irid::Error naming the triple's index for an xyY
+    /// y = 0 with Y ≠ 0, for sizes that do not fit or for a partial overlap, before anything is
+    /// written.
     void convert(std::span<const double> in, std::span<double> out) const;
     /// The same on floats, computed in double.
     void convert(std::span<const float> in, std::span<float> out) const;
