@@ -185,9 +185,10 @@ def test_clip_report_is_structured_and_right():
         irid.clip_report("spectrum", target="lab")
 
 
-@pytest.mark.parametrize("peak", [4.0, 16.0, 100.0, 1000.0])
-def test_float32_kernels_within_contract_at_hdr_peaks(peak):
-    rgb = (np.random.default_rng(11).uniform(-3, 4, (20000, 3)) * peak).astype(np.float32)
+@pytest.mark.parametrize("peak", [0.001, 0.1, 4.0, 16.0, 100.0, 1000.0])
+def test_float32_kernels_within_contract_at_other_peaks(peak):
+    lo, hi = (-3, 4) if peak > 1 else (-0.5, 1.5)
+    rgb = (np.random.default_rng(11).uniform(lo, hi, (20000, 3)) * peak).astype(np.float32)
     for method in irid.clip_methods():
         params = {"clip": True} if method == "aces-rgc" else {}
         fast = irid.clip(rgb, method, max=peak, **params)
