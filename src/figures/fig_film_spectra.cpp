@@ -41,10 +41,21 @@ FilmSpec parse_film_spec(std::string_view item) {
     return spec;
 }
 
+DenseValues film_reflectance(const SingleFilm& film, double thickness_nm, double angle_rad,
+                             bool thesis, double k) {
+    // Through the film models every command uses: the thesis' eq. 21/22 or the exact Airy film.
+    const std::unique_ptr<FilmModel> model =
+        thesis ? std::unique_ptr<FilmModel>(std::make_unique<ThesisFilm>(film, thickness_nm, k))
+               : std::make_unique<ExactFilm>(film.ambient, std::vector<Layer>{{film.film, thickness_nm}},
+                                             film.substrate);
+    DenseValues r;
+    model->at_angle(angle_rad)->reflectance(thickness_nm, r);
+    return r;
+}
+
 Series film_reflectance_series(const SingleFilm& film, double thickness_nm, double angle_rad,
                                bool thesis, double k, double lo_nm, double hi_nm) {
-    const DenseSpectrum r = thesis ? thesis_single_film_spectrum(film, thickness_nm, angle_rad, k)
-                                   : PreparedFilm(film, angle_rad).reflectance_spectrum(thickness_nm);
+    const DenseValues r = film_reflectance(film, thickness_nm, angle_rad, thesis, k);
     Series s;
     for (int i = 0; i < dense_sample_count; ++i) {
         const double nm = DenseSpectrum::wavelength_nm(i);
@@ -148,10 +159,11 @@ FigureResult draw_film_spectra(const FigureRequest& request) {
                                                k_used, lo_nm, hi_nm);
             s.label = name + (model == "both" ? (thesis ? " thesis" : " exact") : "");
             // The colour integrates the whole 360–830 nm spectrum, not only the plotted part.
-            const DenseSpectrum r =
-                thesis ? thesis_single_film_spectrum(film, specs[k].thickness_nm, angle_rad, k_used)
-                       : PreparedFilm(film, angle_rad).reflectance_spectrum(specs[k].thickness_nm);
-            curves.push_back({std::move(s), line_color, thesis, colorimeter.xyz(r), k_used});
+            const DenseValues r = film_reflectance(film, specs[k].thickness_nm, angle_rad, thesis, k_used);
+            const Xyz xyz = colorimeter.xyz_of([&](double nm) {
+                return r[static_cast<std::size_t>(std::lround(nm)) - lambda_min_nm];
+            });
+            curves.push_back({std::move(s), line_color, thesis, xyz, k_used});
         }
     }
     // The swatches are shown brighter by one common factor, the reciprocal of the largest

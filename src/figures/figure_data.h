@@ -9,6 +9,7 @@
 #include <irid/color/rgb.h>
 #include <irid/color/types.h>
 #include <irid/gamut/clip.h>
+#include <irid/optics/film.h>
 #include <irid/optics/film_color.h>
 
 #include "plot.h"
@@ -115,9 +116,13 @@ struct FilmSpec {
 /// thickness is a finite number in [0, 10000] nm; the material is checked by the caller.
 [[nodiscard]] FilmSpec parse_film_spec(std::string_view item);
 
-/// The reflectance of a single film at every whole nanometre in [lo_nm, hi_nm]: the exact Airy
-/// model (PreparedFilm, unpolarised) or the thesis' closed form (thesis_single_film_spectrum with
-/// K = k). angle_rad in the ambient.
+/// A single film's reflectance on the 1 nm grid through the film models (irid/optics/film.h):
+/// the thesis' eq. 21/22 with K = k, or the exact Airy film.
+[[nodiscard]] DenseValues film_reflectance(const SingleFilm& film, double thickness_nm, double angle_rad,
+                                           bool thesis, double k);
+
+/// The reflectance of a single film at every whole nanometre in [lo_nm, hi_nm], as
+/// film_reflectance gives it. angle_rad in the ambient.
 [[nodiscard]] Series film_reflectance_series(const SingleFilm& film, double thickness_nm,
                                              double angle_rad, bool thesis, double k,
                                              double lo_nm = 380.0, double hi_nm = 780.0);

@@ -609,6 +609,22 @@ Scene parse_scene(std::string_view json_text, const std::string& source,
     return scene;
 }
 
+std::vector<std::string> image_size_overrides(const Scene& shape, std::optional<int> width,
+                                              std::optional<int> height) {
+    if (width.has_value() != height.has_value()) {
+        const double aspect = static_cast<double>(shape.image.width) / static_cast<double>(shape.image.height);
+        const auto rounded = [](double v) {
+            return static_cast<int>(std::clamp(std::lround(v), 1L, static_cast<long>(max_image_side)));
+        };
+        if (width) height = rounded(*width / aspect);
+        else width = rounded(*height * aspect);
+    }
+    std::vector<std::string> out;
+    if (width) out.push_back(fmt::format("image.width={}", *width));
+    if (height) out.push_back(fmt::format("image.height={}", *height));
+    return out;
+}
+
 double morpho_table_work(const Scene& scene) noexcept {
     if (scene.kind != SceneKind::morpho || scene.render.optics != OpticsModel::exact) return 0;
     const MorphoSceneParams& m = scene.morpho;

@@ -4,6 +4,7 @@
 #include <irid/error.h>
 #include <irid/io/image.h>
 #include <irid/optics/material.h>
+#include <irid/optics/film.h>
 #include <irid/optics/thesis_models.h>
 
 #include <fmt/core.h>
@@ -199,33 +200,24 @@ void World::build_tables() {
     const RenderParams& rp = m_scene.render;
     const Colorimeter& col = m_basis->colorimeter();
     if (m_film) {
-        m_thesis_k = thesis_matched_k(*m_film);
-        if (rp.path != ColorPath::table) return;
-        const SingleFilm film = *m_film;
-        const double k = m_thesis_k;
         const bool exact = rp.optics == OpticsModel::exact;
+        if (exact) {
+            m_film_model = std::make_shared<ExactFilm>(m_film->ambient, std::vector<Layer>{{m_film->film, 0.0}},
+                                                       m_film->substrate);
+        } else {
+            m_film_model = std::make_shared<ThesisFilm>(*m_film, 0.0);
+        }
+        if (rp.path != ColorPath::table) return;
         // 2 nm × 41 rows of cos θ: the exact table keeps lookups within ΔE2000 0.36 over 0–80°
         // (docs/OPTICS.md).
         m_film_table.emplace(
             std::max(m_max_thickness_nm, 10.0) + 20.0, 2.0, 0.02, 41,
-            [&, film, k, exact](double cos_theta, const std::vector<double>& ts) {
+            [&, model = m_film_model](double cos_theta, const std::vector<double>& ts) {
                 std::vector<Rgb3> out(ts.size());
-                const double angle = std::acos(std::clamp(cos_theta, 0.0, 1.0));
-                if (exact) {
-                    const PreparedFilm prepared(film, angle);
-                    for (std::size_t i = 0; i < ts.size(); ++i) {
-                        const Rgb c = prepared.color(ts[i], col).rgb_linear;
-                        out[i] = {c.r, c.g, c.b};
-                    }
-                } else {
-                    for (std::size_t i = 0; i < ts.size(); ++i) {
-                        const Xyz x = col.xyz_of([&](double lambda) {
-                            return thesis_single_film_reflectance(film, ts[i], lambda, angle, k,
-                                                                  std::nullopt);
-                        });
-                        const Rgb c = col.linear_rgb(x);
-                        out[i] = {c.r, c.g, c.b};
-                    }
+                const auto row = model->at_angle(std::acos(std::clamp(cos_theta, 0.0, 1.0)));
+                for (std::size_t i = 0; i < ts.size(); ++i) {
+                    const Rgb c = row->color(ts[i], col).rgb_linear;
+                    out[i] = {c.r, c.g, c.b};
                 }
                 return out;
             });
@@ -244,14 +236,14 @@ void World::build_tables() {
         std::array<double, dense_sample_count> s{};
         const double theta = std::min(theta_deg, 89.9) * pi / 180.0;
         if (!exact) {
-            for (int i = 0; i < dense_sample_count; ++i) {
-                const double lambda = lambda_min_nm + i;
-                s[i] = m.blend ? morpho_blend_reflectance(wing, blend, lambda, theta)
-                               : morpho_reflectance(wing, lambda, theta);
-            }
+            MorphoFilm(wing, m.blend ? std::optional<MorphoBlend>(blend) : std::nullopt)
+                .at_angle(theta)
+                ->reflectance(0.0, s);
             return s;
         }
+        // The exact wing: l chitin layers d₂ separated by air gaps d₁, the blend's mean over d₁.
         const int samples = m.blend ? blend.samples : 1;
+        DenseValues one;
         for (int b = 0; b < samples; ++b) {
             const double d1 = m.blend ? blend.min_nm + (blend.max_nm - blend.min_nm) * b /
                                                            (samples - 1.0)
@@ -261,10 +253,8 @@ void World::build_tables() {
                 layers.push_back({chitin, wing.d2_nm});
                 if (p + 1 < wing.periods) layers.push_back({air, d1});
             }
-            const FilmStack stack(air, std::move(layers), air);
-            for (int i = 0; i < dense_sample_count; ++i)
-                s[i] += stack.evaluate(lambda_min_nm + i, theta, Polarization::unpolarized).R /
-                        samples;
+            ExactFilm(air, std::move(layers), air).at_angle(theta)->reflectance(wing.d2_nm, one);
+            for (int i = 0; i < dense_sample_count; ++i) s[i] += one[i] / samples;
         }
         return s;
     };
@@ -305,21 +295,11 @@ void World::film_spectrum(const ThicknessSample& t, double cos_theta, SpectralCa
         ts[k] = n == 1 ? t.t_nm
                        : std::max(0.0, t.t_nm + t.footprint_nm * ((k + 0.5) / n - 0.5));
     out.v.fill(0.0);
-    if (m_scene.render.optics == OpticsModel::exact) {
-        const PreparedFilm prepared(*m_film, angle);
-        for (int i = 0; i < dense_sample_count; ++i) {
-            double sum = 0;
-            for (int k = 0; k < n; ++k) sum += prepared.reflectance(i, ts[k]);
-            out.v[i] = sum / n;
-        }
-    } else {
-        for (int i = 0; i < dense_sample_count; ++i) {
-            double sum = 0;
-            for (int k = 0; k < n; ++k)
-                sum += thesis_single_film_reflectance(*m_film, ts[k], lambda_min_nm + i, angle,
-                                                      m_thesis_k, std::nullopt);
-            out.v[i] = sum / n;
-        }
+    const std::unique_ptr<FilmAtAngle> film = m_film_model->at_angle(angle);
+    DenseValues r;
+    for (int k = 0; k < n; ++k) {
+        film->reflectance(ts[k], r);
+        for (int i = 0; i < dense_sample_count; ++i) out.v[i] += r[i] / n;
     }
 }
 

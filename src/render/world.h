@@ -7,6 +7,7 @@
 #include "film_table.h"
 
 #include <irid/io/image.h>
+#include <irid/optics/film.h>
 #include <irid/optics/film_color.h>
 #include <irid/optics/multilayer.h>
 #include <irid/optics/thesis_models.h>
@@ -84,8 +85,8 @@ public:
     [[nodiscard]] Rgb3 background_albedo(Vec3 p) const noexcept;
 
     // The films' physics for the spectral path and the tables for the table path.
-    [[nodiscard]] const SingleFilm& film() const noexcept { return *m_film; }
-    [[nodiscard]] double thesis_k() const noexcept { return m_thesis_k; }
+    /// The film's model: the exact Airy film or the thesis' single film (K matched).
+    [[nodiscard]] const FilmModel& film() const noexcept { return *m_film_model; }
     [[nodiscard]] const FilmTable& film_table() const noexcept { return *m_film_table; }
     [[nodiscard]] const AngleTable<Rgb3>& wing_table() const noexcept { return m_wing_rgb; }
     /// The wing's reflectance spectrum at θ [deg] for the spectral path: the thesis' model
@@ -127,7 +128,7 @@ private:
 
     // Films.
     std::optional<SingleFilm> m_film;
-    double m_thesis_k = 1;
+    std::shared_ptr<const FilmModel> m_film_model;
     std::optional<FilmTable> m_film_table;
     double m_max_thickness_nm = 0;
     MorphoParameters m_wing_params;

@@ -44,16 +44,16 @@ int run_film(const FilmCommand& c) {
     }
     std::string out;
     if (c.color) {
-        const FilmColor fc = film.color(colorimeter, film.angle_rad);
+        const FilmColor fc = film.model->color(colorimeter, film.angle_rad);
         const Xy xy = xyz_to_xy(fc.xyz, xyz_to_xy(colorimeter.white()));
         const Lab lab = colorimeter.lab(fc.xyz);
         out = "X,Y,Z,x,y,L,a,b,R_linear,G_linear,B_linear\n";
         append_csv_line(out, std::array{fc.xyz.X, fc.xyz.Y, fc.xyz.Z, xy.x, xy.y, lab.L, lab.a, lab.b,
                                         fc.rgb_linear.r, fc.rgb_linear.g, fc.rgb_linear.b});
     } else {
-        const bool exact = film.model == FilmModel::exact;
+        const bool exact = film.model->has_transmittance();
         out = exact ? "wavelength_nm,R,T\n" : "wavelength_nm,R\n";
-        const auto at = film.spectrum(film.angle_rad);
+        const auto at = film.model->spectrum(film.angle_rad);
         for (const double lambda : range.values()) {
             const Optics o = at(lambda);
             if (exact) append_csv_line(out, std::array{lambda, o.R, o.T});

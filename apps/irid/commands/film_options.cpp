@@ -24,6 +24,12 @@ std::optional<double> parse_double(std::string_view s) {
     return v;
 }
 
+/// One layer of the --layer option: material and thickness (absent for "N" alone).
+struct LayerArgument {
+    Material material;
+    std::optional<double> thickness_nm;
+};
+
 Material parse_medium(const std::string& text, const std::string& option) {
     try {
         return parse_material(text);
@@ -53,12 +59,12 @@ LayerArgument parse_layer(const std::string& text, int number, bool thickness_re
     return {parse_medium(text.substr(0, colon), option), *t};
 }
 
-FilmModel parse_model(const std::string& name) {
-    if (name == "exact") return FilmModel::exact;
-    if (name == "thesis") return FilmModel::thesis;
-    if (name == "thesis-multilayer") return FilmModel::thesis_multilayer;
-    if (name == "morpho") return FilmModel::morpho;
-    throw UsageError("--model '" + name + "' is unknown; valid: exact, thesis, thesis-multilayer, morpho");
+FilmModelKind parse_model(const std::string& name) {
+    try {
+        return parse_film_model(name);
+    } catch (const UnknownNameError&) {
+        throw UsageError("--model '" + name + "' is unknown; valid: exact, thesis, thesis-multilayer, morpho");
+    }
 }
 
 /// Real part of an index at a wavelength: the thesis' models take real indices.
@@ -146,28 +152,31 @@ void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) 
 
 Film parse_film(const FilmArguments& a, bool thickness_required) {
     Film f;
-    f.model = parse_model(a.model);
-    f.ambient = parse_medium(a.ambient, "--ambient");
-    f.substrate = parse_medium(a.substrate, "--substrate");
-    if (!f.ambient.is_lossless()) {
+    const FilmModelKind kind = parse_model(a.model);
+    const Material ambient = parse_medium(a.ambient, "--ambient");
+    const Material substrate = parse_medium(a.substrate, "--substrate");
+    std::vector<LayerArgument> layers;
+    if (!ambient.is_lossless()) {
         throw UsageError("--ambient '" + a.ambient + "' absorbs (k > 0); the ambient must have k = 0");
     }
     for (std::size_t i = 0; i < a.layers.size(); ++i) {
-        f.layers.push_back(parse_layer(a.layers[i], static_cast<int>(i) + 1, thickness_required));
+        layers.push_back(parse_layer(a.layers[i], static_cast<int>(i) + 1, thickness_required));
     }
     if (!(a.angle_deg >= 0.0 && a.angle_deg < 90.0)) {
         throw UsageError("--angle " + format_shortest(a.angle_deg) + " must be in [0, 90) degrees");
     }
     f.angle_rad = a.angle_deg * degrees_to_radians;
-    if (a.polarization == "s") f.polarization = Polarization::s;
-    else if (a.polarization == "p") f.polarization = Polarization::p;
-    else if (a.polarization == "unpolarized") f.polarization = Polarization::unpolarized;
+    Polarization polarization = Polarization::unpolarized;
+    if (a.polarization == "s") polarization = Polarization::s;
+    else if (a.polarization == "p") polarization = Polarization::p;
+    else if (a.polarization == "unpolarized") polarization = Polarization::unpolarized;
     else throw UsageError("--polarization '" + a.polarization + "' is unknown; valid: s, p, unpolarized");
     if (a.phase_change && a.no_phase_change) {
         throw UsageError("--phase-change and --no-phase-change exclude each other");
     }
-    if (a.phase_change) f.phase_change = true;
-    if (a.no_phase_change) f.phase_change = false;
+    std::optional<bool> phase_change;
+    if (a.phase_change) phase_change = true;
+    if (a.no_phase_change) phase_change = false;
     const auto given = [&](const char* option) {
         return a.command && a.command->count(option) > 0;
     };
@@ -199,57 +208,66 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
             }
         }
     };
-    switch (f.model) {
-        case FilmModel::exact:
+    switch (kind) {
+        case FilmModelKind::exact:
             refuse({"--phase-change", "--no-phase-change", "--K", "--periods", "--d1", "--d2", "--n", "--blend",
                     "--blend-vary"});
             break;
-        case FilmModel::thesis:
+        case FilmModelKind::thesis:
             refuse({"--polarization", "--periods", "--d1", "--d2", "--n", "--blend", "--blend-vary"});
             break;
-        case FilmModel::thesis_multilayer:
+        case FilmModelKind::thesis_multilayer:
             // Eq. 26 assumes air around the films.
             refuse({"--ambient", "--substrate", "--polarization", "--phase-change", "--no-phase-change",
                     "--d1", "--d2", "--n", "--blend", "--blend-vary"});
             break;
-        case FilmModel::morpho:
+        case FilmModelKind::morpho:
             refuse({"--ambient", "--substrate", "--polarization", "--phase-change", "--no-phase-change",
                     "--layer"});
             break;
     }
 
     const auto need_layers = [&](std::size_t count, const char* model) {
-        if (f.layers.size() != count) {
+        if (layers.size() != count) {
             throw UsageError(std::string("--model ") + model + " takes exactly " +
-                             std::to_string(count) + " --layer, found " + std::to_string(f.layers.size()));
+                             std::to_string(count) + " --layer, found " + std::to_string(layers.size()));
         }
     };
-    switch (f.model) {
-        case FilmModel::exact:
-            if (f.layers.empty() && thickness_required) {
+    // Anything the checks above leave to the library is still an option's error (exit 2).
+    try {
+    switch (kind) {
+        case FilmModelKind::exact:
+            if (layers.empty() && thickness_required) {
                 throw UsageError("--layer is required: give at least one INDEX:THICKNESS");
             }
             if (!thickness_required) need_layers(1, "exact (film-table)");
-            break;
-        case FilmModel::thesis:
-            need_layers(1, "thesis");
-            thesis_material(f.layers.front().material, "film", layer_option(0));
-            thesis_material(f.substrate, "substrate", "--substrate '" + a.substrate + "'");
-            f.k = given("--K")
-                      ? a.k
-                      : thesis_matched_k({f.ambient, f.layers.front().material, f.substrate});
-            break;
-        case FilmModel::thesis_multilayer:
-            need_layers(1, "thesis-multilayer");
-            if (!given("--periods")) throw UsageError("--periods is required with --model thesis-multilayer");
-            f.periods = a.periods;
-            f.k = given("--K") ? a.k : thesis_unit_peak_k(f.periods);
-            thesis_material(f.layers.front().material, "film", layer_option(0));
-            if (real_index(f.layers.front().material, 555.0) < 1.0) {
-                throw UsageError("--layer: eq. 26 needs the film's index >= 1 (air around it)");
+            {
+                std::vector<Layer> stack;
+                for (const LayerArgument& l : layers) stack.push_back({l.material, l.thickness_nm.value_or(0.0)});
+                f.model = std::make_shared<ExactFilm>(ambient, std::move(stack), substrate, polarization);
             }
             break;
-        case FilmModel::morpho:
+        case FilmModelKind::thesis:
+            need_layers(1, "thesis");
+            thesis_material(layers.front().material, "film", layer_option(0));
+            thesis_material(substrate, "substrate", "--substrate '" + a.substrate + "'");
+            f.model = std::make_shared<ThesisFilm>(
+                SingleFilm{ambient, layers.front().material, substrate},
+                layers.front().thickness_nm.value_or(0.0),
+                given("--K") ? std::optional<double>(a.k) : std::nullopt, phase_change);
+            break;
+        case FilmModelKind::thesis_multilayer:
+            need_layers(1, "thesis-multilayer");
+            if (!given("--periods")) throw UsageError("--periods is required with --model thesis-multilayer");
+            thesis_material(layers.front().material, "film", layer_option(0));
+            if (real_index(layers.front().material, 555.0) < 1.0) {
+                throw UsageError("--layer: eq. 26 needs the film's index >= 1 (air around it)");
+            }
+            f.model = std::make_shared<ThesisMultilayerFilm>(
+                layers.front().material, layers.front().thickness_nm.value_or(0.0), a.periods,
+                given("--K") ? std::optional<double>(a.k) : std::nullopt);
+            break;
+        case FilmModelKind::morpho: {
             if (!(std::isfinite(a.d1_nm) && a.d1_nm >= 0.0 && a.d1_nm <= 1e6)) {
                 throw UsageError("--d1 " + format_shortest(a.d1_nm) + " must be a thickness in [0, 1e6] nm");
             }
@@ -260,10 +278,10 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
                 throw UsageError("--n " + format_shortest(a.n) +
                                  " must be >= 1 (eq. 29 assumes the wing is in air)");
             }
-            f.k = given("--K") ? a.k : thesis_unit_peak_k(a.periods);
-            f.morpho = {a.d1_nm, a.d2_nm, a.n, a.periods, f.k};
+            const MorphoParameters wing{a.d1_nm, a.d2_nm, a.n, a.periods,
+                                        given("--K") ? a.k : thesis_unit_peak_k(a.periods)};
             try {
-                validate_morpho(f.morpho);
+                validate_morpho(wing);
             } catch (const Error& e) {
                 throw UsageError(e.what());
             }
@@ -271,11 +289,19 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
                 throw UsageError("--blend-vary '" + a.blend_vary + "' is unknown; valid: d1, d2");
             }
             if (given("--blend-vary") && !a.blend) throw UsageError("--blend-vary needs --blend");
+            std::optional<MorphoBlend> blend;
             if (a.blend) {
-                f.blend = MorphoBlend{};
-                f.blend->varies = a.blend_vary == "d2" ? MorphoBlendThickness::d2 : MorphoBlendThickness::d1;
+                blend = MorphoBlend{};
+                blend->varies = a.blend_vary == "d2" ? MorphoBlendThickness::d2 : MorphoBlendThickness::d1;
             }
+            f.model = std::make_shared<MorphoFilm>(wing, blend);
             break;
+        }
+    }
+    } catch (const UsageError&) {
+        throw;
+    } catch (const Error& e) {
+        throw UsageError(e.what());
     }
     return f;
 }
@@ -298,86 +324,12 @@ Colorimeter parse_colorimeter(const FilmArguments& a) {
     return Colorimeter(illuminant, observer, *rgb);
 }
 
-double Film::morpho_thickness_nm(double angle_rad_) const {
-    return morpho_effective_thickness_nm(morpho, angle_rad_);
-}
-
 void Film::check_work(std::vector<WorkFactor> spectra, bool at_wavelengths) const {
     try {
-        // color() takes the prepared Airy film for one unpolarised layer, the transfer matrix for
-        // any other exact stack; spectrum() always takes the transfer matrix.
-        const bool airy = model == FilmModel::exact && layers.size() == 1 &&
-                          polarization == Polarization::unpolarized && !at_wavelengths;
-        if (model == FilmModel::exact && !airy) {
-            if (!at_wavelengths) {
-                spectra.push_back({"the 1 nm grid 360-830 nm",
-                                   static_cast<double>(dense_sample_count), "wavelengths"});
-            }
-            spectra.push_back({"--layer", static_cast<double>(layers.size()), "layers"});
-            check_stack_work(spectra);
-        } else if (at_wavelengths) {
-            if (blend) {
-                spectra.push_back({"--blend", static_cast<double>(blend->samples), "samples"});
-            }
-            check_spectrum_work(spectra);
-        } else {
-            std::optional<WorkFactor> per_wavelength;
-            if (blend) {
-                per_wavelength =
-                    WorkFactor{"--blend", static_cast<double>(blend->samples), "samples"};
-            }
-            check_color_work(spectra, per_wavelength);
-        }
+        model->check_work(std::move(spectra), at_wavelengths, {"--layer", "--blend"});
     } catch (const Error& e) {
         throw UsageError(e.what());
     }
-}
-
-std::function<Optics(double)> Film::spectrum(double angle, std::optional<double> thickness_nm) const {
-    const auto thickness = [&](std::size_t i) {
-        return thickness_nm && i == 0 ? *thickness_nm : layers[i].thickness_nm.value_or(0.0);
-    };
-    switch (model) {
-        case FilmModel::exact: {
-            std::vector<Layer> stack_layers;
-            for (std::size_t i = 0; i < layers.size(); ++i) {
-                stack_layers.push_back({layers[i].material, thickness(i)});
-            }
-            return [stack = FilmStack(ambient, std::move(stack_layers), substrate), angle,
-                    p = polarization](double lambda_nm) { return stack.evaluate(lambda_nm, angle, p); };
-        }
-        case FilmModel::thesis:
-            return [film = SingleFilm{ambient, layers.front().material, substrate}, t = thickness(0),
-                    angle, k_ = k, phase = phase_change](double lambda_nm) {
-                return Optics{thesis_single_film_reflectance(film, t, lambda_nm, angle, k_, phase), 0.0};
-            };
-        case FilmModel::thesis_multilayer:
-            return [material = layers.front().material, t = thickness(0), angle, l = periods,
-                    k_ = k](double lambda_nm) {
-                const double n = real_index(material, lambda_nm);
-                const double t_theta = thesis_multilayer_effective_thickness_nm(t, n, angle);
-                return Optics{thesis_multilayer_reflectance(lambda_nm, t_theta, l, k_), 0.0};
-            };
-        case FilmModel::morpho:
-            return [wing = morpho, b = blend, angle](double lambda_nm) {
-                return Optics{b ? morpho_blend_reflectance(wing, *b, lambda_nm, angle)
-                                : morpho_reflectance(wing, lambda_nm, angle),
-                              0.0};
-            };
-    }
-    return {};
-}
-
-FilmColor Film::color(const Colorimeter& colorimeter, double angle,
-                      std::optional<double> thickness_nm) const {
-    if (model == FilmModel::exact && layers.size() == 1 && polarization == Polarization::unpolarized) {
-        const SingleFilm film{ambient, layers.front().material, substrate};
-        return PreparedFilm(film, angle).color(thickness_nm.value_or(layers.front().thickness_nm.value_or(0.0)),
-                                               colorimeter);
-    }
-    const auto at = spectrum(angle, thickness_nm);
-    const Xyz xyz = colorimeter.xyz_of([&](double lambda) { return at(lambda).R; });
-    return {xyz, colorimeter.linear_rgb(xyz)};
 }
 
 }  // namespace irid::cli

@@ -25,8 +25,8 @@ struct FilmTableCommand {
 };
 
 int run_film_table(const FilmTableCommand& c) {
-    const bool morpho = c.args.model == "morpho";
     const Film film = parse_film(c.args, false);
+    const bool morpho = !film.model->has_thickness();
     const Colorimeter colorimeter = parse_colorimeter(c.args);
     if (!morpho && c.thickness.empty()) {
         throw UsageError("--thickness START:END:STEP is required (thickness in nm, >= 0)");
@@ -68,15 +68,11 @@ int run_film_table(const FilmTableCommand& c) {
     std::string out = "thickness_nm,angle_deg,cos_theta,X,Y,Z,R_linear,G_linear,B_linear\n";
     for (const double angle_deg : angles) {
         const double angle = angle_deg * std::numbers::pi / 180.0;
-        // The exact single film at one angle: prepare it once for every thickness.
-        std::optional<PreparedFilm> prepared;
-        if (film.model == FilmModel::exact && film.polarization == Polarization::unpolarized) {
-            prepared.emplace(SingleFilm{film.ambient, film.layers.front().material, film.substrate}, angle);
-        }
+        // The film at one angle, prepared once for every thickness.
+        const std::unique_ptr<FilmAtAngle> row = film.model->at_angle(angle);
         for (const double t : thicknesses) {
-            const FilmColor fc = prepared ? prepared->color(t, colorimeter)
-                                          : film.color(colorimeter, angle, t);
-            const double thickness = morpho ? film.morpho_thickness_nm(angle) : t;
+            const FilmColor fc = row->color(t, colorimeter);
+            const double thickness = film.model->effective_thickness_nm(angle).value_or(t);
             append_csv_line(out, std::array{thickness, angle_deg, std::cos(angle), fc.xyz.X, fc.xyz.Y,
                                             fc.xyz.Z, fc.rgb_linear.r, fc.rgb_linear.g, fc.rgb_linear.b});
         }

@@ -8,364 +8,46 @@
 // and references only files in DIR, so it opens from the file system without a network.
 #include "../cli_common.h"
 
-#include <irid/error.h>
-#include <irid/figures/clip_sets.h>
-#include <irid/figures/figures.h>
-#include <irid/gamut/clip.h>
-#include <irid/gamut/report.h>
-#include <irid/io/output_file.h>
-#include <irid/io/image.h>
-#include <irid/render/render.h>
-#include <irid/render/scene.h>
+#include <irid/figures/gallery.h>
 
 #include <fmt/core.h>
 
-#include <algorithm>
-#include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 namespace irid::cli {
 namespace {
 
-struct GalleryOptions {
+struct GalleryCommand {
     std::string dir;
-    int width = 1024;
-    int height = 768;
-    int spp = 4;
-    int figure_width = 960;
-    int threads = 0;
+    figures::GalleryOptions options;
     bool quiet = false;
 };
 
-
-struct SceneInfo {
-    const char* name;
-    const char* thesis_figure;
-    const char* title;
-    const char* what;
-};
-
-constexpr SceneInfo scene_infos[] = {
-    {"oil-slick", "Figure 7", "An oil slick on wet pavement",
-     "Mineral oil floating on a water film over asphalt; the thickness is Smits' eq. 28, "
-     "t = t<sub>max</sub> e<sup>−k₁(x² + y² + k₂ turb(x, y))</sup>, and the pavement is bump-mapped "
-     "through dnoise. Expect concentric, irregular rings whose colours change with the view angle."},
-    {"soap-bubbles", "Figure 8", "Soap bubbles",
-     "Soap films (water) in air whose thickness grows downwards as the film drains, with turbulence; "
-     "reflection and transmission through each film are both coloured by interference. Expect "
-     "black films at the tops, where they are thinnest, and horizontal bands below."},
-    {"morpho", "Figure 9", "A Morpho butterfly",
-     "Wings coloured by the thesis' multilayer model (eq. 25 with eq. 29: twelve chitin mullions, "
-     "d₁ = 150 nm, d₂ = 50 nm), blended over mullion spacings, indexed by the viewing angle, on "
-     "slightly bumpy wings. Expect blue that shifts towards violet as the angle grows."},
-};
-
-class Page {
-public:
-    void add(const std::string& html) { m_html += html; }
-    [[nodiscard]] const std::string& html() const { return m_html; }
-
-    void image(const std::string& file, int w, int h, const std::string& alt, const std::string& thesis,
-               const std::string& title, const std::string& caption,
-               const std::vector<std::pair<std::string, std::string>>& measurements) {
-        m_html += "<figure>\n";
-        m_html += fmt::format(
-            "<a href=\"{0}\"><img src=\"{0}\" width=\"{1}\" height=\"{2}\" alt=\"{3}\"></a>\n",
-            figures::html_escape(file), w, h, figures::html_escape(alt));
-        m_html += "<figcaption><p class=\"title\">";
-        if (!thesis.empty())
-            m_html += fmt::format("<span class=\"thesis\">Thesis {}</span> ", figures::html_escape(thesis));
-        m_html += figures::html_escape(title) + "</p>\n<p>" + caption + "</p>\n";
-        if (!measurements.empty()) {
-            m_html += "<table class=\"numbers\">\n";
-            for (const auto& [k, v] : measurements)
-                m_html += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", figures::html_escape(k), figures::html_escape(v));
-            m_html += "</table>\n";
-        }
-        m_html += "</figcaption>\n</figure>\n";
-    }
-
-private:
-    std::string m_html;
-};
-
-constexpr const char* style = R"css(
-body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 2em auto; max-width: 1100px;
-       color: #1b1b1b; background: #fafafa; line-height: 1.45; padding: 0 1em; }
-h1 { font-size: 1.7em; margin-bottom: 0.2em; } h2 { margin-top: 2em; border-bottom: 1px solid #ccc; }
-figure { margin: 1.5em 0; } img { max-width: 100%; height: auto; border: 1px solid #ddd; background: #fff; }
-figcaption { font-size: 0.92em; } .title { font-weight: bold; margin-bottom: 0.2em; }
-.thesis { background: #2a4d8f; color: #fff; padding: 0.05em 0.45em; border-radius: 3px; font-weight: normal; }
-table { border-collapse: collapse; margin: 0.6em 0; font-size: 0.9em; }
-th, td { border: 1px solid #ccc; padding: 0.2em 0.6em; text-align: left; }
-table.numbers th { font-weight: normal; color: #555; }
-.pair { display: flex; gap: 1em; flex-wrap: wrap; } .pair figure { flex: 1 1 300px; margin: 0.5em 0; }
-code { background: #eee; padding: 0 0.2em; }
-)css";
-
-/// The body of an HTML file written by a table figure (its <body> contents, or all of it).
-std::string html_fragment(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    std::string s = ss.str();
-    const auto b = s.find("<body");
-    if (b != std::string::npos) {
-        const auto start = s.find('>', b);
-        const auto end = s.find("</body>");
-        if (start != std::string::npos && end != std::string::npos) return s.substr(start + 1, end - start - 1);
-    }
-    return s;
-}
-
-/// --set values for the image's size.
-std::vector<std::string> size_overrides(int width, int height, int spp) {
-    return {fmt::format("image.width={}", width), fmt::format("image.height={}", height),
-            fmt::format("image.spp={}", spp)};
-}
-
-/// The image enlarged k times by repeating pixels, so that single pixels can be seen.
-io::Image magnify(const io::Image& in, int k) {
-    io::Image out = io::Image::blank(in.width * k, in.height * k, in.channels);
-    out.color_space = in.color_space;
-    for (int y = 0; y < out.height; ++y)
-        for (int x = 0; x < out.width; ++x)
-            for (int c = 0; c < in.channels; ++c) out.at(x, y, c) = in.at(x / k, y / k, c);
-    return out;
-}
-
-std::string format_number(double v, int digits = 2) { return fmt::format("{:.{}f}", v, digits); }
-
-int run_gallery(const GalleryOptions& o) {
-    namespace fs = std::filesystem;
-    const auto start = std::chrono::steady_clock::now();
-    if (o.dir.empty()) throw UsageError("-o: an empty folder name; give the folder to write into");
-    const fs::path dir(o.dir);
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir))
-        throw Error(fmt::format("cannot create the folder '{}': {}", o.dir, ec.message()));
-    auto say = [&](const std::string& what) {
-        if (!o.quiet) fmt::print(stderr, "irid gallery: {}\n", what);
-    };
-
-    Page page;
-    page.add(
-        "<h1>irid — the gallery</h1>\n"
-        "<p>What irid computes, figure by figure, beside Brian Smits' 1990 thesis "
-        "<i>Interference Phenomena and an Efficient Solution to the Out of Gamut Colors "
-        "Problem</i>. Every image on this page was made by this run of <code>irid gallery</code>; "
-        "the numbers were measured while making them. Badges give the thesis' figure number "
-        "where the thesis has one.</p>\n");
-
-    // --- The scenes ------------------------------------------------------------------------
-    page.add("<h2>The thesis' scenes</h2>\n");
-    render::RenderOptions ropt;
-    ropt.threads = o.threads;
-    std::vector<std::pair<std::string, std::string>> speed_rows;
-    for (const SceneInfo& info : scene_infos) {
-        const render::Scene scene =
-            render::load_scene(info.name, size_overrides(o.width, o.height, o.spp));
-        say(fmt::format("rendering {} ({}×{}, {} spp)", info.name, o.width, o.height, o.spp));
-        const render::RenderResult r = render::render(scene, ropt);
-        const std::string file = std::string(info.name) + ".png";
-        io::write_image(dir / file, r.display);
-        const auto& s = r.stats;
-        page.image(file, o.width, o.height, info.title, info.thesis_figure, info.title,
-                   std::string(info.what) +
-                       fmt::format(" Rendered with <code>irid render {} --width {} --height {} "
-                                   "--spp {}</code>: {} optics, table path, clip "
-                                   "<code>{}</code> to {}.",
-                                   info.name, o.width, o.height, o.spp,
-                                   scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
-                                   figures::html_escape(scene.render.clip), figures::html_escape(scene.render.space)),
-                   {{"time", format_number(s.seconds) + " s"},
-                    {"rays per second", format_number(static_cast<double>(s.rays) / s.seconds * 1e-6) + " M"},
-                    {"pixels out of gamut before the clip",
-                     format_number(100.0 * static_cast<double>(s.out_of_gamut_pixels) /
-                                       (static_cast<double>(o.width) * o.height), 1) + " %"}});
-    }
-
-    // --- Table path against spectral path ------------------------------------------------
-    const int cw = std::max(32, o.width / 4), ch = std::max(24, o.height / 4);
-    page.add(fmt::format(
-        "<h2>The thesis' table path against per-pixel spectra</h2>\n<p>Each scene at {}×{}, "
-        "{} samples per pixel, rendered twice: with the thesis' colour tables (RGB products) "
-        "and with a spectrum per ray (1 nm, products per wavelength), and the CIEDE2000 between "
-        "the two images per pixel.</p>\n<table>\n<tr><th>scene</th><th>table path</th>"
-        "<th>spectral path</th><th>speed-up</th><th>mean ΔE2000</th><th>99th percentile</th></tr>\n",
-        cw, ch, o.spp));
-    for (const SceneInfo& info : scene_infos) {
-        std::vector<std::string> set = size_overrides(cw, ch, o.spp);
-        const render::RenderResult table = render::render(render::load_scene(info.name, set), ropt);
-        set.push_back("render.path=spectral");
-        say(fmt::format("comparing the colour paths on {}", info.name));
-        const render::RenderResult spectral = render::render(render::load_scene(info.name, set), ropt);
-        const render::ImageDifference d = render::delta_e_2000_images(table.xyz, spectral.xyz);
-        page.add(fmt::format("<tr><td>{}</td><td>{:.3f} s</td><td>{:.3f} s</td><td>{:.1f}×</td>"
-                             "<td>{:.3f}</td><td>{:.3f}</td></tr>\n",
-                             info.name, table.stats.seconds, spectral.stats.seconds,
-                             spectral.stats.seconds / table.stats.seconds, d.mean, d.p99));
-    }
-    page.add("</table>\n");
-
-    // --- Thin-film aliasing ----------------------------------------------------------------
-    {
-        say("showing the thin-film anti-aliasing");
-        const int aw = std::max(32, o.width / 8), ah = std::max(24, o.height / 8);
-        constexpr int zoom = 4;
-        // A thicker slick than the scene's, so that its bands crowd below the pixel size, on a
-        // flat pavement, so that what differs between the images is the film.
-        const std::vector<std::string> slick = {"oil.max_thickness_nm=6000", "pavement.bump_height=0",
-                                                "pavement.fine_height=0",
-                                                "pavement.albedo_variation=0"};
-        auto render_slick = [&](int spp, const char* mode) {
-            std::vector<std::string> set = size_overrides(aw, ah, spp);
-            set.insert(set.end(), slick.begin(), slick.end());
-            set.push_back(fmt::format("render.antialias={}", mode));
-            return render::render(render::load_scene("oil-slick", set), ropt);
-        };
-        const render::RenderResult reference = render_slick(64, "none");
-        page.add(fmt::format(
-            "<h2>Thin-film aliasing</h2>\n<p>Where a film's thickness changes faster than the "
-            "pixel grid, point samples of its colour alias into false bands and speckle. irid "
-            "averages the colour over the thickness range each sample covers (running integrals "
-            "of the colour table). The oil slick with a 6 µm maximum thickness on a flat, uniform "
-            "pavement, {}×{} pixels "
-            "shown at {}× (nearest neighbour): 1 sample per pixel without and with the "
-            "footprint filter, and 64 point samples per pixel as the reference. ΔE2000 is the "
-            "mean difference to the reference.</p>\n<div class=\"pair\">\n",
-            aw, ah, zoom));
-        struct Variant {
-            const char* file;
-            const char* title;
-            const render::RenderResult* result;
-        };
-        const render::RenderResult none = render_slick(1, "none");
-        const render::RenderResult footprint = render_slick(1, "footprint");
-        for (const Variant& v :
-             {Variant{"oil-slick-antialias-none.png", "1 sample per pixel, no filtering", &none},
-              Variant{"oil-slick-antialias-footprint.png", "1 sample per pixel, footprint filter",
-                      &footprint},
-              Variant{"oil-slick-antialias-reference.png", "64 samples per pixel (reference)",
-                      &reference}}) {
-            io::write_image(dir / v.file, magnify(v.result->display, zoom));
-            const double de = render::delta_e_2000_images(v.result->xyz, reference.xyz).mean;
-            page.image(v.file, aw * zoom, ah * zoom, v.title, "", v.title,
-                       "oil.max_thickness_nm = 6000, pavement bumps and albedo variation 0; the rest as "
-                       "the oil-slick scene.",
-                       {{"mean ΔE2000 to the reference", format_number(de, 3)}});
-        }
-        page.add("</div>\n");
-    }
-
-    // --- Figures and tables ----------------------------------------------------------------
-    page.add("<h2>Figures</h2>\n");
-    const int fw = o.figure_width, fh = o.figure_width * 5 / 8;
-    std::vector<std::string> tables;
-    for (const figures::FigureInfo& info : figures::figure_catalog()) {
-        const bool is_table = std::find(info.extensions.begin(), info.extensions.end(), ".html") !=
-                              info.extensions.end();
-        say(fmt::format("drawing {}", info.name));
-        figures::FigureRequest req;
-        req.name = info.name;
-        req.width_px = fw;
-        req.height_px = fh;
-        req.output = dir / (info.name + (is_table ? ".html" : ".png"));
-        const figures::FigureResult fr = figures::draw_figure(req);
-        if (is_table) {
-            tables.push_back(fmt::format(
-                "<section>\n<p class=\"title\">{}{}</p>\n{}\n<p>{}</p>\n</section>\n",
-                info.thesis_figure.empty()
-                    ? ""
-                    : fmt::format("<span class=\"thesis\">Thesis {}</span> ", figures::html_escape(info.thesis_figure)),
-                figures::html_escape(info.title), html_fragment(req.output), figures::html_escape(fr.caption)));
-            continue;
-        }
-        page.image(info.name + ".png", fr.width_px, fr.height_px, info.title, info.thesis_figure,
-                   info.title, figures::html_escape(fr.caption), fr.measurements);
-    }
-    page.add("<h2>Tables</h2>\n");
-    for (const std::string& t : tables) page.add(t);
-
-    // --- The clip report ---------------------------------------------------------------------
-    say("measuring the clip report");
-    page.add("<h2>Gamut clipping: the clip report</h2>\n");
-    using figures::ClipReportSet;  // the report's sets are made in irid_figures (clip_sets.h)
-    for (const ClipReportSet set : {ClipReportSet::spectrum, ClipReportSet::interference}) {
-        const ClipReport rep = measure_clip_report(figures::clip_report_color_set(set, srgb()),
-                                                   Gamut(srgb(), 1.0), ClipReportOptions{0.05});
-        page.add(fmt::format("<p>{} — {} colours, {} outside {} — {}</p>\n<table>\n"
-                             "<tr><th>method</th><th>ΔE2000 mean</th><th>ΔE2000 p95</th>"
-                             "<th>ΔE2000 max</th><th>Oklab hue change mean [°]</th>"
-                             "<th>CIELUV hue change mean [°]</th><th>ΔY mean</th>"
-                             "<th>colours per second</th></tr>\n",
-                             figures::html_escape(rep.set_name), rep.size, rep.out_of_gamut,
-                             figures::html_escape(rep.destination), figures::html_escape(rep.set_description)));
-        for (const MethodClipReport& m : rep.methods) {
-            page.add(fmt::format("<tr><td>{}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.2f}</td>"
-                                 "<td>{:.2f}</td><td>{:.2f}</td><td>{:.4f}</td><td>{:.3g}</td></tr>\n",
-                                 clip_method_name(m.method), m.delta_e2000.mean, m.delta_e2000.p95,
-                                 m.delta_e2000.max, m.hue_oklab.mean, m.hue_luv.mean,
-                                 m.delta_y.mean, m.colors_per_second));
-        }
-        page.add("</table>\n");
-    }
-    {
-        // The ramps: what each method does to gradients (speeds are not shown: a single pass).
-        const ClipReport rep = measure_clip_report(figures::clip_report_color_set(ClipReportSet::ramps, srgb()),
-                                                   Gamut(srgb(), 1.0), ClipReportOptions{0.0});
-        page.add(fmt::format(
-            "<p>{} — {} colours in {} ramps, {} outside {} — {}. Banding: per ramp the largest "
-            "ΔE2000 between neighbouring outputs over their mean (1 = even; the input ramps "
-            "themselves: mean {:.2f}); collapse: the share of a ramp's out-of-gamut steps whose "
-            "output is within ΔE2000 0.5 of the next step's (½ step: within half the ramp's mean "
-            "input step); the figure <i>ramps</i> above shows them.</p>\n<table>\n"
-            "<tr><th>method</th><th>in-gamut ΔE2000 mean / max</th><th>banding mean / max</th>"
-            "<th>collapse</th><th>collapse ½ step</th></tr>\n",
-            figures::html_escape(rep.set_name), rep.size, rep.ramps, rep.out_of_gamut,
-            figures::html_escape(rep.destination), figures::html_escape(rep.set_description),
-            rep.input_banding.mean));
-        for (const MethodClipReport& m : rep.methods) {
-            page.add(fmt::format("<tr><td>{}</td><td>{:.2f} / {:.2f}</td><td>{:.2f} / {:.2f}</td>"
-                                 "<td>{:.3f}</td><td>{:.3f}</td></tr>\n",
-                                 clip_method_name(m.method), m.in_gamut_moved.mean, m.in_gamut_moved.max,
-                                 m.banding.mean, m.banding.max, m.collapse.mean, m.collapse_relative.mean));
-        }
-        page.add("</table>\n");
-    }
-
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    page.add(fmt::format("<p><small>Made by irid 0.1.0 in {:.1f} s.</small></p>\n", seconds));
-    const std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                             "<title>irid — gallery</title>\n<style>" +
-                             std::string(style) + "</style>\n</head>\n<body>\n" + page.html() +
-                             "</body>\n</html>\n";
-    const fs::path index = dir / "index.html";
-    io::write_output_file(index, html);
-    fmt::print("{}\n", fs::absolute(index).lexically_normal().string());
+int run_gallery(const GalleryCommand& c) {
+    if (c.dir.empty()) throw UsageError("-o: an empty folder name; give the folder to write into");
+    figures::GalleryOptions options = c.options;
+    options.dir = c.dir;
+    if (!c.quiet) options.progress = [](const std::string& what) { fmt::print(stderr, "irid gallery: {}\n", what); };
+    const figures::GalleryResult r = figures::make_gallery(options);
+    fmt::print("{}\n", std::filesystem::absolute(r.index).lexically_normal().string());
     return exit_success;
 }
 
 }  // namespace
 
 void add_gallery_command(CLI::App& app, Runner& runner) {
-    auto o = std::make_shared<GalleryOptions>();
+    auto o = std::make_shared<GalleryCommand>();
     CLI::App* cmd = app.add_subcommand(
         "gallery", "Render the scenes, figures and tables into DIR/index.html");
     cmd->add_option("-o,--output", o->dir, "Folder to write index.html and its images into")
         ->required();
-    cmd->add_option("--width", o->width, "Scene width in pixels")->check(whole_number_in(32, 4096));
-    cmd->add_option("--height", o->height, "Scene height in pixels")->check(whole_number_in(24, 4096));
-    cmd->add_option("--spp", o->spp, "Samples per pixel of the scenes")->check(whole_number_in(1, 256));
-    cmd->add_option("--figure-width", o->figure_width, "Figure width in pixels (height 5/8 of it)")
+    cmd->add_option("--width", o->options.width, "Scene width in pixels")->check(whole_number_in(32, 4096));
+    cmd->add_option("--height", o->options.height, "Scene height in pixels")->check(whole_number_in(24, 4096));
+    cmd->add_option("--spp", o->options.spp, "Samples per pixel of the scenes")->check(whole_number_in(1, 256));
+    cmd->add_option("--figure-width", o->options.figure_width, "Figure width in pixels (height 5/8 of it)")
         ->check(whole_number_in(320, 4096));
-    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(whole_number_in(0, 1024));
+    cmd->add_option("--threads", o->options.threads, "Worker threads (0 = all)")->check(whole_number_in(0, 1024));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress messages on stderr");
     cmd->callback([o, &runner] { runner = [o] { return run_gallery(*o); }; });
 }

@@ -79,25 +79,16 @@ int run_render(const RenderCliOptions& o) {
 
     std::vector<std::string> overrides = o.assignments;
     // --width or --height alone keeps the scene's aspect ratio (after its --set values).
-    std::optional<int> width = o.width, height = o.height;
-    if (width.has_value() != height.has_value()) {
-        render::Scene shape;
+    render::Scene shape;  // read only when one side alone is given
+    if (o.width.has_value() != o.height.has_value()) {
         try {
             shape = render::load_scene(o.scene, overrides);
         } catch (const Error& e) {
             throw UsageError(fmt::format("{} (from the command line's options)", e.what()));
         }
-        const double aspect =
-            static_cast<double>(shape.image.width) / static_cast<double>(shape.image.height);
-        const auto rounded = [](double v) {
-            return static_cast<int>(std::clamp(std::lround(v), 1L,
-                                               static_cast<long>(render::max_image_side)));
-        };
-        if (width) height = rounded(*width / aspect);
-        else width = rounded(*height * aspect);
     }
-    if (width) overrides.push_back(fmt::format("image.width={}", *width));
-    if (height) overrides.push_back(fmt::format("image.height={}", *height));
+    for (std::string& size : render::image_size_overrides(shape, o.width, o.height))
+        overrides.push_back(std::move(size));
     if (o.spp) overrides.push_back(fmt::format("image.spp={}", *o.spp));
     if (o.seed) overrides.push_back(fmt::format("render.seed={}", *o.seed));
     if (!o.clip.empty()) {

@@ -216,6 +216,13 @@ struct Scene {
 [[nodiscard]] Scene load_scene(const std::string& name_or_path,
                                const std::vector<std::string>& overrides = {});
 
+/// The overrides ("image.width=W", "image.height=H") that set an image size: both when both are
+/// given; one of them alone keeps the aspect ratio of `shape` (the scene as loaded with the
+/// caller's other overrides), the other side rounded and clamped to [1, max_image_side]; none
+/// when neither is given. The values are checked later, when the overrides are parsed.
+[[nodiscard]] std::vector<std::string> image_size_overrides(const Scene& shape, std::optional<int> width,
+                                                            std::optional<int> height);
+
 /// Limits: images up to max_image_side pixels a side and max_pixels in all, up to max_spp
 /// samples per pixel and max_samples in all.
 inline constexpr int max_image_side = 16384;
