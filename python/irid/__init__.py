@@ -9,7 +9,14 @@ The library behind the ``irid`` command (C++20), for Python:
 * gamut mapping: :func:`clip` and :func:`clip_image` with every method and parameter of
   ``irid clip``
   (:func:`clip_methods`, :func:`clip_parameters`) and :func:`clip_report`;
-* images: :func:`read_image` and :func:`write_image` through OpenImageIO.
+* optics: :class:`Material` (by name, constant, Cauchy, Sellmeier, CSV), :class:`Film` (the
+  exact optics, the thesis' single film, multilayer and Morpho wing) with its spectra and
+  colours over arrays of thicknesses and angles, :func:`film_reflectance`, :func:`film_color`,
+  the thesis' closed forms (eq. 19–29: :func:`thesis_film_reflectance`,
+  :func:`thesis_multilayer_reflectance`, :func:`morpho_reflectance`, ...) and colour tables
+  (:meth:`Film.color_table`, :func:`thesis_film_table`);
+* images: :func:`read_image` and :func:`write_image` through OpenImageIO;
+* rendering: :func:`render` of the thesis' scenes (:func:`scenes`), a scene file or a dict.
 
 Arrays in, arrays out: a colour argument is any array of shape (..., 3), float32 or float64
 (anything else is taken as float64), and the result has the same shape. A float32 C-contiguous
@@ -36,8 +43,22 @@ import os
 import numpy as np
 
 from . import _irid
+from ._optics import (Film, FilmColors, FilmColorTable, FilmColorTable2D, Material,
+                      ThesisFilmTable, film_color, film_reflectance, materials,
+                      morpho_effective_thickness, morpho_reflectance, thesis_effective_thickness,
+                      thesis_film_angle, thesis_film_reflectance, thesis_film_table,
+                      thesis_matched_k, thesis_multilayer_effective_thickness,
+                      thesis_multilayer_reflectance, thesis_phase_change, thesis_unit_peak_k)
+from ._render import Render, gallery, render, scenes
 
 __all__ = [
+    "Film",
+    "FilmColorTable",
+    "FilmColorTable2D",
+    "FilmColors",
+    "Material",
+    "Render",
+    "ThesisFilmTable",
     "blackbody",
     "clip",
     "clip_image",
@@ -48,12 +69,29 @@ __all__ = [
     "color_spaces",
     "convert",
     "delta_e",
+    "film_color",
+    "film_reflectance",
+    "gallery",
     "illuminant",
+    "materials",
+    "morpho_effective_thickness",
+    "morpho_reflectance",
     "primaries_transform",
     "read_image",
+    "render",
     "rgb_color_spaces",
+    "scenes",
     "simd_target",
     "spectrum_to_xyz",
+    "thesis_effective_thickness",
+    "thesis_film_angle",
+    "thesis_film_reflectance",
+    "thesis_film_table",
+    "thesis_matched_k",
+    "thesis_multilayer_effective_thickness",
+    "thesis_multilayer_reflectance",
+    "thesis_phase_change",
+    "thesis_unit_peak_k",
     "white_point",
     "write_image",
 ]

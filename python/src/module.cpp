@@ -15,6 +15,8 @@ namespace irid::python {
 void add_colour(py::module_& m);
 void add_gamut(py::module_& m);
 void add_io(py::module_& m);
+void add_optics(py::module_& m);
+void add_render(py::module_& m);
 }  // namespace irid::python
 
 PYBIND11_MODULE(_irid, m) {
@@ -33,4 +35,6 @@ PYBIND11_MODULE(_irid, m) {
     irid::python::add_colour(m);
     irid::python::add_gamut(m);
     irid::python::add_io(m);
+    irid::python::add_optics(m);
+    irid::python::add_render(m);
 }

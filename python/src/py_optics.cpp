@@ -1,0 +1,448 @@
+// Optics for Python: materials, the film models (irid/optics/film.h) with their spectra and
+// colours over arrays of thicknesses and angles, the thesis' closed forms (eq. 19–29) as numpy
+// ufunc-like functions, and the colour tables with their lookups.
+
+#include "arrays.h"
+
+#include <irid/color.h>
+#include <irid/optics/film.h>
+#include <irid/optics/film_color.h>
+#include <irid/optics/material.h>
+#include <irid/optics/thesis_models.h>
+
+#include <pybind11/complex.h>
+#include <pybind11/stl.h>
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <memory>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace irid::python {
+namespace {
+
+using FilmPtr = std::shared_ptr<FilmModel>;
+
+Colorimeter colorimeter_of(const std::string& illuminant, const std::string& observer, const std::string& rgb) {
+    const RgbSpace* space = find_rgb_space(rgb);
+    if (space == nullptr) {
+        throw UnknownNameError("rgb '" + rgb + "' is unknown; valid: srgb, display-p3, rec2020, adobe-rgb, smpte-c, ntsc1953",
+                               {"srgb", "display-p3", "rec2020", "adobe-rgb", "smpte-c", "ntsc1953"});
+    }
+    return Colorimeter(illuminant_by_name(illuminant), parse_observer(observer), *space);
+}
+
+std::vector<double> doubles(const py::handle& value, const char* what) {
+    const auto a = contiguous_of<double>(value, what);
+    return {a.data(), a.data() + a.size()};
+}
+
+void check_finite(const std::vector<double>& v, const char* what, double lo, double hi, bool hi_open) {
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const double x = v[i];
+        if (!(std::isfinite(x) && x >= lo && (hi_open ? x < hi : x <= hi))) {
+            throw Error(std::string(what) + "[" + std::to_string(i) + "] = " + format_shortest(x) +
+                        " must be finite and in [" + format_shortest(lo) + ", " + format_shortest(hi) +
+                        (hi_open ? ")" : "]"));
+        }
+    }
+}
+
+/// Colours of a film at n (thickness, angle) pairs, prepared once per run of equal angles: the
+/// pairs are visited in the order of their angles, in blocks on every core.
+void film_colors(const FilmModel& film, const Colorimeter& colorimeter, const std::vector<double>& t,
+                 const std::vector<double>& angle_rad, double* xyz, double* rgb) {
+    const std::size_t n = t.size();
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return angle_rad[a] < angle_rad[b]; });
+    constexpr std::size_t block = 256;
+    tbb::parallel_for(std::size_t{0}, (n + block - 1) / block, [&](std::size_t k) {
+        std::unique_ptr<FilmAtAngle> row;
+        double row_angle = -1.0;
+        for (std::size_t j = k * block; j < std::min(n, (k + 1) * block); ++j) {
+            const std::size_t i = order[j];
+            if (!row || angle_rad[i] != row_angle) {
+                row = film.at_angle(angle_rad[i]);
+                row_angle = angle_rad[i];
+            }
+            const FilmColor c = row->color(t[i], colorimeter);
+            xyz[3 * i] = c.xyz.X, xyz[3 * i + 1] = c.xyz.Y, xyz[3 * i + 2] = c.xyz.Z;
+            rgb[3 * i] = c.rgb_linear.r, rgb[3 * i + 1] = c.rgb_linear.g, rgb[3 * i + 2] = c.rgb_linear.b;
+        }
+    });
+}
+
+py::array_t<double> triples(std::size_t n) {
+    return py::array_t<double>(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), 3});
+}
+
+void put(double* p, const Xyz& c) { p[0] = c.X, p[1] = c.Y, p[2] = c.Z; }
+void put(double* p, const Rgb& c) { p[0] = c.r, p[1] = c.g, p[2] = c.b; }
+
+Polarization parse_polarization(const std::string& name) {
+    if (name == "s") return Polarization::s;
+    if (name == "p") return Polarization::p;
+    if (name == "unpolarized") return Polarization::unpolarized;
+    throw UnknownNameError("polarization '" + name + "' is unknown; valid: s, p, unpolarized",
+                           {"s", "p", "unpolarized"});
+}
+
+/// A thesis kernel's scalar argument checked per element (the kernels are noexcept and assume
+/// valid values).
+void need(bool ok, const char* what, double value, const char* allowed) {
+    if (!ok) throw Error(std::string(what) + " " + format_shortest(value) + " must be " + allowed);
+}
+
+}  // namespace
+
+void add_optics(py::module_& m) {
+    // --- Materials -----------------------------------------------------------------------
+    py::class_<Material>(m, "Material", "An optical material: its complex index N = n + ik over wavelength.")
+        .def(py::init([](const std::string& text) { return parse_material(text); }), py::arg("text"),
+             "A material by name ('water', 'silver', ...), a constant index ('1.33') or a complex one "
+             "('1.5+0.02i', k >= 0 absorbing).")
+        .def_static("constant", &Material::constant, py::arg("name"), py::arg("n"), py::arg("k") = 0.0)
+        .def_static("cauchy", &Material::cauchy, py::arg("name"), py::arg("a"), py::arg("b_um2"),
+                    py::arg("c_um4") = 0.0)
+        .def_static(
+            "sellmeier",
+            [](std::string name, const std::vector<std::pair<double, double>>& terms) {
+                std::vector<SellmeierTerm> t;
+                for (const auto& [b, c] : terms) t.push_back({b, c});
+                return Material::sellmeier(std::move(name), std::move(t));
+            },
+            py::arg("name"), py::arg("terms"))
+        .def_static(
+            "read_csv",
+            [](const std::string& path, const std::string& name) {
+                try {
+                    return Material::read_csv(path, name);
+                } catch (const Error& e) {
+                    // "<path>:<line>: ..." is a bad line (ValueError); anything else about the
+                    // file (missing, unreadable, not a regular file) is an OSError.
+                    const std::string what = e.what();
+                    const bool line = what.size() > path.size() + 1 && what.compare(0, path.size(), path) == 0 &&
+                                      what[path.size()] == ':' &&
+                                      std::isdigit(static_cast<unsigned char>(what[path.size() + 1]));
+                    if (line) throw;
+                    throw FileError(what);
+                }
+            },
+            py::arg("path"), py::arg("name") = "")
+        .def_property_readonly("name", &Material::name)
+        .def_property_readonly("is_lossless", &Material::is_lossless)
+        .def(
+            "index",
+            [](const Material& mat, const py::handle& wavelengths) {
+                const auto w = contiguous_of<double>(wavelengths, "wavelengths");
+                std::vector<py::ssize_t> shape(w.shape(), w.shape() + w.ndim());
+                py::array_t<std::complex<double>> out(shape);
+                const double* src = w.data();
+                std::complex<double>* dst = out.mutable_data();
+                for (py::ssize_t i = 0; i < w.size(); ++i) {
+                    if (!(std::isfinite(src[i]) && src[i] > 0.0)) {
+                        throw Error("wavelengths[" + std::to_string(i) + "] = " + format_shortest(src[i]) +
+                                    " must be finite and > 0 nm");
+                    }
+                    dst[i] = mat.index(src[i]);
+                }
+                return out;
+            },
+            py::arg("wavelengths"))
+        .def("__repr__", [](const Material& mat) { return "irid.Material('" + mat.name() + "')"; });
+    m.def("material_names", &material_names);
+
+    // --- Films -----------------------------------------------------------------------------
+    py::class_<FilmModel, FilmPtr>(m, "FilmModel")
+        .def_property_readonly("model", [](const FilmModel& f) { return std::string(f.name()); })
+        .def_property_readonly("has_transmittance", &FilmModel::has_transmittance)
+        .def_property_readonly("has_thickness", &FilmModel::has_thickness)
+        .def_property_readonly("thickness", &FilmModel::thickness_nm)
+        .def(
+            "spectrum",
+            [](const FilmModel& f, const py::handle& wavelengths, double angle_rad, std::optional<double> thickness) {
+                const auto w = contiguous_of<double>(wavelengths, "wavelengths");
+                std::vector<py::ssize_t> shape(w.shape(), w.shape() + w.ndim());
+                const std::vector<double> lambdas(w.data(), w.data() + w.size());
+                check_finite(lambdas, "wavelengths", 1.0, 1e6, false);
+                f.check_work({{"wavelengths", static_cast<double>(lambdas.size())}}, true,
+                             {"layers", "blend"});
+                const auto at = f.spectrum(angle_rad, thickness);
+                py::array_t<double> r(shape), t(shape);
+                double* rp = r.mutable_data();
+                double* tp = t.mutable_data();
+                {
+                    py::gil_scoped_release release;
+                    tbb::parallel_for(std::size_t{0}, lambdas.size(), [&](std::size_t i) {
+                        const Optics o = at(lambdas[i]);
+                        rp[i] = o.R;
+                        tp[i] = o.T;
+                    });
+                }
+                return py::make_tuple(r, t);
+            },
+            py::arg("wavelengths"), py::arg("angle_rad"), py::arg("thickness") = py::none())
+        .def(
+            "colors",
+            [](const FilmModel& f, const py::handle& thickness, const py::handle& angle_rad,
+               const std::string& illuminant, const std::string& observer, const std::string& rgb) {
+                const std::vector<double> t = doubles(thickness, "thickness");
+                const std::vector<double> a = doubles(angle_rad, "angle");
+                if (t.size() != a.size()) throw Error("thickness and angle: sizes differ");
+                check_finite(t, "thickness", 0.0, 1e6, false);
+                for (std::size_t i = 0; i < a.size(); ++i) check_incidence_angle(a[i]);
+                const Colorimeter c = colorimeter_of(illuminant, observer, rgb);
+                f.check_work({{"thickness × angle", static_cast<double>(t.size()), "colours"}}, false,
+                             {"layers", "blend"});
+                py::array_t<double> xyz = triples(t.size()), out_rgb = triples(t.size());
+                double* xp = xyz.mutable_data();
+                double* rp = out_rgb.mutable_data();
+                {
+                    py::gil_scoped_release release;
+                    film_colors(f, c, t, a, xp, rp);
+                }
+                return py::make_tuple(xyz, out_rgb);
+            },
+            py::arg("thickness"), py::arg("angle_rad"), py::arg("illuminant"), py::arg("observer"),
+            py::arg("rgb"))
+        .def("effective_thickness", &FilmModel::effective_thickness_nm, py::arg("angle_rad"));
+
+    m.def(
+        "film_exact",
+        [](const Material& ambient, const std::vector<std::pair<Material, double>>& layers,
+           const Material& substrate, const std::string& polarization) -> FilmPtr {
+            std::vector<Layer> stack;
+            for (const auto& [material, t] : layers) stack.push_back({material, t});
+            return std::make_shared<ExactFilm>(ambient, std::move(stack), substrate,
+                                               parse_polarization(polarization));
+        },
+        py::arg("ambient"), py::arg("layers"), py::arg("substrate"), py::arg("polarization"));
+    m.def(
+        "film_thesis",
+        [](const Material& ambient, const Material& film, const Material& substrate, double thickness,
+           std::optional<double> k, std::optional<bool> phase_change) -> FilmPtr {
+            return std::make_shared<ThesisFilm>(SingleFilm{ambient, film, substrate}, thickness, k, phase_change);
+        },
+        py::arg("ambient"), py::arg("film"), py::arg("substrate"), py::arg("thickness"), py::arg("k"),
+        py::arg("phase_change"));
+    m.def(
+        "film_thesis_multilayer",
+        [](const Material& film, double thickness, int periods, std::optional<double> k) -> FilmPtr {
+            return std::make_shared<ThesisMultilayerFilm>(film, thickness, periods, k);
+        },
+        py::arg("film"), py::arg("thickness"), py::arg("periods"), py::arg("k"));
+    m.def(
+        "film_morpho",
+        [](double d1, double d2, double n, int periods, std::optional<double> k, bool blend,
+           const std::string& vary, double blend_min, double blend_max, int blend_samples) -> FilmPtr {
+            const MorphoParameters wing{d1, d2, n, periods, k ? *k : thesis_unit_peak_k(std::max(periods, 0))};
+            std::optional<MorphoBlend> b;
+            if (blend) {
+                if (vary != "d1" && vary != "d2") {
+                    throw UnknownNameError("blend_vary '" + vary + "' is unknown; valid: d1, d2", {"d1", "d2"});
+                }
+                b = MorphoBlend{blend_min, blend_max, blend_samples,
+                                vary == "d2" ? MorphoBlendThickness::d2 : MorphoBlendThickness::d1};
+            }
+            return std::make_shared<MorphoFilm>(wing, b);
+        },
+        py::arg("d1"), py::arg("d2"), py::arg("n"), py::arg("periods"), py::arg("k"), py::arg("blend"),
+        py::arg("blend_vary"), py::arg("blend_min"), py::arg("blend_max"), py::arg("blend_samples"));
+
+    // --- The thesis' closed forms, element-wise over broadcast arrays --------------------------
+    m.def("thesis_phase_change", py::vectorize([](double n_ambient, double n_film, double n_substrate) {
+        return thesis_phase_change(n_ambient, n_film, n_substrate);
+    }));
+    m.def("thesis_film_reflectance",
+          py::vectorize([](double lambda_nm, double thickness_nm, double n_film, bool phase_change, double k) {
+              need(std::isfinite(lambda_nm) && lambda_nm > 0.0, "wavelength", lambda_nm, "finite and > 0 nm");
+              need(std::isfinite(thickness_nm) && thickness_nm >= 0.0, "thickness", thickness_nm, "finite and >= 0 nm");
+              need(std::isfinite(n_film) && n_film > 0.0, "n_film", n_film, "finite and > 0");
+              need(std::isfinite(k) && k >= 0.0, "k", k, "finite and >= 0");
+              return thesis_film_reflectance(lambda_nm, thickness_nm, n_film, phase_change, k);
+          }));
+    m.def("thesis_film_angle", py::vectorize([](double theta_rad, double n_film, double n_ambient) {
+              need(std::isfinite(theta_rad) && theta_rad >= 0.0 && theta_rad < 1.5707963267948966, "angle",
+                   theta_rad, "in [0, pi/2) rad");
+              need(std::isfinite(n_film) && n_film > 0.0, "n_film", n_film, "finite and > 0");
+              need(std::isfinite(n_ambient) && n_ambient > 0.0, "n_ambient", n_ambient, "finite and > 0");
+              return thesis_film_angle_rad(theta_rad, n_film, n_ambient);
+          }));
+    m.def("thesis_effective_thickness", py::vectorize([](double thickness_nm, double n_film, double theta_film_rad) {
+              need(std::isfinite(thickness_nm) && thickness_nm >= 0.0, "thickness", thickness_nm, "finite and >= 0 nm");
+              need(std::isfinite(n_film) && n_film > 0.0, "n_film", n_film, "finite and > 0");
+              need(std::isfinite(theta_film_rad) && theta_film_rad >= 0.0 && theta_film_rad <= 1.5707963267948966,
+                   "angle in the film", theta_film_rad, "in [0, pi/2] rad");
+              return thesis_effective_thickness_nm(thickness_nm, n_film, theta_film_rad);
+          }));
+    m.def("thesis_multilayer_reflectance",
+          py::vectorize([](double lambda_nm, double effective_thickness_nm, int periods, double k) {
+              need(std::isfinite(lambda_nm) && lambda_nm > 0.0, "wavelength", lambda_nm, "finite and > 0 nm");
+              need(std::isfinite(effective_thickness_nm) && effective_thickness_nm >= 0.0, "effective thickness",
+                   effective_thickness_nm, "finite and >= 0 nm");
+              need(periods >= 0 && periods <= thesis_max_periods, "periods", periods, "in 0..1000000");
+              need(std::isfinite(k) && k >= 0.0, "k", k, "finite and >= 0");
+              return thesis_multilayer_reflectance(lambda_nm, effective_thickness_nm, periods, k);
+          }));
+    m.def("thesis_multilayer_effective_thickness",
+          py::vectorize([](double thickness_nm, double n, double theta_rad) {
+              need(std::isfinite(thickness_nm) && thickness_nm >= 0.0, "thickness", thickness_nm, "finite and >= 0 nm");
+              need(std::isfinite(n) && n >= 1.0, "n", n, "finite and >= 1 (eq. 26 assumes air around)");
+              need(std::isfinite(theta_rad) && theta_rad >= 0.0 && theta_rad < 1.5707963267948966, "angle",
+                   theta_rad, "in [0, pi/2) rad");
+              return thesis_multilayer_effective_thickness_nm(thickness_nm, n, theta_rad);
+          }));
+    m.def("morpho_effective_thickness", py::vectorize([](double theta_rad, double d1, double d2, double n) {
+              need(std::isfinite(theta_rad) && theta_rad >= 0.0 && theta_rad < 1.5707963267948966, "angle",
+                   theta_rad, "in [0, pi/2) rad");
+              const MorphoParameters wing{d1, d2, n, 12, 1.0};
+              validate_morpho(wing);
+              return morpho_effective_thickness_nm(wing, theta_rad);
+          }));
+    m.def("thesis_matched_k",
+          [](const Material& ambient, const Material& film, const Material& substrate, double lambda_nm) {
+              check_thesis_single_film({ambient, film, substrate});
+              return thesis_matched_k({ambient, film, substrate}, lambda_nm);
+          },
+          py::arg("ambient"), py::arg("film"), py::arg("substrate"), py::arg("wavelength"));
+    m.def("thesis_unit_peak_k", [](int periods) {
+        need(periods >= 0 && periods <= thesis_max_periods, "periods", periods, "in 0..1000000");
+        return thesis_unit_peak_k(periods);
+    });
+
+    // --- Colour tables --------------------------------------------------------------------
+    py::class_<FilmColorTable>(m, "FilmColorTable")
+        .def_property_readonly("min_thickness", &FilmColorTable::min_nm)
+        .def_property_readonly("max_thickness", &FilmColorTable::max_nm)
+        .def_property_readonly("step", &FilmColorTable::step_nm)
+        .def_property_readonly("thickness", [](const FilmColorTable& t) {
+            py::array_t<double> a(static_cast<py::ssize_t>(t.size()));
+            for (std::size_t i = 0; i < t.size(); ++i) a.mutable_data()[i] = t.thickness_nm(i);
+            return a;
+        })
+        .def_property_readonly("colors", [](const FilmColorTable& t) {
+            py::array_t<double> xyz = triples(t.size()), rgb = triples(t.size());
+            for (std::size_t i = 0; i < t.size(); ++i) {
+                put(xyz.mutable_data() + 3 * i, t.colors()[i].xyz);
+                put(rgb.mutable_data() + 3 * i, t.colors()[i].rgb_linear);
+            }
+            return py::make_tuple(xyz, rgb);
+        })
+        .def(
+            "at",
+            [](const FilmColorTable& table, const py::handle& thickness) {
+                const std::vector<double> t = doubles(thickness, "thickness");
+                for (std::size_t i = 0; i < t.size(); ++i) {
+                    if (std::isnan(t[i])) throw Error("thickness[" + std::to_string(i) + "] is NaN");
+                }
+                py::array_t<double> xyz = triples(t.size()), rgb = triples(t.size());
+                for (std::size_t i = 0; i < t.size(); ++i) {
+                    const FilmColor c = table.at(t[i]);
+                    put(xyz.mutable_data() + 3 * i, c.xyz);
+                    put(rgb.mutable_data() + 3 * i, c.rgb_linear);
+                }
+                return py::make_tuple(xyz, rgb);
+            },
+            py::arg("thickness"));
+    m.def(
+        "film_color_table",
+        [](const FilmModel& film, double min_nm, double max_nm, double step_nm, double angle_rad,
+           const std::string& illuminant, const std::string& observer, const std::string& rgb) {
+            const Colorimeter c = colorimeter_of(illuminant, observer, rgb);
+            if (std::isfinite(min_nm) && std::isfinite(max_nm) && std::isfinite(step_nm) && step_nm > 0.0) {
+                film.check_work({{"the table", std::floor((max_nm - min_nm) / step_nm) + 1.0, "thicknesses"}},
+                                false, {"layers", "blend"});
+            }
+            const auto row = film.at_angle(angle_rad);
+            py::gil_scoped_release release;
+            return FilmColorTable(min_nm, max_nm, step_nm, [&](double t) { return row->color(t, c); });
+        },
+        py::arg("film"), py::arg("min_thickness"), py::arg("max_thickness"), py::arg("step"), py::arg("angle_rad"),
+        py::arg("illuminant"), py::arg("observer"), py::arg("rgb"));
+
+    py::class_<FilmColorTable2D>(m, "FilmColorTable2D")
+        .def_property_readonly("thickness_step", &FilmColorTable2D::thickness_step_nm)
+        .def_property_readonly("thickness_count", &FilmColorTable2D::thickness_count)
+        .def_property_readonly("cos_count", &FilmColorTable2D::cos_count)
+        .def_property_readonly("cos_step", &FilmColorTable2D::cos_step)
+        .def(
+            "at",
+            [](const FilmColorTable2D& table, const py::handle& thickness, const py::handle& cos_theta) {
+                const std::vector<double> t = doubles(thickness, "thickness");
+                const std::vector<double> c = doubles(cos_theta, "cos_theta");
+                if (t.size() != c.size()) throw Error("thickness and cos_theta: sizes differ");
+                for (std::size_t i = 0; i < t.size(); ++i) {
+                    if (std::isnan(t[i]) || std::isnan(c[i])) throw Error("thickness or cos_theta [" + std::to_string(i) + "] is NaN");
+                }
+                py::array_t<double> xyz = triples(t.size()), rgb = triples(t.size());
+                for (std::size_t i = 0; i < t.size(); ++i) {
+                    const FilmColor col = table.at(t[i], c[i]);
+                    put(xyz.mutable_data() + 3 * i, col.xyz);
+                    put(rgb.mutable_data() + 3 * i, col.rgb_linear);
+                }
+                return py::make_tuple(xyz, rgb);
+            },
+            py::arg("thickness"), py::arg("cos_theta"));
+    m.def(
+        "film_color_table_2d",
+        [](const FilmModel& film, double max_nm, double step_nm, double max_angle_rad, int cos_steps,
+           const std::string& illuminant, const std::string& observer, const std::string& rgb) {
+            const Colorimeter c = colorimeter_of(illuminant, observer, rgb);
+            check_incidence_angle(max_angle_rad);
+            if (std::isfinite(max_nm) && std::isfinite(step_nm) && step_nm > 0.0 && cos_steps > 0) {
+                film.check_work({{"the table's thicknesses", std::floor(max_nm / step_nm) + 1.0, "thicknesses"},
+                                 {"cos_steps", static_cast<double>(cos_steps) + 1.0, "rows"}},
+                                false, {"layers", "blend"});
+            }
+            // Each row of cos θ prepared once (the constructor fills rows in order).
+            std::unique_ptr<FilmAtAngle> row;
+            double row_cos = -2.0;
+            py::gil_scoped_release release;
+            return FilmColorTable2D(max_nm, step_nm, std::cos(max_angle_rad), cos_steps, [&](double t, double cos_theta) {
+                if (!row || cos_theta != row_cos) {
+                    row = film.at_angle(std::acos(std::clamp(cos_theta, 0.0, 1.0)));
+                    row_cos = cos_theta;
+                }
+                return row->color(t, c);
+            });
+        },
+        py::arg("film"), py::arg("max_thickness"), py::arg("step"), py::arg("max_angle_rad"), py::arg("cos_steps"),
+        py::arg("illuminant"), py::arg("observer"), py::arg("rgb"));
+
+    py::class_<ThesisFilmTable>(m, "ThesisFilmTable")
+        .def_property_readonly("phase_change", &ThesisFilmTable::phase_change)
+        .def_property_readonly("step", &ThesisFilmTable::step_nm)
+        .def_property_readonly("max_effective_thickness", &ThesisFilmTable::max_effective_thickness_nm)
+        .def(
+            "at",
+            [](const ThesisFilmTable& table, const py::handle& effective_thickness, double k) {
+                const std::vector<double> t = doubles(effective_thickness, "effective_thickness");
+                for (std::size_t i = 0; i < t.size(); ++i) {
+                    if (std::isnan(t[i])) throw Error("effective_thickness[" + std::to_string(i) + "] is NaN");
+                }
+                need(std::isfinite(k) && k >= 0.0, "k", k, "finite and >= 0");
+                py::array_t<double> xyz = triples(t.size());
+                for (std::size_t i = 0; i < t.size(); ++i) put(xyz.mutable_data() + 3 * i, table.at(t[i], k));
+                return xyz;
+            },
+            py::arg("effective_thickness"), py::arg("k"));
+    m.def(
+        "thesis_film_table",
+        [](bool phase_change, double max_nm, double step_nm, const std::string& illuminant,
+           const std::string& observer) {
+            return ThesisFilmTable(phase_change, max_nm, step_nm, illuminant_by_name(illuminant),
+                                   parse_observer(observer));
+        },
+        py::arg("phase_change"), py::arg("max_effective_thickness"), py::arg("step"), py::arg("illuminant"),
+        py::arg("observer"));
+}
+
+}  // namespace irid::python

@@ -1,0 +1,107 @@
+"""The renderer from Python: the same images as ``irid render``, scenes by name, file or dict."""
+
+import json
+import subprocess
+
+import numpy as np
+import pytest
+
+import irid
+
+from conftest import REPO
+
+SMALL = dict(width=32, height=24, spp=1)
+
+
+@pytest.fixture(scope="module")
+def oil():
+    return irid.render("oil-slick", **SMALL)
+
+
+def test_images_and_stats(oil):
+    linear, display = oil   # the pair the issue names
+    assert linear.shape == display.shape == oil.xyz.shape == (24, 32, 3)
+    assert linear.dtype == display.dtype == np.float32
+    assert np.isfinite(linear).all() and np.isfinite(oil.xyz).all()
+    assert display.min() >= 0.0 and display.max() <= 1.0
+    s = oil.stats
+    assert s["width"] == 32 and s["height"] == 24 and s["spp"] == 1
+    assert s["camera_rays"] == 32 * 24 and s["rays"] >= s["camera_rays"]
+    assert s["clip"] == "smits" and s["space"] == "srgb"
+
+
+def test_display_is_the_clipped_linear(oil):
+    # display = the sRGB encoding of the smits clip of the linear image (render.h's pipeline).
+    expect = irid.convert(irid.clip(oil.linear.astype(np.float64), "smits"), "srgb-linear", "srgb")
+    np.testing.assert_allclose(oil.display, expect, atol=2e-6)
+
+
+def test_same_as_the_command_line(oil, irid_cli, tmp_path):
+    png = tmp_path / "oil.png"
+    subprocess.run([irid_cli, "render", "oil-slick", "--width", "32", "--height", "24", "--spp", "1",
+                    "-q", "-o", str(png)], check=True, capture_output=True)
+    stored, meta = irid.read_image(png)
+    assert meta["bits"] == 8
+    np.testing.assert_array_equal(np.round(stored * 255), np.round(oil.display * 255))
+
+
+def test_threads_do_not_change_the_image(oil):
+    one = irid.render("oil-slick", threads=1, **SMALL)
+    np.testing.assert_array_equal(one.linear, oil.linear)
+
+
+def test_scene_as_file_and_dict(oil, tmp_path):
+    scene = json.loads((REPO / "scenes" / "oil-slick.json").read_text())
+    from_dict = irid.render(scene, **SMALL)
+    np.testing.assert_array_equal(from_dict.linear, oil.linear)
+    path = tmp_path / "scene.json"
+    path.write_text(json.dumps(scene))
+    np.testing.assert_array_equal(irid.render(path, **SMALL).linear, oil.linear)
+
+
+def test_set_and_sizes():
+    r = irid.render("soap-bubbles", width=40, spp=1, set={"render.path": "spectral", "soap.floor_checker": 0})
+    assert r.linear.shape[1] == 40 and r.linear.shape[0] == 30   # 4:3 kept
+    assert r.stats["width"] == 40
+    seeded = irid.render("oil-slick", seed=7, **SMALL)
+    assert irid.render("oil-slick", seed=7, **SMALL).linear.tobytes() == seeded.linear.tobytes()
+    clipped = irid.render("oil-slick", clip="clamp", **SMALL)
+    np.testing.assert_allclose(clipped.display, irid.convert(np.clip(clipped.linear.astype(np.float64), 0, 1),
+                                                             "srgb-linear", "srgb"), atol=2e-6)
+
+
+def test_morpho_renders():
+    r = irid.render("morpho", width=24, height=18, spp=1)
+    assert np.isfinite(r.linear).all()
+    assert r.xyz[..., 2].max() > 0   # the wing's blue reaches the image
+
+
+@pytest.mark.parametrize("kwargs, error", [
+    (dict(scene="no-such-scene"), KeyError),
+    (dict(scene="missing/scene.json"), OSError),
+    (dict(scene=42), ValueError),
+    (dict(scene="oil-slick", width=0), ValueError),
+    (dict(scene="oil-slick", spp=5000), ValueError),
+    (dict(scene="oil-slick", clip="nope"), KeyError),
+    (dict(scene="oil-slick", set={"oil.k1": "many"}), ValueError),
+    (dict(scene="oil-slick", set={"oil.no_such_key": 1}), ValueError),
+    (dict(scene="oil-slick", set={"oil.k1": float("nan")}), ValueError),
+    (dict(scene={"scene": "oil-slick", "image": {"width": -3}}), ValueError),
+    (dict(scene="oil-slick", threads=-1), ValueError),
+])
+def test_bad_input(kwargs, error):
+    with pytest.raises(error):
+        irid.render(**kwargs)
+
+
+def test_messages_name_the_key():
+    with pytest.raises(ValueError, match="oil.k1"):
+        irid.render("oil-slick", set={"oil.k1": -5}, **SMALL)
+
+
+def test_gallery_rejects_bad_options(tmp_path):
+    with pytest.raises(ValueError):
+        irid.gallery(tmp_path, width=10)
+    (tmp_path / "file").write_text("x")
+    with pytest.raises(OSError):
+        irid.gallery(tmp_path / "file" / "sub", width=32, height=24, spp=1, figure_width=320)
