@@ -1,5 +1,7 @@
 #include <irid/color/convert.h>
 
+#include "convert_simd.h"
+
 #include <irid/color/illuminant.h>
 #include <irid/color/numeric_table.h>
 #include <irid/color/spaces.h>
@@ -176,15 +178,15 @@ void Converter::convert_span(std::span<const T> in, std::span<T> out) const {
                                        ? Mat3::identity()
                                        : m_from_native * m_from.rgb->to_xyz_matrix();
         const Mat3 to_lms = oklab_m1 * (m_to_native * source_to_xyz);
-        for (std::size_t i = 0; i < n; ++i) {
-            const Vec3 lms = to_lms * Vec3{static_cast<double>(in[3 * i]),
-                                           static_cast<double>(in[3 * i + 1]),
-                                           static_cast<double>(in[3 * i + 2])};
-            const Vec3 lab = oklab_m2 * Vec3{std::cbrt(lms[0]), std::cbrt(lms[1]), std::cbrt(lms[2])};
-            out[3 * i] = static_cast<T>(lab[0]);
-            out[3 * i + 1] = static_cast<T>(lab[1]);
-            out[3 * i + 2] = static_cast<T>(lab[2]);
+        double m1[9], m2[9];
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 3; ++c) {
+                m1[3 * r + c] = to_lms.m[r][c];
+                m2[3 * r + c] = oklab_m2.m[r][c];
+            }
         }
+        // In place (out == in) is safe: each block is read whole before it is written.
+        detail::linear_to_oklab_simd(in.data(), out.data(), n, m1, m2);
         return;
     }
     const std::optional<Mat3> m = m_from == m_to ? std::nullopt : linear_matrix();

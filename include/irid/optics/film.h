@@ -109,8 +109,8 @@ public:
     [[nodiscard]] FilmModelKind kind() const noexcept override { return FilmModelKind::exact; }
     [[nodiscard]] bool has_transmittance() const noexcept override { return true; }
     [[nodiscard]] double thickness_nm() const noexcept override { return m_layers.front().thickness_nm; }
-    [[nodiscard]] std::function<Optics(double)> spectrum(double angle_rad,
-                                                         std::optional<double> thickness_nm) const override;
+    [[nodiscard]] std::function<Optics(double)> spectrum(
+        double angle_rad, std::optional<double> thickness_nm = std::nullopt) const override;
     [[nodiscard]] std::unique_ptr<FilmAtAngle> at_angle(double angle_rad) const override;
     void check_work(std::vector<WorkFactor> spectra, bool at_wavelengths,
                     const FilmWorkNames& names = {}) const override;
@@ -139,8 +139,8 @@ public:
                std::optional<bool> phase_change = std::nullopt);
     [[nodiscard]] FilmModelKind kind() const noexcept override { return FilmModelKind::thesis; }
     [[nodiscard]] double thickness_nm() const noexcept override { return m_thickness_nm; }
-    [[nodiscard]] std::function<Optics(double)> spectrum(double angle_rad,
-                                                         std::optional<double> thickness_nm) const override;
+    [[nodiscard]] std::function<Optics(double)> spectrum(
+        double angle_rad, std::optional<double> thickness_nm = std::nullopt) const override;
     [[nodiscard]] std::unique_ptr<FilmAtAngle> at_angle(double angle_rad) const override;
 
     [[nodiscard]] const SingleFilm& film() const noexcept { return m_film; }
@@ -163,8 +163,8 @@ public:
                          std::optional<double> k = std::nullopt);
     [[nodiscard]] FilmModelKind kind() const noexcept override { return FilmModelKind::thesis_multilayer; }
     [[nodiscard]] double thickness_nm() const noexcept override { return m_thickness_nm; }
-    [[nodiscard]] std::function<Optics(double)> spectrum(double angle_rad,
-                                                         std::optional<double> thickness_nm) const override;
+    [[nodiscard]] std::function<Optics(double)> spectrum(
+        double angle_rad, std::optional<double> thickness_nm = std::nullopt) const override;
     [[nodiscard]] std::unique_ptr<FilmAtAngle> at_angle(double angle_rad) const override;
 
     [[nodiscard]] const Material& film() const noexcept { return m_film; }
@@ -188,8 +188,8 @@ public:
     [[nodiscard]] bool has_thickness() const noexcept override { return false; }
     [[nodiscard]] double thickness_nm() const noexcept override { return 0.0; }
     /// The thickness argument is ignored (the wing has no varied thickness).
-    [[nodiscard]] std::function<Optics(double)> spectrum(double angle_rad,
-                                                         std::optional<double> thickness_nm) const override;
+    [[nodiscard]] std::function<Optics(double)> spectrum(
+        double angle_rad, std::optional<double> thickness_nm = std::nullopt) const override;
     [[nodiscard]] std::unique_ptr<FilmAtAngle> at_angle(double angle_rad) const override;
     [[nodiscard]] std::optional<double> effective_thickness_nm(double angle_rad) const override;
     void check_work(std::vector<WorkFactor> spectra, bool at_wavelengths,
