@@ -157,8 +157,7 @@ def _white(white):
         raise ValueError(
             f"white: {white!r} is neither a white point's name nor a chromaticity (x, y)"
         ) from None
-    if not (x > 0 and y > 0 and x + y < 1):
-        raise ValueError(f"white: chromaticity ({x}, {y}) must have x > 0, y > 0 and x + y < 1")
+    _irid.check_white(x, y)   # ValueError unless inside the chromaticity diagram
     return x, y
 
 
@@ -209,6 +208,10 @@ def delta_e(a, b, metric="ciede2000"):
 
     Returns float64 of the broadcast shape without its last axis.
     """
+    for name, v in (("a", a), ("b", b)):
+        if isinstance(v, np.ma.MaskedArray):
+            raise ValueError(f"{name}: a masked array (numpy.ma); irid has no masked operations "
+                             f"and would drop the mask: pass {name}.filled(value) or {name}.data")
     a = np.asarray(a, dtype=np.float64)
     b = np.asarray(b, dtype=np.float64)
     try:
@@ -399,6 +402,9 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
         raise ValueError(f"channels X, Y, Z hold CIE XYZ but source is {source!r}; give "
                          f"source='xyz' or leave it out")
     p = _clip_pipeline(method, source, target, max, white, adaptation, inverse, params, image=True)
+    if isinstance(pixels, np.ma.MaskedArray):
+        raise ValueError("pixels: a masked array (numpy.ma); irid has no masked operations and "
+                         "would drop the mask: pass pixels.filled(value) or pixels.data")
     out = np.array(pixels, dtype=np.float32, order="C", copy=True)
     if out.ndim != 3:
         raise ValueError(f"pixels: shape {out.shape}; expected (height, width, channels)")
@@ -431,7 +437,10 @@ def write_image(path, array, channels=None, color_space="", description="", bits
     array: (height, width) or (height, width, channels), any real dtype (written from float32).
     channels: names, default Y / Y,A / R,G,B / R,G,B,A by count.
     color_space, description: stored as attributes (irid:ColorSpace, ImageDescription).
-    compression: OpenImageIO's name for the format (e.g. "zip", "piz" for EXR), or its default.
+    compression: OpenImageIO's name for the format, or "" for its default. EXR: none, rle, zip,
+        zips, piz, pxr24, b44, b44a, dwaa, dwab (zip, zips, dwaa and dwab take a level, "dwaa:45");
+        TIFF: none, lzw, zip, packbits, jpeg (lossy); PNG: default, filtered, huffman, rle, fixed
+        (zlib's strategies). Another name raises KeyError listing these.
 
     The file appears only when complete and never replaces what is not a regular file. Raises
     ValueError for a bad array or channel list, OSError when the file cannot be written.
@@ -439,9 +448,38 @@ def write_image(path, array, channels=None, color_space="", description="", bits
     if isinstance(bits, bool) or bits not in (8, 16):
         raise ValueError(f"bits: {bits!r}; valid values are 8 and 16")
     names = [_text(c, "channels") for c in (channels or [])]
+    _check_compression(_text(compression, "compression"), _path(path))
     return _irid.write_image(_path(path), array, names, _text(color_space, "color_space"),
                              _text(description, "description"), int(bits),
                              _text(compression, "compression"))
+
+
+# The compressions OpenImageIO 2.4 writes per format (its OpenEXR, TIFF and PNG plugins), and
+# those that take ":LEVEL".
+_COMPRESSIONS = {
+    ".exr": ("none", "rle", "zip", "zips", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"),
+    ".tif": ("none", "lzw", "zip", "packbits", "jpeg"),
+    ".png": ("default", "filtered", "huffman", "rle", "fixed"),
+}
+_COMPRESSIONS[".tiff"] = _COMPRESSIONS[".tif"]
+_LEVELLED = ("zip", "zips", "dwaa", "dwab")
+
+
+def _check_compression(compression, path):
+    if not compression:
+        return
+    ext = os.path.splitext(path)[1].lower()
+    valid = _COMPRESSIONS.get(ext)
+    if valid is None:
+        return   # not a format irid writes: write_image names the formats it does
+    name, _, level = compression.partition(":")
+    if name in valid and not level:
+        return
+    if ext == ".exr" and name in _LEVELLED and level.isdigit() and 0 < len(level) <= 4:
+        return
+    levelled = ", ".join(f"{n}:LEVEL" for n in _LEVELLED) if ext == ".exr" else ""
+    raise KeyError(f"compression {compression!r} is unknown for {ext} files; valid: "
+                   f"{', '.join(valid)}{', ' + levelled if levelled else ''}")
 
 
 def clip_report(set="all", target="srgb", min_seconds=0.2):

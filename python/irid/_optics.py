@@ -60,8 +60,17 @@ def _optional_number(value, what):
     return None if value is None else _number(value, what)
 
 
+def _plain(**arrays):
+    """Refuses masked arrays (numpy.ma), whose mask an element-wise call would drop."""
+    for name, value in arrays.items():
+        if isinstance(value, np.ma.MaskedArray):
+            raise ValueError(f"{name}: a masked array (numpy.ma); irid has no masked operations "
+                             f"and would drop the mask: pass {name}.filled(value) or {name}.data")
+
+
 def _radians(angle, what="angle"):
     """Degrees in [0, 90) → radians, element-wise, with the message the library would give."""
+    _plain(**{what: angle})
     a = np.asarray(angle, dtype=np.float64)
     bad = ~(np.isfinite(a) & (a >= 0) & (a < 90))
     if bad.any():
@@ -193,6 +202,7 @@ class Film:
             thickness = self._model.thickness
         elif not self._model.has_thickness:
             raise ValueError("thickness: the Morpho wing has none (d1 and d2 set it)")
+        _plain(thickness=thickness)
         t = np.asarray(thickness, dtype=np.float64)
         a = _radians(angle)
         t, a = np.broadcast_arrays(t, a)
@@ -268,23 +278,27 @@ def film_color(stack, thickness=None, angle=0.0, illuminant="D65", observer="cie
 
 def thesis_phase_change(n_ambient, n_film, n_substrate):
     """Eq. 19–20: whether the film's two beams differ by a π phase change (eq. 21) or not."""
+    _plain(n_ambient=n_ambient, n_film=n_film, n_substrate=n_substrate)
     return _irid.thesis_phase_change(n_ambient, n_film, n_substrate)
 
 
 def thesis_film_reflectance(wavelength, thickness, n_film=1.33, phase_change=True, k=1.0):
     """Eq. 21 (phase_change) or eq. 22 at normal incidence: ρ = [K cos(2πtn/λ + π/2)]² or
     [K cos(2πtn/λ)]²; with t = t′ (eq. 24) and n = 1 the reflectance at any angle."""
+    _plain(wavelength=wavelength, thickness=thickness, n_film=n_film, phase_change=phase_change, k=k)
     return _irid.thesis_film_reflectance(wavelength, thickness, n_film, phase_change, k)
 
 
 def thesis_film_angle(angle, n_film, n_ambient=1.0):
     """Snell's law for eq. 23: the angle inside the film [degrees] for ``angle`` in the ambient
     (90 beyond the critical angle)."""
+    _plain(n_film=n_film, n_ambient=n_ambient)
     return np.degrees(_irid.thesis_film_angle(_radians(angle), n_film, n_ambient))
 
 
 def thesis_effective_thickness(thickness, n_film, angle_in_film):
     """Eq. 23–24: t′ = t n cos θ [nm], θ the angle inside the film [degrees, 0–90]."""
+    _plain(thickness=thickness, n_film=n_film, angle_in_film=angle_in_film)
     a = np.asarray(angle_in_film, dtype=np.float64)
     if not (np.isfinite(a) & (a >= 0) & (a <= 90)).all():
         raise ValueError("angle_in_film: must be finite degrees in [0, 90]")
@@ -294,16 +308,19 @@ def thesis_effective_thickness(thickness, n_film, angle_in_film):
 def thesis_multilayer_reflectance(wavelength, effective_thickness, periods=12, k=1.0):
     """Eq. 25 (after Anderson 1942): I = ½K (sin(2π(l+1)t/λ) / sin(2πt/λ))², l = periods, t the
     effective thickness of a period (eq. 26 or 29); its limit where sin(2πt/λ) = 0."""
+    _plain(wavelength=wavelength, effective_thickness=effective_thickness, periods=periods, k=k)
     return _irid.thesis_multilayer_reflectance(wavelength, effective_thickness, periods, k)
 
 
 def thesis_multilayer_effective_thickness(thickness, n, angle):
     """Eq. 26: t_θ = t (n² − sin²θ)^½ [nm], θ the angle in air [degrees]."""
+    _plain(thickness=thickness, n=n)
     return _irid.thesis_multilayer_effective_thickness(thickness, n, _radians(angle))
 
 
 def morpho_effective_thickness(angle, d1=150.0, d2=50.0, n=1.56):
     """Eq. 29: t_θ = d₁ cos θ + d₂ (n² − sin²θ)^½ [nm], θ the angle in air [degrees]."""
+    _plain(d1=d1, d2=d2, n=n)
     return _irid.morpho_effective_thickness(_radians(angle), d1, d2, n)
 
 

@@ -33,10 +33,28 @@ inline std::string shape_text(const py::array& a) {
     return s + (a.ndim() == 1 ? ",)" : ")");
 }
 
+/// Throws ValueError for a masked array (numpy.ma.MaskedArray, an ndarray subclass): its mask
+/// would be silently dropped, since irid has no masked operations. A plain ndarray costs one
+/// pointer comparison.
+inline void refuse_masked(const py::handle& value, const char* what) {
+    const auto* type = reinterpret_cast<const PyObject*>(Py_TYPE(value.ptr()));
+    if (type == reinterpret_cast<const PyObject*>(py::detail::npy_api::get().PyArray_Type_)) return;
+    if (!py::isinstance<py::array>(value)) return;  // lists and scalars have no mask
+    // Held for the life of the process: no destructor after the interpreter has finished.
+    static const py::object* const masked =
+        new py::object(py::module_::import("numpy.ma").attr("MaskedArray"));
+    if (PyObject_IsInstance(value.ptr(), masked->ptr()) == 1) {
+        throw py::value_error(std::string(what) +
+                              ": a masked array (numpy.ma); irid has no masked operations and "
+                              "would drop the mask: pass a.filled(value) or a.data");
+    }
+}
+
 /// `value` as a numpy array of numbers (bool, integer, unsigned or float; lists are converted).
 /// Throws ValueError naming `what` for anything else (strings, objects, complex, dates), and
 /// lets a MemoryError through.
 inline py::array numeric_array(const py::handle& value, const char* what) {
+    refuse_masked(value, what);
     if (py::isinstance<py::array>(value)) {
         py::array a = py::reinterpret_borrow<py::array>(value);
         const char kind = a.dtype().kind();
@@ -85,6 +103,7 @@ template <class T>
 py::array_t<T, py::array::c_style | py::array::forcecast> contiguous_of(const py::handle& value,
                                                                          const char* what) {
     using Contiguous = py::array_t<T, py::array::c_style | py::array::forcecast>;
+    refuse_masked(value, what);
     if (py::isinstance<py::array_t<T>>(value) &&
         (py::reinterpret_borrow<py::array>(value).flags() & py::array::c_style)) {
         return py::reinterpret_borrow<Contiguous>(value);  // already right: no call into numpy

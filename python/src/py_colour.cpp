@@ -67,6 +67,7 @@ void add_colour(py::module_& m) {
         return py::make_tuple(w.x, w.y);
     });
     m.def("white_point_names", &white_point_names);
+    m.def("check_white", [](double x, double y) { check_white_chromaticity({x, y}, "white"); });
     m.def(
         "convert",
         [](const py::handle& a, const std::string& source, const std::string& target, double wx,

@@ -4,6 +4,7 @@
 
 #include <irid/color/illuminant.h>
 #include <irid/color/numeric_table.h>
+#include <irid/color/observer.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/text_input.h>
@@ -112,6 +113,7 @@ Converter::Converter(const ColorSpace& from, const ColorSpace& to, const Xy& whi
     if ((from.is_rgb() && from.rgb == nullptr) || (to.is_rgb() && to.rgb == nullptr)) {
         throw Error("converter: an RGB family needs its RGB space");
     }
+    check_white_chromaticity(white, "reference white");
 }
 
 std::optional<Xy> Converter::native_white(const ColorSpace& s) {

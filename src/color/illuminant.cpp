@@ -1,4 +1,5 @@
 #include <irid/color/illuminant.h>
+#include <irid/color/observer.h>
 #include <irid/color/numeric_table.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
@@ -164,9 +165,8 @@ Xy white_point_xy(std::string_view name) {
     Xy xy;
     if (comma != std::string::npos && parse_double(std::string_view(n).substr(0, comma), xy.x) &&
         parse_double(std::string_view(n).substr(comma + 1), xy.y)) {
-        if (xy.x > 0.0 && xy.y > 0.0 && xy.x + xy.y < 1.0) return xy;
-        throw Error("white point '" + std::string(name) +
-                    "': chromaticity must have x > 0, y > 0 and x + y < 1");
+        check_white_chromaticity(xy, "white point '" + std::string(name) + "'");
+        return xy;
     }
     throw UnknownNameError("unknown white point " + quote_untrusted(name) +
                                "; valid: D65, D50, D55, D75, A, C, E, or x,y (for example "

@@ -58,6 +58,31 @@ Xy spectral_locus_xy(double lambda_nm, Observer observer) {
     return xyz_to_xy(monochromatic_xyz(lambda_nm, observer));
 }
 
+bool is_real_chromaticity(const Xy& p) noexcept {
+    // The locus as a closed polygon, made once (crossing-number test: W. R. Franklin's rule).
+    static const std::vector<Xy> locus = [] {
+        std::vector<Xy> v;
+        for (int nm = 380; nm <= 700; ++nm) v.push_back(xyz_to_xy(monochromatic_xyz(nm, Observer::cie1931_2deg)));
+        return v;
+    }();
+    if (!(std::isfinite(p.x) && std::isfinite(p.y))) return false;
+    bool inside = false;
+    for (std::size_t i = 0, j = locus.size() - 1; i < locus.size(); j = i++) {
+        const Xy& a = locus[i];
+        const Xy& b = locus[j];
+        if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
+    }
+    return inside;
+}
+
+void check_white_chromaticity(const Xy& xy, std::string_view what) {
+    if (!is_real_chromaticity(xy)) {
+        throw Error(std::string(what) + " (" + format_shortest(xy.x) + ", " + format_shortest(xy.y) +
+                    ") lies outside the chromaticity diagram (the CIE 1931 spectral locus and the "
+                    "purple line): no light has that colour");
+    }
+}
+
 void check_sample_wavelengths(std::span<const double> w) {
     if (w.size() < 2) {
         throw Error("a spectrum needs at least two wavelengths, found " + std::to_string(w.size()));

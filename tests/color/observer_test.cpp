@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace irid {
 namespace {
@@ -139,6 +140,33 @@ TEST(Observer, ParsesNamesAndListsThemOnError) {
         FAIL();
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("cie1931, cie1964"), std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace irid
+
+namespace irid {
+namespace {
+
+// The diagram of real colours: the CIE 1931 locus at 380 nm is (0.1741, 0.0050) and at 700 nm
+// (0.7347, 0.2653) (CIE 015:2018 Table 11); the purple line between them passes y = 0.0635 at
+// x = 0.3, and 520 nm is at (0.0743, 0.8338).
+TEST(Chromaticity, RealColoursOnly) {
+    for (const Xy& w : {Xy{0.3127, 0.3290}, Xy{1.0 / 3, 1.0 / 3}, Xy{0.44757, 0.40745}, Xy{0.3, 0.1},
+                        Xy{0.1, 0.7}, Xy{0.6, 0.35}}) {
+        EXPECT_TRUE(is_real_chromaticity(w)) << w.x << ", " << w.y;
+        EXPECT_NO_THROW(check_white_chromaticity(w));
+    }
+    for (const Xy& w : {Xy{0.3, 0.01}, Xy{0.05, 0.05}, Xy{0.9, 0.05}, Xy{0.05, 0.9}, Xy{0.5, 1e-300},
+                        Xy{1e-300, 0.5}, Xy{0.2, 0.9}, Xy{std::nan(""), 0.3}}) {
+        EXPECT_FALSE(is_real_chromaticity(w)) << w.x << ", " << w.y;
+    }
+    try {
+        check_white_chromaticity({0.3, 0.01}, "--white");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("--white (0.3, 0.01) lies outside"), std::string::npos) << e.what();
     }
 }
 

@@ -96,6 +96,8 @@ def test_errors_raise_the_documented_exceptions():
                  lambda: irid.clip(a, "aces-rgc", power="x"),
                  lambda: irid.convert([[0.3, 0.0, 1.0]], "xyy", "xyz"),
                  lambda: irid.convert(a, "srgb", "lab", white=(0.9, 0.9)),
+                 lambda: irid.convert(a, "srgb", "lab", white=(0.3, 0.01)),   # below the purple line
+                 lambda: irid.clip(a, "oklab", white=(0.5, 1e-300)),
                  lambda: irid.blackbody(-5.0),
                  lambda: irid.illuminant("D", cct=100.0)]:
         with pytest.raises(ValueError):
@@ -173,3 +175,17 @@ def test_refusals_of_non_numbers_and_bad_arguments():
     with pytest.raises(ValueError, match="overlap"):
         irid.convert(overlap[:30].reshape(10, 3), "xyz", "srgb-linear",
                      out=overlap[3:33].reshape(10, 3))
+
+
+def test_masked_arrays_are_refused_not_unmasked(tmp_path):
+    """A numpy.ma array would lose its mask in any call: each entry point refuses it."""
+    a = np.ma.masked_array(np.full((4, 3), 0.5), mask=[[0, 0, 0], [1, 0, 0], [0, 0, 0], [0, 0, 0]])
+    calls = [lambda: irid.clip(a, "smits"), lambda: irid.convert(a, "srgb-linear", "oklab"),
+             lambda: irid.delta_e(a, a), lambda: irid.write_image(tmp_path / "m.exr", a.reshape(2, 2, 3)),
+             lambda: irid.clip_image(a.reshape(2, 2, 3), ["R", "G", "B"], "smits"),
+             lambda: irid.Film.exact([("water", 100)]).reflectance(np.ma.masked_array([500.0], mask=[1]))]
+    for call in calls:
+        with pytest.raises(ValueError, match="masked"):
+            call()
+    # Its data, as the message says, is accepted.
+    assert irid.clip(a.data, "smits").shape == (4, 3)

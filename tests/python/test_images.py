@@ -87,3 +87,27 @@ def test_refusals(tmp_path):
     with pytest.raises(ValueError, match="NUL"):
         irid.write_image(tmp_path / "x.exr", a, description="x\0y")
     assert not (tmp_path / "x.png").exists() and not (tmp_path / "x.exr").exists()
+
+
+def test_compression_is_written_and_unknown_names_refused(tmp_path):
+    """OpenImageIO's iinfo (openimageio-tools, from scripts/install-deps) reads back what each
+    file says it is compressed with; the pixels survive the lossless ones."""
+    import shutil
+    import subprocess
+
+    iinfo = shutil.which("iinfo")
+    assert iinfo, "iinfo (openimageio-tools) is missing: run scripts/install-deps"
+    a = np.random.default_rng(2).uniform(0, 1, (16, 16, 3)).astype(np.float32)
+    for name, compression, expect in [("a.exr", "piz", '"piz"'), ("b.exr", "dwaa:45", '"dwaa"'),
+                                      ("c.tif", "lzw", '"lzw"'), ("d.exr", "", '"zip"')]:
+        irid.write_image(tmp_path / name, a, compression=compression, bits=16)
+        info = subprocess.run([iinfo, "-v", str(tmp_path / name)], capture_output=True, text=True,
+                              check=True).stdout
+        line = next(l for l in info.splitlines() if l.strip().startswith("compression:"))
+        assert expect in line, (name, line)
+    np.testing.assert_array_equal(irid.read_image(tmp_path / "a.exr")[0], a)
+    for name, compression in [("e.exr", "bogus"), ("f.exr", "piz:3"), ("g.png", "zip"),
+                              ("h.tif", "piz"), ("i.exr", "dwaa:x")]:
+        with pytest.raises(KeyError, match="valid"):
+            irid.write_image(tmp_path / name, a, compression=compression)
+        assert not (tmp_path / name).exists()

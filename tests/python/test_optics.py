@@ -288,3 +288,12 @@ def test_film_pickles_for_workers():
     f = irid.Film.thesis("water", 300.0, k=0.5)
     g = pickle.loads(pickle.dumps(f))
     np.testing.assert_array_equal(g.reflectance(LAMBDA)[0], f.reflectance(LAMBDA)[0])
+
+
+def test_masked_arrays_refused():
+    m = np.ma.masked_array([100.0, 200.0], mask=[0, 1])
+    for call in (lambda: irid.Film.exact([("water", 0)]).color(m),
+                 lambda: irid.thesis_film_reflectance(500.0, m),
+                 lambda: irid.morpho_effective_thickness(np.ma.masked_array([0.0], mask=[1]))):
+        with pytest.raises(ValueError, match="masked"):
+            call()

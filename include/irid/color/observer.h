@@ -36,6 +36,15 @@ struct ColorMatchingFunctions {
 /// Chromaticity of the spectral locus at lambda_nm.
 [[nodiscard]] Xy spectral_locus_xy(double lambda_nm, Observer observer = Observer::cie1931_2deg);
 
+/// Whether a chromaticity is that of some light: strictly inside the CIE 1931 spectral locus
+/// (380–700 nm at 1 nm; beyond 700 nm the locus hardly moves and its tabulated tail wavers)
+/// closed by the purple line.
+[[nodiscard]] bool is_real_chromaticity(const Xy& xy) noexcept;
+/// Throws irid::Error naming `what` unless is_real_chromaticity: a reference white outside the
+/// diagram has no light and its XYZ makes CIELAB, CIELUV and the adaptations meaningless (a
+/// white with y near 0 has an infinite X and Z).
+void check_white_chromaticity(const Xy& xy, std::string_view what = "white");
+
 /// Luminous efficacy for absolute photometry [lm/W]: 683, the SI K_cd (definition of the candela,
 /// 683 lm/W at 540e12 Hz), which the issue and most software use. CIE 015:2018's K_m for the
 /// tabulated V(λ) is 683.002 lm/W (683 × V(555)/V(555.016)), 3e-6 larger.
