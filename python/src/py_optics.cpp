@@ -109,9 +109,11 @@ void add_optics(py::module_& m) {
         .def(py::init([](const std::string& text) { return parse_material(text); }), py::arg("text"),
              "A material by name ('water', 'silver', ...), a constant index ('1.33') or a complex one "
              "('1.5+0.02i', k >= 0 absorbing).")
-        .def_static("constant", &Material::constant, py::arg("name"), py::arg("n"), py::arg("k") = 0.0)
+        .def_static("constant", &Material::constant, py::arg("name"), py::arg("n"), py::arg("k") = 0.0,
+                    "A wavelength-independent index n + ik (n > 0, k >= 0 absorbing).")
         .def_static("cauchy", &Material::cauchy, py::arg("name"), py::arg("a"), py::arg("b_um2"),
-                    py::arg("c_um4") = 0.0)
+                    py::arg("c_um4") = 0.0,
+                    "Cauchy's n(λ) = A + B/λ² + C/λ⁴, λ in µm, k = 0 (n > 0 over 360-830 nm).")
         .def_static(
             "sellmeier",
             [](std::string name, const std::vector<std::pair<double, double>>& terms) {
@@ -119,7 +121,9 @@ void add_optics(py::module_& m) {
                 for (const auto& [b, c] : terms) t.push_back({b, c});
                 return Material::sellmeier(std::move(name), std::move(t));
             },
-            py::arg("name"), py::arg("terms"))
+            py::arg("name"), py::arg("terms"),
+            "Sellmeier's n²(λ) = 1 + Σ B λ²/(λ² − C), λ in µm: terms [(B, C µm²), ...], poles outside "
+            "360-830 nm.")
         .def_static(
             "read_csv",
             [](const std::string& path, const std::string& name) {
@@ -136,9 +140,12 @@ void add_optics(py::module_& m) {
                     throw FileError(what);
                 }
             },
-            py::arg("path"), py::arg("name") = "")
-        .def_property_readonly("name", &Material::name)
-        .def_property_readonly("is_lossless", &Material::is_lossless)
+            py::arg("path"), py::arg("name") = "",
+            "Measured n, k from CSV lines wavelength_nm,n,k (a header line is skipped), linear between "
+            "samples; named after the file unless a name is given. OSError for a file that cannot be "
+            "read, ValueError naming the line for a bad one.")
+        .def_property_readonly("name", &Material::name, "The material's name.")
+        .def_property_readonly("is_lossless", &Material::is_lossless, "Whether k = 0 at every wavelength.")
         .def(
             "index",
             [](const Material& mat, const py::handle& wavelengths) {
@@ -156,9 +163,9 @@ void add_optics(py::module_& m) {
                 }
                 return out;
             },
-            py::arg("wavelengths"))
+            py::arg("wavelengths"), "The complex index N = n + ik at each wavelength [nm], an array of their shape.")
         .def("__repr__", [](const Material& mat) { return "irid.Material('" + mat.name() + "')"; });
-    m.def("material_names", &material_names);
+    m.def("material_names", &material_names, "The named materials.");
 
     // --- Films -----------------------------------------------------------------------------
     py::class_<FilmModel, FilmPtr>(m, "FilmModel")
@@ -319,7 +326,8 @@ void add_optics(py::module_& m) {
     });
 
     // --- Colour tables --------------------------------------------------------------------
-    py::class_<FilmColorTable>(m, "FilmColorTable")
+    py::class_<FilmColorTable>(m, "FilmColorTable",
+                               "Thickness → colour every step nm, linear between (Film.color_table).")
         .def_property_readonly("min_thickness", &FilmColorTable::min_nm)
         .def_property_readonly("max_thickness", &FilmColorTable::max_nm)
         .def_property_readonly("step", &FilmColorTable::step_nm)
@@ -351,7 +359,8 @@ void add_optics(py::module_& m) {
                 }
                 return py::make_tuple(xyz, rgb);
             },
-            py::arg("thickness"));
+            py::arg("thickness"),
+            "(xyz, rgb) at each thickness [nm], arrays (n, 3); thicknesses beyond the table clamp to its ends.");
     m.def(
         "film_color_table",
         [](const FilmModel& film, double min_nm, double max_nm, double step_nm, double angle_rad,
@@ -368,7 +377,8 @@ void add_optics(py::module_& m) {
         py::arg("film"), py::arg("min_thickness"), py::arg("max_thickness"), py::arg("step"), py::arg("angle_rad"),
         py::arg("illuminant"), py::arg("observer"), py::arg("rgb"));
 
-    py::class_<FilmColorTable2D>(m, "FilmColorTable2D")
+    py::class_<FilmColorTable2D>(m, "FilmColorTable2D",
+                                 "Thickness × cos θ → colour, bilinear (Film.color_table_2d).")
         .def_property_readonly("thickness_step", &FilmColorTable2D::thickness_step_nm)
         .def_property_readonly("thickness_count", &FilmColorTable2D::thickness_count)
         .def_property_readonly("cos_count", &FilmColorTable2D::cos_count)
@@ -390,7 +400,8 @@ void add_optics(py::module_& m) {
                 }
                 return py::make_tuple(xyz, rgb);
             },
-            py::arg("thickness"), py::arg("cos_theta"));
+            py::arg("thickness"), py::arg("cos_theta"),
+            "(xyz, rgb) at each (thickness [nm], cos θ) pair, both clamped to the table.");
     m.def(
         "film_color_table_2d",
         [](const FilmModel& film, double max_nm, double step_nm, double max_angle_rad, int cos_steps,
@@ -417,7 +428,8 @@ void add_optics(py::module_& m) {
         py::arg("film"), py::arg("max_thickness"), py::arg("step"), py::arg("max_angle_rad"), py::arg("cos_steps"),
         py::arg("illuminant"), py::arg("observer"), py::arg("rgb"));
 
-    py::class_<ThesisFilmTable>(m, "ThesisFilmTable")
+    py::class_<ThesisFilmTable>(m, "ThesisFilmTable",
+                                "The thesis' §3.3 table: effective thickness t′ → XYZ (thesis_film_table).")
         .def_property_readonly("phase_change", &ThesisFilmTable::phase_change)
         .def_property_readonly("step", &ThesisFilmTable::step_nm)
         .def_property_readonly("max_effective_thickness", &ThesisFilmTable::max_effective_thickness_nm)
@@ -433,7 +445,8 @@ void add_optics(py::module_& m) {
                 for (std::size_t i = 0; i < t.size(); ++i) put(xyz.mutable_data() + 3 * i, table.at(t[i], k));
                 return xyz;
             },
-            py::arg("effective_thickness"), py::arg("k"));
+            py::arg("effective_thickness"), py::arg("k"),
+            "XYZ (n, 3) at each effective thickness t′ [nm] for amplitude factor K (colours scale by K²).");
     m.def(
         "thesis_film_table",
         [](bool phase_change, double max_nm, double step_nm, const std::string& illuminant,

@@ -2,36 +2,21 @@
 
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
+#include <irid/parallel.h>
 #include <irid/text_input.h>
-
-#include <tbb/blocked_range.h>
-#include <tbb/info.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <vector>
 
 namespace irid {
 namespace {
 
-/// body(begin, end) over [0, n) on up to `threads` threads (0: all).
-template <class Body>
-void for_pixels(std::size_t n, int threads, const Body& body) {
-    const int hardware = tbb::info::default_concurrency();
-    const int workers = threads <= 0 ? hardware : std::min(threads, hardware);
-    constexpr std::size_t grain = 1 << 14;
-    if (workers <= 1 || n <= grain) {
-        body(std::size_t{0}, n);
-        return;
-    }
-    tbb::task_arena arena(workers);
-    arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
-                          [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
-    });
+/// body(begin, end) over [0, n) pixels on up to `threads` threads (0: all), in pieces of 16384.
+void for_pixels(std::size_t n, int threads, const std::function<void(std::size_t, std::size_t)>& body) {
+    parallel_ranges(n, threads, body, std::size_t{1} << 14);
 }
 
 std::string joined(const std::vector<std::string>& names) {

@@ -2,6 +2,7 @@
 
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
+#include <irid/parallel.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>
@@ -29,12 +30,15 @@ GamutClipper make_clipper(ClipMethod method, const ColorSpace& to, const ClipPip
     return GamutClipper(method, Gamut(*to.rgb, o.max), o.settings);
 }
 
-/// Runs body(begin, end) over [0, n) in pieces of at least `grain` on up to `threads` threads
-/// (0: all; never more than the hardware has, which oneTBB would refuse). Exceptions propagate
-/// (oneTBB rethrows them).
-void parallel_ranges(std::size_t n, int threads,
-                     const std::function<void(std::size_t, std::size_t)>& body,
-                     std::size_t grain = 1) {
+/// parallel_ranges over colours, in pieces of at least 16384 (a piece is cheap work).
+void for_colours(std::size_t n, int threads, const std::function<void(std::size_t, std::size_t)>& body) {
+    parallel_ranges(n, threads, body, std::size_t{1} << 14);
+}
+
+}  // namespace
+
+void parallel_ranges(std::size_t n, int threads, const std::function<void(std::size_t, std::size_t)>& body,
+                     std::size_t grain) {
     const int hardware = tbb::info::default_concurrency();
     const int workers = threads <= 0 ? hardware : std::min(threads, hardware);
     if (workers <= 1 || n <= grain) {
@@ -47,13 +51,6 @@ void parallel_ranges(std::size_t n, int threads,
                           [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
     });
 }
-
-/// parallel_ranges over colours, in pieces of at least 16384 (a piece is cheap work).
-void for_colours(std::size_t n, int threads, const std::function<void(std::size_t, std::size_t)>& body) {
-    parallel_ranges(n, threads, body, std::size_t{1} << 14);
-}
-
-}  // namespace
 
 ClipPipeline::ClipPipeline(ClipMethod method, const ColorSpace& from, const ColorSpace& to,
                            const ClipPipelineOptions& options)

@@ -189,3 +189,20 @@ def test_masked_arrays_are_refused_not_unmasked(tmp_path):
             call()
     # Its data, as the message says, is accepted.
     assert irid.clip(a.data, "smits").shape == (4, 3)
+
+
+def test_every_public_name_is_documented_and_stubbed():
+    """Every name in irid.__all__ has a docstring (its methods too) and a line in the .pyi."""
+    import inspect
+    import pathlib
+
+    stub = (pathlib.Path(irid.__file__).parent / "__init__.pyi").read_text()
+    for name in irid.__all__:
+        obj = getattr(irid, name)
+        assert (obj.__doc__ or "").strip(), name
+        assert f"def {name}(" in stub or f"class {name}" in stub, name
+        if inspect.isclass(obj):
+            for attr, member in vars(obj).items():
+                if attr.startswith("_") or not callable(getattr(obj, attr, None)):
+                    continue
+                assert (getattr(obj, attr).__doc__ or "").strip(), f"{name}.{attr}"
