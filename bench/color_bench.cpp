@@ -12,10 +12,12 @@
 //                      and writing 24 bytes per colour, the floor of any conversion.
 //   BM_LinearSrgbToXyz irid::srgb().to_xyz, a 3x3 matrix product: the cheapest real
 //                      conversion (no transcendental functions, no branches).
+//   BM_MemcpyDram      memcpy of 8 M colours (192 MB), beside the batch converter on them.
 //   BM_SpectrumDotFloor three dot products of a 471-sample reflectance with weight vectors
 //                      S(λ)·x̄(λ)/k, S(λ)·ȳ(λ)/k, S(λ)·z̄(λ)/k precomputed once: the arithmetic
 //                      floor of spectrum -> XYZ (3 × 471 multiply-adds, no normalisation).
 
+#include <irid/color/convert.h>
 #include <irid/color/difference.h>
 #include <irid/color/illuminant.h>
 #include <irid/color/observer.h>
@@ -166,6 +168,34 @@ void BM_XyzToOklab(benchmark::State& state) {
     run_batch(state, in, out, [](const irid::Xyz& c) { return irid::xyz_to_oklab(c); });
 }
 BENCHMARK(BM_XyzToOklab);
+
+// The batch converter (irid/color/convert.h): linear sRGB → Oklab on every SIMD lane
+// (src/color/convert_simd.cpp), on the L2-resident batch and on 8 M colours (192 MB of float64,
+// six times a 32 MiB L3), beside memcpy of the same bytes: BM_XyzToOklab above is the scalar
+// path (std::cbrt) on the same kind of input.
+void converter_batch(benchmark::State& state, std::size_t colours, bool copy) {
+    const std::vector<irid::Rgb> rgb = random_linear_rgb(colours);
+    std::vector<double> in(3 * colours), out(3 * colours);
+    for (std::size_t i = 0; i < colours; ++i) {
+        in[3 * i] = rgb[i].r, in[3 * i + 1] = rgb[i].g, in[3 * i + 2] = rgb[i].b;
+    }
+    const irid::Converter c(irid::color_space("srgb-linear"), irid::color_space("oklab"));
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(in.data());
+        if (copy) std::memcpy(out.data(), in.data(), in.size() * sizeof(double));
+        else c.convert(in, out);
+        benchmark::ClobberMemory();
+    }
+    const auto iterations = static_cast<std::int64_t>(state.iterations());
+    state.SetItemsProcessed(iterations * static_cast<std::int64_t>(colours));
+    state.SetBytesProcessed(iterations * static_cast<std::int64_t>(in.size() * sizeof(double)));
+}
+void BM_ConverterOklabBatch(benchmark::State& state) { converter_batch(state, batch_size, false); }
+BENCHMARK(BM_ConverterOklabBatch);
+void BM_ConverterOklabBatchDram(benchmark::State& state) { converter_batch(state, std::size_t{1} << 23, false); }
+BENCHMARK(BM_ConverterOklabBatchDram)->Unit(benchmark::kMillisecond);
+void BM_MemcpyDram(benchmark::State& state) { converter_batch(state, std::size_t{1} << 23, true); }
+BENCHMARK(BM_MemcpyDram)->Unit(benchmark::kMillisecond);
 
 void BM_DeltaE2000(benchmark::State& state) {
     const std::vector<LabPair> in = random_lab_pairs(batch_size);

@@ -66,6 +66,14 @@ bool is_real_chromaticity(const Xy& p) noexcept {
         return v;
     }();
     if (!(std::isfinite(p.x) && std::isfinite(p.y))) return false;
+    // Inside the triangle of the sRGB primaries (ITU-R BT.709), which the locus contains: every
+    // common white, decided by three signs instead of the polygon's 321 edges.
+    const auto side = [&](double ax, double ay, double bx, double by) {
+        return (bx - ax) * (p.y - ay) - (by - ay) * (p.x - ax);
+    };
+    if (side(0.64, 0.33, 0.30, 0.60) > 0 && side(0.30, 0.60, 0.15, 0.06) > 0 && side(0.15, 0.06, 0.64, 0.33) > 0) {
+        return true;
+    }
     bool inside = false;
     for (std::size_t i = 0, j = locus.size() - 1; i < locus.size(); j = i++) {
         const Xy& a = locus[i];
