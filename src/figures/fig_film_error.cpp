@@ -5,6 +5,7 @@
 #include <irid/color/difference.h>
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
+#include <irid/optics/film.h>
 #include <irid/optics/material.h>
 
 #include "figure_support.h"
@@ -12,6 +13,7 @@
 #include "plot.h"
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -42,14 +44,16 @@ FilmErrorGrid film_error_grid(const SingleFilm& film, const Colorimeter& colorim
     for (double angle = 0.0; angle <= max_angle_deg + 1e-9; angle += angle_step_deg) g.angle_deg.push_back(angle);
 
     g.delta_e.reserve(g.thickness_nm.size() * g.angle_deg.size());
+    const ExactFilm exact_model(film.ambient, {{film.film, 0.0}}, film.substrate);
+    const ThesisFilm thesis_model(film, 0.0, k);
     for (const double angle : g.angle_deg) {
         const double theta = angle * std::numbers::pi / 180.0;
-        const PreparedFilm prepared(film, theta);
+        // Both models through irid/optics/film.h, each prepared once per angle.
+        const std::unique_ptr<FilmAtAngle> exact_row = exact_model.at_angle(theta);
+        const std::unique_ptr<FilmAtAngle> thesis_row = thesis_model.at_angle(theta);
         for (const double t : g.thickness_nm) {
-            const Xyz exact = prepared.color(t, colorimeter).xyz;
-            const Xyz thesis = colorimeter.xyz_of([&](double lambda) {
-                return thesis_single_film_reflectance(film, t, lambda, theta, k, std::nullopt);
-            });
+            const Xyz exact = exact_row->color(t, colorimeter).xyz;
+            const Xyz thesis = thesis_row->color(t, colorimeter).xyz;
             const double d = delta_e_2000_of(colorimeter, thesis, exact);
             if (d > g.max) {
                 g.max = d;

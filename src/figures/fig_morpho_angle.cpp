@@ -4,6 +4,7 @@
 
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
+#include <irid/optics/film.h>
 #include <irid/optics/material.h>
 #include <irid/optics/multilayer.h>
 
@@ -41,6 +42,25 @@ FilmStack morpho_exact_stack(const MorphoParameters& wing) {
     return FilmStack(air, std::move(layers), air);
 }
 
+namespace {
+
+/// The exact wing as a film model (irid/optics/film.h); no mullions: a bare interface.
+ExactFilm morpho_exact_film(const MorphoParameters& wing) {
+    const FilmStack s = morpho_exact_stack(wing);
+    std::vector<Layer> layers = s.layers();
+    if (layers.empty()) layers.push_back({s.ambient(), 0.0});
+    return ExactFilm(s.ambient(), std::move(layers), s.substrate());
+}
+
+/// A model's reflectance on the 1 nm grid at an angle (its own thickness).
+DenseSpectrum spectrum_of(const FilmModel& film, double theta_rad) {
+    DenseValues r;
+    film.at_angle(theta_rad)->reflectance(film.thickness_nm(), r);
+    return DenseSpectrum(r);
+}
+
+}  // namespace
+
 MorphoAngleData morpho_angle_data(double step_deg, Brightness brightness, const Colorimeter& colorimeter,
                                   int exact_blend_samples) {
     const double cells = 90.0 / step_deg;
@@ -63,22 +83,23 @@ MorphoAngleData morpho_angle_data(double step_deg, Brightness brightness, const 
     MorphoRowData exact_blended{"exact stack, blend", {}, {}, {}};
 
     // The exact blend: the same varied thickness and range as the thesis' blend.
-    std::vector<FilmStack> blend_stacks;
+    std::vector<ExactFilm> blend_stacks;
     for (int i = 0; i < exact_blend_samples; ++i) {
         MorphoParameters w = d.wing;
         const double v = d.blend.min_nm + (d.blend.max_nm - d.blend.min_nm) * i / (exact_blend_samples - 1.0);
         (d.blend.varies == MorphoBlendThickness::d1 ? w.d1_nm : w.d2_nm) = v;
-        blend_stacks.push_back(morpho_exact_stack(w));
+        blend_stacks.push_back(morpho_exact_film(w));
     }
-    const FilmStack stack = morpho_exact_stack(d.wing);
+    const ExactFilm stack = morpho_exact_film(d.wing);
+    const MorphoFilm thesis_wing(d.wing), thesis_blend(d.wing, d.blend);
 
     for (const double angle : d.angle_deg) {
         const double theta = angle * std::numbers::pi / 180.0;
-        const DenseSpectrum a = morpho_spectrum(d.wing, angle);
-        const DenseSpectrum b = morpho_blend_spectrum(d.wing, d.blend, angle);
-        const DenseSpectrum c = exact_reflectance_spectrum(stack, theta);
+        const DenseSpectrum a = spectrum_of(thesis_wing, theta);
+        const DenseSpectrum b = spectrum_of(thesis_blend, theta);
+        const DenseSpectrum c = spectrum_of(stack, theta);
         DenseSpectrum e(0.0);
-        for (const FilmStack& s : blend_stacks) e += exact_reflectance_spectrum(s, theta);
+        for (const ExactFilm& s : blend_stacks) e += spectrum_of(s, theta);
         e *= 1.0 / exact_blend_samples;
         const std::pair<MorphoRowData*, const DenseSpectrum*> pairs[] = {
             {&single, &a}, {&blended, &b}, {&exact, &c}, {&exact_blended, &e}};

@@ -5,6 +5,7 @@
 #include <irid/color/difference.h>
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
+#include <irid/optics/film.h>
 #include <irid/optics/material.h>
 
 #include "figure_support.h"
@@ -12,6 +13,7 @@
 #include "plot.h"
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <string>
 
@@ -111,14 +113,13 @@ NewtonData newton_data(double max_thickness_nm, double step_nm, double reference
         strip.n_at_reference = index_at(*spec.film);
         strip.boundaries_nm = order_boundaries_nm(strip.n_at_reference, strip.phase_change, reference_nm, max_thickness_nm);
         const double k = k_matched ? thesis_matched_k(*spec.film) : 1.0;
-        if (spec.exact) {
-            const PreparedFilm prepared(*spec.film, 0.0);
-            for (const double t : d.thickness_nm) strip.raw.push_back(prepared.color(t, colorimeter).xyz);
-        } else {
-            for (const double t : d.thickness_nm) {
-                strip.raw.push_back(colorimeter.xyz(thesis_single_film_spectrum(*spec.film, t, 0.0, k, strip.phase_change)));
-            }
-        }
+        // Through the film models (irid/optics/film.h), prepared once at normal incidence.
+        const std::unique_ptr<FilmModel> model =
+            spec.exact ? std::unique_ptr<FilmModel>(std::make_unique<ExactFilm>(
+                             spec.film->ambient, std::vector<Layer>{{spec.film->film, 0.0}}, spec.film->substrate))
+                       : std::make_unique<ThesisFilm>(*spec.film, 0.0, k, strip.phase_change);
+        const std::unique_ptr<FilmAtAngle> row = model->at_angle(0.0);
+        for (const double t : d.thickness_nm) strip.raw.push_back(row->color(t, colorimeter).xyz);
         strip.shown = strip.raw;
         normalise_brightness(strip.shown, brightness);
         d.strips.push_back(std::move(strip));
