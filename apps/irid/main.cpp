@@ -2,6 +2,7 @@
 #include "cli_common.h"
 
 #include <irid/error.h>
+#include <irid/exchange/lut.h>
 #include <irid/text_input.h>
 
 #include <fmt/core.h>
@@ -34,7 +35,7 @@ bool flush_standard_output() {
 int main(int argc, char** argv) {
     using namespace irid::cli;
     CLI::App app{"irid: interference colours and gamut clipping (after Smits 1990)", "irid"};
-    app.set_version_flag("--version", "irid 0.1.0");
+    app.set_version_flag("--version", "irid " + std::string(irid::irid_version()));
     app.require_subcommand(1);
     // On a usage error, say what was wrong, then the chosen command's options and their valid
     // values, so the message always lists what is allowed.
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
     add_film_error_command(app, runner);
     add_clip_command(app, runner);
     add_clip_report_command(app, runner);
+    add_lut_command(app, runner);
     add_figure_command(app, runner);
     add_render_command(app, runner);
     add_gallery_command(app, runner);

@@ -9,6 +9,7 @@
 // the clip → encoded when --to is encoded, for CSV, or when OUT is PNG or TIFF), the image's
 // channels and alpha too (irid/exchange/image_clip.h); this file parses and prints.
 #include "../cli_common.h"
+#include "../pipeline_options.h"
 #include "../spaces.h"
 
 #include <irid/color.h>
@@ -33,45 +34,14 @@
 namespace irid::cli {
 namespace {
 
-struct ClipOptions {
-    std::string method;
-    std::string from = "srgb-linear";
-    std::string to = "srgb-linear";
-    double max = 1.0;
-    std::string white = "D65";
-    std::string adaptation = "bradford";
-    int threads = 0;
+struct ClipOptions : PipelineArgs {
     int bits = 8;
     bool count_ops = false;
-    std::vector<std::string> params;
-    bool inverse = false;
     std::string in;
     std::string out;
     const CLI::Option* bits_option = nullptr;
     const CLI::Option* from_option = nullptr;
 };
-
-std::string method_names() {
-    std::vector<std::string> names;
-    for (const ClipMethod m : clip_methods()) names.emplace_back(clip_method_name(m));
-    return join(names);
-}
-
-/// "aces-rgc: limit-cyan (default 1.147), ...; oklab-adaptive: ..." for --help.
-std::string parameter_help() {
-    std::string out;
-    for (const ClipMethod m : clip_methods()) {
-        std::string list;
-        for (const ClipParameterInfo& p : clip_parameters(m)) {
-            list += (list.empty() ? "" : ", ") + std::string(p.name) + " (default " +
-                    (p.boolean ? std::string(p.default_value != 0.0 ? "true" : "false")
-                               : format_shortest(p.default_value)) +
-                    ")";
-        }
-        if (!list.empty()) out += (out.empty() ? "" : "; ") + std::string(clip_method_name(m)) + ": " + list;
-    }
-    return out;
-}
 
 // --- Table 1 ---------------------------------------------------------------------------------
 
@@ -122,70 +92,13 @@ int run_count_ops() {
 
 // --- the pipeline ----------------------------------------------------------------------------
 
-/// The method's settings from --param and --inverse. An image gets aces-rgc's final clip unless
-/// --param clip= says otherwise: a file cannot hold what a display cannot show.
-ClipSettings make_settings(const ClipOptions& o, ClipMethod method, bool image) {
-    ClipSettings settings;
-    settings.inverse = o.inverse;
-    bool clip_given = false;
-    for (const std::string& p : o.params) {
-        try {
-            settings.set(p);
-        } catch (const Error& e) {
-            throw UsageError(std::string("--param: ") + e.what());
-        }
-        clip_given = clip_given || p.starts_with("clip=");
-    }
-    if (image && method == ClipMethod::aces_rgc && !clip_given) settings.set("clip", 1.0);
-    return settings;
-}
-
-/// "--param k=v ..." of the method's settings, for an image's description.
-std::string describe_settings(const GamutClipper& clipper) {
-    std::string out;
-    for (const auto& [name, value] : clipper.parameters()) {
-        out += " --param " + name + "=" + format_shortest(value);
-    }
-    if (clipper.inverse()) out += " --inverse";
-    return out;
-}
-
-/// The options checked and turned into the library's pipeline; every refusal is a usage error.
+/// The pipeline of the options; an image gets aces-rgc's final clip unless --param clip= says
+/// otherwise: a file cannot hold what a display cannot show.
 ClipPipeline make_pipeline(const ClipOptions& o, bool image) {
     if (o.method.empty()) {
-        throw UsageError("--method is required (or --count-ops); valid methods: " + method_names());
+        throw UsageError("--method is required (or --count-ops); valid methods: " + clip_method_names());
     }
-    ClipMethod method{};
-    try {
-        method = parse_clip_method(o.method);
-    } catch (const Error& e) {
-        throw UsageError(std::string("--method: ") + e.what());
-    }
-    const Space from = parse_space(o.from, "--from");
-    const Space to = [&] {
-        const std::string valid = "; the destination gamut is an RGB space's cube, valid names: " +
-                                  join(rgb_space_names());
-        const std::optional<Space> s = find_color_space(o.to);
-        if (!s) throw UsageError("unknown space '" + o.to + "' for --to" + valid);
-        if (!is_rgb(*s)) throw UsageError("--to '" + o.to + "' is not an RGB space" + valid);
-        return *s;
-    }();
-    ClipPipelineOptions options;
-    options.white = parse_white(o.white);
-    options.adaptation = parse_adaptation(o.adaptation);
-    if (o.threads < 0)
-        throw UsageError("--threads " + std::to_string(o.threads) + " must be >= 0 (0: all)");
-    if (!(std::isfinite(o.max) && o.max > 0.0 && o.max <= 1e6)) {
-        throw UsageError("--max " + format_shortest(o.max) +
-                         ": the peak must be finite, > 0 and <= 1e6");
-    }
-    options.max = o.max;
-    options.settings = make_settings(o, method, image);
-    try {
-        return ClipPipeline(method, from, to, options);
-    } catch (const Error& e) {
-        throw UsageError(e.what());
-    }
+    return make_clip_pipeline(o, image);
 }
 
 // --- CSV -------------------------------------------------------------------------------------
@@ -281,7 +194,7 @@ int run_clip_image(const ClipOptions& o, const ClipPipeline& p) {
     image.color_space = written;
     image.description = fmt::format(
         "irid clip --method {}{} --from {} --to {} --max {}; colour space {} ({})", o.method,
-        describe_settings(p.clipper()), channels.xyz ? std::string("xyz") : o.from, o.to,
+        describe_clip_settings(p.clipper()), channels.xyz ? std::string("xyz") : o.from, o.to,
         format_shortest(max), written, encoded_out ? "encoded" : "linear");
     io::write_image(o.out, image, io::ImageEncoding{.bits = bits, .compression = {}});
     return exit_success;
@@ -306,9 +219,9 @@ void add_clip_command(CLI::App& app, Runner& runner) {
         "clip",
         "Bring out-of-gamut colours into an RGB space's gamut: CSV triples on stdin (R,G,B out), "
         "or an image IN → OUT");
-    cmd->add_option("--method", o->method, "Clipping method: " + method_names());
+    cmd->add_option("--method", o->method, "Clipping method: " + clip_method_names());
     cmd->add_option("--param", o->params,
-                    "A method's parameter, name=value (repeatable): " + parameter_help() +
+                    "A method's parameter, name=value (repeatable): " + clip_parameter_help() +
                         ". Images get aces-rgc's clip=true unless given")
         ->allow_extra_args(false);  // one name=value per --param; IN and OUT stay positional
     cmd->add_flag("--inverse", o->inverse,

@@ -1,0 +1,165 @@
+// irid lut: a clip method (or compression) baked as a 3D LUT for OpenColorIO, DaVinci Resolve,
+// Nuke and ffmpeg.
+//
+//   irid lut --method M [--param k=v] --from SPACE --to SPACE [--size N] [--shaper log2] -o FILE
+//
+// The pipeline is `irid clip`'s (irid/gamut/pipeline.h); the baking and the formats are the
+// library's (irid/exchange/lut.h); this file parses.
+#include "../cli_common.h"
+#include "../pipeline_options.h"
+#include "../spaces.h"
+
+#include <irid/color/numeric_table.h>
+#include <irid/error.h>
+#include <irid/exchange/lut.h>
+#include <irid/io/output_file.h>
+#include <irid/text_input.h>
+
+#include <charconv>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace irid::cli {
+namespace {
+
+struct LutOptions : PipelineArgs {
+    int size = 33;
+    std::string shaper = "none";
+    std::string domain;
+    int stops = 14;
+    std::string out;
+    const CLI::Option* stops_option = nullptr;
+};
+
+std::optional<double> parse_number(std::string_view s) {
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+    return v;
+}
+
+LutDomain make_domain(const LutOptions& o) {
+    LutDomain d;
+    if (o.shaper == "log2") {
+        d.shaper = LutShaper::log2;
+    } else if (o.shaper != "none") {
+        throw UsageError("--shaper '" + o.shaper + "': valid shapers: none, log2");
+    }
+    if (o.stops_option->count() > 0 && d.shaper != LutShaper::log2) {
+        throw UsageError("--stops applies to --shaper log2");
+    }
+    d.stops = o.stops;
+    d.max = o.max;
+    if (!o.domain.empty()) {
+        const std::size_t comma = o.domain.find(',');
+        const std::optional<double> lo =
+            comma == std::string::npos ? std::nullopt : parse_number(o.domain.substr(0, comma));
+        const std::optional<double> hi =
+            comma == std::string::npos ? std::nullopt : parse_number(o.domain.substr(comma + 1));
+        if (!lo || !hi) {
+            throw UsageError("--domain " + quote_untrusted(o.domain) +
+                             ": give the inputs covered as LO,HI (two numbers, e.g. 0,16)");
+        }
+        d.min = *lo;
+        d.max = *hi;
+    }
+    try {
+        check_lut_domain(d);
+    } catch (const Error& e) {
+        throw UsageError(std::string("--domain/--stops: ") + e.what());
+    }
+    return d;
+}
+
+int run_lut(const LutOptions& o) {
+    if (o.out.empty()) throw UsageError("-o FILE is required (.cube, .clf or .spi3d)");
+    LutFormat format{};
+    LutDomain domain;
+    try {
+        format = lut_format_for(o.out);
+    } catch (const Error& e) {
+        throw UsageError(std::string("-o: ") + e.what());
+    }
+    domain = make_domain(o);
+    try {
+        check_lut_format(format, domain);
+    } catch (const Error& e) {
+        throw UsageError(o.out + ": " + e.what());
+    }
+    const ClipPipeline pipeline = make_clip_pipeline(o, false);
+    const Space from = pipeline.from();
+    if (!from.is_rgb() && from.family != Family::xyz) {
+        throw UsageError("--from " + o.from +
+                         ": a LUT's input must be an RGB space or xyz (one range on every axis)");
+    }
+    (void)io::check_output_path(o.out);  // refuse a directory before baking
+    const Lut3D lut = bake_lut(pipeline, o.size, domain, o.threads);
+    write_lut(o.out, lut);
+    return exit_success;
+}
+
+}  // namespace
+
+void add_lut_command(CLI::App& app, Runner& runner) {
+    auto o = std::make_shared<LutOptions>();
+    o->to = "srgb";
+    CLI::App* cmd = app.add_subcommand(
+        "lut",
+        "Bake a clip method (or compression) as a 3D LUT for OpenColorIO, DaVinci Resolve, Nuke "
+        "and ffmpeg; the format is FILE's extension");
+    cmd->add_option("--method", o->method, "Clipping method: " + clip_method_names());
+    cmd->add_option("--param", o->params,
+                    "A method's parameter, name=value (repeatable): " + clip_parameter_help())
+        ->allow_extra_args(false);
+    cmd->add_flag("--inverse", o->inverse,
+                  "Bake the method's inverse (aces-rgc, smits-soft: undo a compression)");
+    cmd->add_option("--from", o->from,
+                    "The LUT's input space: an RGB space (" + join(rgb_space_names()) +
+                        ") or xyz")
+        ->capture_default_str();
+    cmd->add_option("--to", o->to,
+                    "The LUT's output space, whose linear cube [0, max]^3 is the gamut: values "
+                    "encoded with its transfer function for an encoded name (srgb), linear for "
+                    "a -linear name")
+        ->capture_default_str();
+    cmd->add_option("--max", o->max, "Peak of the destination gamut (HDR), > 0")->capture_default_str();
+    cmd->add_option("--size", o->size,
+                    "Nodes per axis, " + std::to_string(lut_min_size) + " to " +
+                        std::to_string(lut_max_size) + " (17, 33 and 65 are usual)")
+        ->check(whole_number_in(lut_min_size, lut_max_size))
+        ->capture_default_str();
+    cmd->add_option("--shaper", o->shaper,
+                    "none: nodes uniform over the domain; log2: nodes uniform in stops below the "
+                    "domain's top (.clf only; for linear and HDR sources)")
+        ->capture_default_str();
+    cmd->add_option("--domain", o->domain,
+                    "The inputs covered on every axis, LO,HI (default 0,MAX); inputs beyond are "
+                    "clamped. .spi3d covers 0,1 only");
+    o->stops_option = cmd->add_option("--stops", o->stops,
+                                      "Stops below the domain's top that the log2 shaper spans "
+                                      "(1 to 40)")
+                          ->capture_default_str();
+    cmd->add_option(
+           "--white", o->white,
+           "Reference white of an xyz input: " + join(white_point_names()) + " or x,y")
+        ->capture_default_str();
+    cmd->add_option("--adaptation", o->adaptation,
+                    "Chromatic adaptation where whites differ: bradford, cat02, von-kries, none")
+        ->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Threads (0: all)")->capture_default_str();
+    cmd->add_option("-o,--output", o->out,
+                    "The LUT file: .cube (Resolve/Adobe; ffmpeg, OCIO), .clf (Academy/ASC CLF; "
+                    "OCIO), .spi3d (Sony; OCIO)");
+    cmd->footer(
+        "\nFormats and the inputs they cover:\n"
+        "  .cube   a uniform range: [0, 1], or another with LUT_3D_INPUT_RANGE (Resolve, OCIO;\n"
+        "          ffmpeg ignores the range and takes [0, 1])\n"
+        "  .clf    a uniform range or the log2 shaper, any range; tetrahedral interpolation\n"
+        "  .spi3d  [0, 1] only\n"
+        "Example: irid lut --method oklab-cusp --from acescg --to srgb --shaper log2 --domain "
+        "0,16 -o look.clf");
+    cmd->callback([o, &runner] { runner = [o] { return run_lut(*o); }; });
+}
+
+}  // namespace irid::cli
