@@ -56,9 +56,11 @@ __all__ = [
     "FilmColorTable",
     "FilmColorTable2D",
     "FilmColors",
+    "Lut",
     "Material",
     "Render",
     "ThesisFilmTable",
+    "bake_lut",
     "blackbody",
     "clip",
     "clip_image",
@@ -373,6 +375,43 @@ def _clip_pipeline(method, source, target, max, white, adaptation, inverse, para
     return _pipeline(method, source, target, float(max), _white(white),
                      _name(adaptation, "adaptation"), tuple(sorted(values.items())),
                      _flag(inverse, "inverse"))
+
+Lut = _irid.Lut
+
+
+def bake_lut(method, source="srgb-linear", target="srgb", size=33, shaper="none", domain=None,
+             stops=14, max=1.0, white="D65", adaptation="bradford", threads=0, inverse=False,
+             **params):
+    """Bakes a clip method as a 3D LUT (what ``irid lut`` writes): a :class:`Lut`.
+
+    method, source, target, max, white, adaptation, inverse, **params: as for :func:`clip`;
+    the output is ``target``'s, encoded for an encoded name ("srgb").
+    size: nodes per axis, 2 to 129 (17, 33, 65 usual).
+    shaper: "none" or "log2" (for linear and HDR sources; only a .clf file can carry it).
+    domain: (lo, hi) covered on every axis, default (0, max). stops: the log2 shaper's span.
+    threads: threads to use, 0 for all.
+
+    ``lut.write(path)`` writes .cube (Resolve/Adobe; ffmpeg, OCIO), .clf (Academy/ASC CLF;
+    OCIO) or .spi3d (Sony; OCIO) by the extension, whole or not at all (OSError when it cannot;
+    ValueError when the format cannot carry the domain: .spi3d is [0, 1] only, .cube has no
+    shaper; KeyError for another extension). ``lut.text(format)`` is the file's text.
+    ``lut.apply(rgb, interpolation="trilinear")`` evaluates the LUT on (..., 3) colours as a
+    client does ("trilinear" or "tetrahedral"; OCIO uses trilinear for .cube and .spi3d, the
+    .clf asks for tetrahedral); it returns float64.
+    Raises KeyError for unknown names and ValueError for bad values.
+    """
+    if target is None:
+        target = "srgb"
+    p = _clip_pipeline(method, source, target, max, white, adaptation, inverse, params)
+    if domain is None:
+        lo, hi = 0.0, float(max)
+    else:
+        try:
+            lo, hi = (float(v) for v in domain)
+        except (TypeError, ValueError):
+            raise ValueError(f"domain: {domain!r}; expected (lo, hi)") from None
+    return _irid.bake_lut(p, _whole(size, "size", 2, 129), _name(shaper, "shaper"), lo, hi,
+                          _whole(stops, "stops", 1, 40), _whole(threads, "threads", 0, 1 << 20))
 
 
 def clip_image(pixels, channels, method, source=None, target=None, premultiplied=False,

@@ -29,6 +29,24 @@ def clip(rgb: _Array, method: str, source: str = "srgb-linear", target: str | No
          max: float = 1.0, white: _White = "D65", adaptation: str = "bradford",
          threads: int = 0, inverse: bool = False, out: np.ndarray | None = None,
          **params: float | bool) -> np.ndarray: ...
+class Lut:
+    size: int
+    shaper: str
+    domain: Tuple[float, float]
+    stops: int
+    title: str
+    source: str
+    target: str
+    table: np.ndarray
+    nodes: np.ndarray
+    def text(self, format: str) -> str: ...
+    def write(self, path: str | Any) -> None: ...
+    def apply(self, colours: _Array, interpolation: str = "trilinear") -> np.ndarray: ...
+
+def bake_lut(method: str, source: str = "srgb-linear", target: str = "srgb", size: int = 33,
+             shaper: str = "none", domain: Tuple[float, float] | None = None, stops: int = 14,
+             max: float = 1.0, white: _White = "D65", adaptation: str = "bradford",
+             threads: int = 0, inverse: bool = False, **params: float | bool) -> Lut: ...
 def read_image(path: str | Any) -> Tuple[np.ndarray, dict[str, Any]]: ...
 def write_image(path: str | Any, array: _Array, channels: Sequence[str] | None = None,
                 color_space: str = "", description: str = "", bits: int = 8,

@@ -15,6 +15,7 @@ namespace irid::python {
 void add_colour(py::module_& m);
 void add_gamut(py::module_& m);
 void add_io(py::module_& m);
+void add_lut(py::module_& m);
 void add_optics(py::module_& m);
 void add_render(py::module_& m);
 }  // namespace irid::python
@@ -35,6 +36,7 @@ PYBIND11_MODULE(_irid, m) {
     irid::python::add_colour(m);
     irid::python::add_gamut(m);
     irid::python::add_io(m);
+    irid::python::add_lut(m);
     irid::python::add_optics(m);
     irid::python::add_render(m);
 }

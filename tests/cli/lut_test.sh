@@ -1,0 +1,135 @@
+#!/usr/bin/env bash
+# The contract of `irid lut`: a clip method baked as a .cube, .clf or .spi3d file (-o FILE, the
+# format by the extension); exit statuses 0, 1 (the file cannot be written) and 2 (usage: the
+# valid values named). Expected files come from closed forms: clamp of a space onto itself is
+# the identity, so its nodes are the node inputs. Whether OpenColorIO and ffmpeg read the files
+# as irid means them is tests/python/test_lut.py's.
+#
+#   bash tests/cli/lut_test.sh <path-to-irid>
+set -u
+
+if [[ $# -ne 1 ]]; then
+    echo "usage: bash $0 <path-to-irid>" >&2
+    exit 2
+fi
+IRID=$1
+# shellcheck source=lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+
+# expect_file_data FILE SKIP WANT: the lines of FILE after the first SKIP are exactly WANT.
+expect_file_data() {
+    local got
+    got=$(tail -n +"$(($2 + 1))" "$1" 2>/dev/null)
+    if [[ $STATUS -eq 0 && $got == "$3" ]]; then pass; else fail "$1 data $(show "$3")" "$(outcome), data $(show "$got")"; fi
+}
+
+# expect_file_line FILE N TEXT: line N of FILE is TEXT.
+expect_file_line() {
+    local got
+    got=$(sed -n "$2p" "$1" 2>/dev/null)
+    if [[ $got == "$3" ]]; then pass; else fail "line $2 of $1: $(show "$3")" "$(show "$got")"; fi
+}
+
+IDENTITY_RED_FASTEST=$'0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1'
+
+# .cube: two comment lines (the title, the spaces), LUT_3D_SIZE, then red fastest.
+run '' lut --method clamp --from srgb-linear --to srgb-linear --size 2 -o "$TMP/id.cube"
+expect_status 0
+expect_empty_stdout
+expect_file_line "$TMP/id.cube" 3 "LUT_3D_SIZE 2"
+expect_file_data "$TMP/id.cube" 3 "$IDENTITY_RED_FASTEST"
+if grep -q "^# irid .* lut --method clamp --from srgb-linear --to srgb-linear --size 2" "$TMP/id.cube"; then
+    pass
+else
+    fail "a title naming the version, method and spaces" "$(head -2 "$TMP/id.cube")"
+fi
+
+# Another range: LUT_3D_INPUT_RANGE ahead of the size; the nodes at 0 and 4 clamp to 0 and 1.
+run '' lut --method clamp --from srgb-linear --to srgb-linear --size 2 --domain 0,4 -o "$TMP/wide.cube"
+expect_status 0
+expect_file_line "$TMP/wide.cube" 3 "LUT_3D_INPUT_RANGE 0 4"
+expect_file_line "$TMP/wide.cube" 4 "LUT_3D_SIZE 2"
+expect_file_data "$TMP/wide.cube" 4 "$IDENTITY_RED_FASTEST"
+
+# .spi3d: explicit indices, the comment after the last entry.
+run '' lut --method clamp --from srgb-linear --to srgb-linear --size 2 -o "$TMP/id.spi3d"
+expect_status 0
+expect_file_line "$TMP/id.spi3d" 1 "SPILUT 1.0"
+expect_file_line "$TMP/id.spi3d" 3 "2 2 2"
+expect_file_line "$TMP/id.spi3d" 5 "1 0 0 1 0 0"
+expect_file_line "$TMP/id.spi3d" 11 "1 1 1 1 1 1"
+
+# .clf: the Range and the log2 shaper ahead of the cube, blue fastest.
+run '' lut --method clamp --from srgb-linear --to srgb-linear --size 2 --shaper log2 --domain 0,16 -o "$TMP/id.clf"
+expect_status 0
+if grep -q 'style="linToLog"' "$TMP/id.clf" && grep -q '<Array dim="2 2 2 3">' "$TMP/id.clf"; then
+    pass
+else
+    fail "a linToLog shaper and a 2x2x2 array" "$(show "$(cat "$TMP/id.clf")")"
+fi
+# The nodes of a log2 shaper over [0, 16] are 0 and 16, clamped to 0 and 1: (0,0,1) second.
+if awk '/<Array/ { on = 1; next } on && n < 2 { print; ++n }' "$TMP/id.clf" | tr '\n' ' ' | grep -qx '0 0 0 0 0 1 '; then
+    pass
+else
+    fail "blue fastest: 0 0 0 then 0 0 1" "$(show "$(cat "$TMP/id.clf")")"
+fi
+
+# Parameters are named in the file.
+run '' lut --method smits-soft --param threshold=0.7 --from rec2020 --to srgb --size 5 -o "$TMP/soft.cube"
+expect_status 0
+if grep -q "threshold=0.7" "$TMP/soft.cube" && grep -q "input: rec2020; output: srgb" "$TMP/soft.cube"; then
+    pass
+else
+    fail "the parameter and both spaces in the comments" "$(head -3 "$TMP/soft.cube")"
+fi
+
+# --- refusals -----------------------------------------------------------------------------
+run '' lut --method smits --size 1 -o "$TMP/x.cube"
+expect_status 2
+expect_stderr_has "2 to 129"
+run '' lut --method smits --size 130 -o "$TMP/x.cube"
+expect_status 2
+run '' lut --method smits -o "$TMP/x.3dl"
+expect_status 2
+expect_stderr_has ".cube"
+run '' lut --method smits
+expect_status 2
+expect_stderr_has "-o FILE"
+run '' lut --method nope -o "$TMP/x.cube"
+expect_status 2
+expect_stderr_has "smits"
+run '' lut --method smits --shaper log2 -o "$TMP/x.cube"
+expect_status 2
+expect_stderr_has ".clf"
+run '' lut --method smits --domain 0,2 -o "$TMP/x.spi3d"
+expect_status 2
+expect_stderr_has "[0, 1]"
+run '' lut --method smits --domain 2,1 -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "min < max"
+run '' lut --method smits --domain 0 -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "LO,HI"
+run '' lut --method smits --stops 8 -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--shaper log2"
+run '' lut --method smits --from lab -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "RGB space or xyz"
+if [[ ! -e $TMP/x.cube && ! -e $TMP/x.clf && ! -e $TMP/x.spi3d ]]; then
+    pass
+else
+    fail "no file after a refusal" "$(ls "$TMP")"
+fi
+
+# A directory is never replaced; a missing folder is named.
+mkdir -p "$TMP/dir.cube"
+run '' lut --method smits -o "$TMP/dir.cube"
+expect_status 1
+[[ -d $TMP/dir.cube ]] && pass || fail "the directory kept" "it is gone"
+run '' lut --method smits -o "$TMP/missing/x.cube"
+expect_status 1
+expect_stderr_has "missing"
+
+echo "$passed passed, $failed failed"
+[[ $failed -eq 0 ]]
