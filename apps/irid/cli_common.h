@@ -38,6 +38,7 @@ void add_film_error_command(CLI::App& app, Runner& runner);
 void add_clip_command(CLI::App& app, Runner& runner);
 void add_clip_report_command(CLI::App& app, Runner& runner);
 void add_lut_command(CLI::App& app, Runner& runner);
+void add_ocio_config_command(CLI::App& app, Runner& runner);
 void add_figure_command(CLI::App& app, Runner& runner);
 void add_render_command(CLI::App& app, Runner& runner);
 void add_gallery_command(CLI::App& app, Runner& runner);

@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
     add_clip_command(app, runner);
     add_clip_report_command(app, runner);
     add_lut_command(app, runner);
+    add_ocio_config_command(app, runner);
     add_figure_command(app, runner);
     add_render_command(app, runner);
     add_gallery_command(app, runner);

@@ -96,6 +96,7 @@ __all__ = [
     "thesis_unit_peak_k",
     "white_point",
     "write_image",
+    "write_ocio_config",
 ]
 
 __version__ = "0.1.0"
@@ -412,6 +413,36 @@ def bake_lut(method, source="srgb-linear", target="srgb", size=33, shaper="none"
             raise ValueError(f"domain: {domain!r}; expected (lo, hi)") from None
     return _irid.bake_lut(p, _whole(size, "size", 2, 129), _name(shaper, "shaper"), lo, hi,
                           _whole(stops, "stops", 1, 40), _whole(threads, "threads", 0, 1 << 20))
+
+
+def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None, size=33,
+                      adaptation="bradford", threads=0):
+    """Writes an OpenColorIO 2 config offering the clip methods as looks (``irid ocio-config``).
+
+    dir: the folder (created if missing): config.ocio and luts/irid-METHOD.clf.
+    source: the scene's RGB space, the config's reference. display: the display's RGB space,
+        whose cube is the gamut; its colour space is one matrix from the source and its transfer
+        function as an OCIO transform.
+    methods: the methods offered (default: all of :func:`clip_methods`), each a look
+        "irid-METHOD" and a view METHOD on the display "DISPLAY display", beside a view
+        "unclipped". size: the LUTs' nodes per axis (a log2 shaper over [0, 16] for a linear
+        source, uniform over [0, 1] for an encoded one).
+
+    Returns the path of config.ocio. Raises KeyError for unknown names, ValueError for bad
+    values (a space that is not RGB, the source as display), OSError when a file cannot be
+    written.
+    """
+    names = list(_names(methods, "methods")) if methods is not None else []
+    return _irid.write_ocio_config(_path(dir), _name(source, "source"), _name(display, "display"),
+                                   names, _whole(size, "size", 2, 129),
+                                   _name(adaptation, "adaptation"),
+                                   _whole(threads, "threads", 0, 1 << 20))
+
+
+def _names(values, what):
+    if isinstance(values, str):
+        raise ValueError(f"{what}: give a list of names, not one string")
+    return [_name(v, what) for v in values]
 
 
 def clip_image(pixels, channels, method, source=None, target=None, premultiplied=False,

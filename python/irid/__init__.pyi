@@ -47,6 +47,9 @@ def bake_lut(method: str, source: str = "srgb-linear", target: str = "srgb", siz
              shaper: str = "none", domain: Tuple[float, float] | None = None, stops: int = 14,
              max: float = 1.0, white: _White = "D65", adaptation: str = "bradford",
              threads: int = 0, inverse: bool = False, **params: float | bool) -> Lut: ...
+def write_ocio_config(dir: str | Any, source: str = "acescg-linear", display: str = "srgb",
+                      methods: Sequence[str] | None = None, size: int = 33,
+                      adaptation: str = "bradford", threads: int = 0) -> str: ...
 def read_image(path: str | Any) -> Tuple[np.ndarray, dict[str, Any]]: ...
 def write_image(path: str | Any, array: _Array, channels: Sequence[str] | None = None,
                 color_space: str = "", description: str = "", bits: int = 8,

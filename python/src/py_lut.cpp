@@ -6,9 +6,13 @@
 
 #include <irid/error.h>
 #include <irid/exchange/lut.h>
+#include <irid/exchange/ocio_config.h>
+#include <irid/color/adaptation.h>
+#include <irid/gamut/clip.h>
 #include <irid/gamut/pipeline.h>
 #include <irid/io/output_file.h>
 
+#include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include <filesystem>
@@ -117,6 +121,28 @@ nodes: the input value of each node along an axis (float64, size).)")
         },
         py::arg("pipeline"), py::arg("size"), py::arg("shaper"), py::arg("lo"), py::arg("hi"),
         py::arg("stops"), py::arg("threads"));
+    m.def(
+        "write_ocio_config",
+        [](const std::filesystem::path& dir, const std::string& source, const std::string& display,
+           const std::vector<std::string>& methods, int size, const std::string& adaptation, int threads) {
+            OcioConfigOptions o;
+            o.source = color_space(source);
+            o.display = color_space(display);
+            for (const std::string& name : methods) o.methods.push_back(parse_clip_method(name));
+            o.size = size;
+            o.adaptation = parse_chromatic_adaptation(adaptation);
+            o.threads = threads;
+            py::gil_scoped_release release;
+            const OcioConfig config = make_ocio_config(o);
+            try {
+                write_ocio_config(dir, config);
+            } catch (const Error& e) {
+                throw FileError(e.what());
+            }
+            return (dir / "config.ocio").string();
+        },
+        py::arg("dir"), py::arg("source"), py::arg("display"), py::arg("methods"), py::arg("size"),
+        py::arg("adaptation"), py::arg("threads"));
     m.def("lut_format_interpolation",
           [](const std::string& format) {
               return std::string(lut_interpolation_name(lut_format_interpolation(lut_format_for("lut." + format))));

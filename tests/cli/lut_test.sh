@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The contract of `irid lut`: a clip method baked as a .cube, .clf or .spi3d file (-o FILE, the
+# The contract of `irid lut` and `irid ocio-config`: a clip method baked as a .cube, .clf or .spi3d file (-o FILE, the
 # format by the extension); exit statuses 0, 1 (the file cannot be written) and 2 (usage: the
 # valid values named). Expected files come from closed forms: clamp of a space onto itself is
 # the identity, so its nodes are the node inputs. Whether OpenColorIO and ffmpeg read the files
@@ -130,6 +130,31 @@ expect_status 1
 run '' lut --method smits -o "$TMP/missing/x.cube"
 expect_status 1
 expect_stderr_has "missing"
+
+# --- irid ocio-config ----------------------------------------------------------------------
+run '' ocio-config --methods smits,aces-rgc --size 5 -o "$TMP/cfg"
+expect_status 0
+expect_stdout_has "2 looks"
+[[ -f $TMP/cfg/config.ocio && -f $TMP/cfg/luts/irid-smits.clf && -f $TMP/cfg/luts/irid-aces-rgc.clf ]] &&
+    pass || fail "config.ocio and two LUTs" "$(ls -R "$TMP/cfg" 2>&1)"
+grep -q "looks: irid-aces-rgc" "$TMP/cfg/config.ocio" && pass || fail "a view with the look" "$(cat "$TMP/cfg/config.ocio")"
+run '' ocio-config
+expect_status 2
+expect_stderr_has "-o DIR"
+run '' ocio-config --from lab -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "valid RGB spaces"
+run '' ocio-config --methods smits,nope -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "nope"
+run '' ocio-config --from srgb --to srgb -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "one space"
+printf x >"$TMP/plain"
+run '' ocio-config -o "$TMP/plain"
+expect_status 2
+expect_stderr_has "not a folder"
+[[ ! -e $TMP/cfg2 ]] && pass || fail "no folder after a refusal" "$(ls "$TMP")"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -1,10 +1,12 @@
 #include <irid/color/convert.h>
 #include <irid/error.h>
 #include <irid/exchange/lut.h>
+#include <irid/exchange/ocio_config.h>
 #include <irid/gamut/pipeline.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -274,6 +276,40 @@ TEST(LutFile, WriteLutWritesTheTextAndNeverReplacesADirectory) {
     EXPECT_THROW(write_lut(dir / "taken.cube", lut), Error);
     EXPECT_TRUE(std::filesystem::is_directory(dir / "taken.cube"));
     std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace irid
+
+namespace irid {
+namespace {
+
+TEST(OcioConfig, LooksReturnToTheSourceSpace) {
+    // srgb-linear to the srgb display with clamp: the look's LUT is the clamp itself, back in
+    // srgb-linear (one space, so no matrix), on a log2 shaper over [0, 16].
+    OcioConfigOptions o;
+    o.source = color_space("srgb-linear");
+    o.display = color_space("srgb");
+    o.methods = {ClipMethod::clamp};
+    o.size = 9;
+    const OcioConfig c = make_ocio_config(o);
+    ASSERT_EQ(c.luts.size(), 1u);
+    EXPECT_EQ(c.luts[0].first, "luts/irid-clamp.clf");
+    const Lut3D& lut = c.luts[0].second;
+    EXPECT_EQ(lut.domain.shaper, LutShaper::log2);
+    EXPECT_EQ(lut.destination, "srgb-linear");
+    for (int i = 0; i < 9; ++i) {
+        EXPECT_NEAR(lut.values[3 * static_cast<std::size_t>(i)], std::min(lut.node(i), 1.0), 1e-6) << i;
+    }
+    EXPECT_NE(c.config.find("process_space: srgb-linear"), std::string::npos);
+    EXPECT_NE(c.config.find("ExponentWithLinearTransform> {gamma: [2.4, 2.4, 2.4, 1], offset: "
+                            "[0.055, 0.055, 0.055, 0], direction: inverse}"),
+              std::string::npos)
+        << c.config;
+    o.display = o.source;
+    EXPECT_THROW((void)make_ocio_config(o), Error);
+    o.display = color_space("lab");
+    EXPECT_THROW((void)make_ocio_config(o), Error);
 }
 
 }  // namespace

@@ -1,0 +1,104 @@
+// irid ocio-config: an OpenColorIO config offering the clip methods as looks, LUTs beside it.
+//
+//   irid ocio-config -o DIR [--from SPACE] [--to SPACE] [--methods M,M...] [--size N]
+//
+// The config and its LUTs are the library's (irid/exchange/ocio_config.h); this file parses.
+#include "../cli_common.h"
+#include "../pipeline_options.h"
+#include "../spaces.h"
+
+#include <irid/color/adaptation.h>
+#include <irid/color/convert.h>
+#include <irid/error.h>
+#include <irid/exchange/lut.h>
+#include <irid/exchange/ocio_config.h>
+#include <irid/gamut/clip.h>
+#include <irid/text_input.h>
+
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace irid::cli {
+namespace {
+
+struct OcioConfigArgs {
+    std::string out;
+    std::string from = "acescg-linear";
+    std::string to = "srgb";
+    std::string methods;
+    int size = 33;
+    std::string adaptation = "bradford";
+    int threads = 0;
+};
+
+ColorSpace rgb_space_option(const std::string& option, const std::string& name) {
+    const std::optional<ColorSpace> s = find_color_space(name);
+    if (!s || !s->is_rgb()) {
+        throw UsageError(option + " " + quote_untrusted(name) + ": valid RGB spaces: " + join(rgb_space_names()));
+    }
+    return *s;
+}
+
+int run_ocio_config(const OcioConfigArgs& a) {
+    if (a.out.empty()) throw UsageError("-o DIR is required (the folder of config.ocio and luts/)");
+    OcioConfigOptions o;
+    o.source = rgb_space_option("--from", a.from);
+    o.display = rgb_space_option("--to", a.to);
+    if (color_space_name(o.source) == color_space_name(o.display)) {
+        throw UsageError("--from and --to are one space (" + a.from + "): nothing to clip");
+    }
+    o.size = a.size;
+    o.threads = a.threads;
+    try {
+        o.adaptation = parse_chromatic_adaptation(a.adaptation);
+        std::size_t start = 0;
+        while (!a.methods.empty() && start <= a.methods.size()) {
+            const std::size_t comma = std::min(a.methods.find(',', start), a.methods.size());
+            o.methods.push_back(parse_clip_method(a.methods.substr(start, comma - start)));
+            start = comma + 1;
+        }
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+    if (std::filesystem::exists(a.out) && !std::filesystem::is_directory(a.out)) {
+        throw UsageError("-o " + quote_untrusted(a.out, 200) + " exists and is not a folder");
+    }
+    const OcioConfig config = make_ocio_config(o);
+    write_ocio_config(a.out, config);
+    fmt::print("{}/config.ocio: {} looks on the display '{} display' ({} LUTs in {}/luts)\n", a.out,
+               config.luts.size(), a.to, config.luts.size(), a.out);
+    return exit_success;
+}
+
+}  // namespace
+
+void add_ocio_config_command(CLI::App& app, Runner& runner) {
+    auto a = std::make_shared<OcioConfigArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "ocio-config",
+        "Write an OpenColorIO config (DIR/config.ocio) that offers the clip methods as looks and "
+        "views, their LUTs in DIR/luts");
+    cmd->add_option("-o,--output", a->out, "The folder (created if missing)");
+    cmd->add_option("--from", a->from, "The scene's space, the config's reference: " + join(rgb_space_names()))
+        ->capture_default_str();
+    cmd->add_option("--to", a->to, "The display's space, whose cube is the gamut")->capture_default_str();
+    cmd->add_option("--methods", a->methods,
+                    "The methods offered, comma-separated (default: all): " + clip_method_names());
+    cmd->add_option("--size", a->size, "The LUTs' nodes per axis (a log2 shaper over [0, 16] for a "
+                                       "linear source, [0, 1] otherwise)")
+        ->check(whole_number_in(lut_min_size, lut_max_size))
+        ->capture_default_str();
+    cmd->add_option("--adaptation", a->adaptation,
+                    "Chromatic adaptation where whites differ: bradford, cat02, von-kries, none")
+        ->capture_default_str();
+    cmd->add_option("--threads", a->threads, "Threads (0: all)")->capture_default_str();
+    cmd->footer("\nExample: irid ocio-config --from acescg-linear --to srgb -o irid-ocio\n"
+                "  then: ociocheck --iconfig irid-ocio/config.ocio");
+    cmd->callback([a, &runner] { runner = [a] { return run_ocio_config(*a); }; });
+}
+
+}  // namespace irid::cli
