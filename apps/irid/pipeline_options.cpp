@@ -61,7 +61,7 @@ ClipSettings make_settings(const PipelineArgs& o, ClipMethod method, bool final_
 
 }  // namespace
 
-ClipPipeline make_clip_pipeline(const PipelineArgs& o, bool final_clip) {
+ClipPipeline make_clip_pipeline(const PipelineArgs& o, bool final_clip, const ColorSpace* from_file) {
     if (o.method.empty()) throw UsageError("--method is required; valid methods: " + clip_method_names());
     ClipMethod method{};
     try {
@@ -69,7 +69,7 @@ ClipPipeline make_clip_pipeline(const PipelineArgs& o, bool final_clip) {
     } catch (const Error& e) {
         throw UsageError(std::string("--method: ") + e.what());
     }
-    const Space from = parse_space(o.from, "--from");
+    const Space from = from_file != nullptr ? *from_file : parse_space(o.from, "--from");
     const Space to = [&] {
         const std::string valid = "; the destination gamut is an RGB space's cube, valid names: " +
                                   join(rgb_space_names());

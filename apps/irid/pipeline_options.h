@@ -35,7 +35,9 @@ struct PipelineArgs {
 
 /// The arguments checked and turned into the library's pipeline. `final_clip`: aces-rgc gets
 /// clip=true unless --param clip= says otherwise (an integer file cannot hold what a display
-/// cannot show).
-[[nodiscard]] ClipPipeline make_clip_pipeline(const PipelineArgs& args, bool final_clip);
+/// cannot show). `from`, when given, replaces args.from (a space an image file named; it must
+/// outlive the pipeline).
+[[nodiscard]] ClipPipeline make_clip_pipeline(const PipelineArgs& args, bool final_clip,
+                                              const ColorSpace* from = nullptr);
 
 }  // namespace irid::cli

@@ -3,9 +3,11 @@
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace irid {
 namespace {
@@ -49,21 +51,172 @@ TransferFunction::TransferFunction(Kind kind, double gamma) : m_kind(kind), m_ga
     if (kind == Kind::gamma && !(gamma > 0.0 && gamma <= 10.0)) {
         throw Error("transfer function: gamma " + format_shortest(gamma) + " must be in (0, 10]");
     }
+    if (kind == Kind::parametric || kind == Kind::sampled) {
+        throw Error("transfer function: a parametric or sampled curve is built with "
+                    "TransferFunction::parametric or TransferFunction::sampled");
+    }
+}
+
+TransferFunction::TransferFunction(Kind kind, const Parameters& params,
+                                   std::shared_ptr<const std::vector<double>> samples)
+    : m_kind(kind), m_gamma(kind == Kind::parametric ? params[0] : 1.0), m_params(params),
+      m_samples(std::move(samples)) {}
+
+TransferFunction TransferFunction::parametric(int function_type, std::span<const double> p) {
+    // ICC.1:2022 Table 68: the number of parameters of function types 0 to 4.
+    static constexpr std::array<std::size_t, 5> counts{1, 3, 4, 5, 7};
+    if (function_type < 0 || function_type > 4) {
+        throw Error("parametric curve: function type " + std::to_string(function_type) +
+                    " is not one of ICC.1's 0 to 4");
+    }
+    const std::size_t count = counts[static_cast<std::size_t>(function_type)];
+    if (p.size() != count) {
+        throw Error("parametric curve: function type " + std::to_string(function_type) + " takes " +
+                    std::to_string(count) + " parameters, not " + std::to_string(p.size()));
+    }
+    for (const double v : p) {
+        if (!std::isfinite(v)) throw Error("parametric curve: a parameter is not finite");
+    }
+    const double g = p[0];
+    // The general form (g, a, b, c, d, e, f) of each type.
+    Parameters q{g, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    if (function_type >= 1) {
+        q[1] = p[1];
+        q[2] = p[2];
+        if (!(p[1] > 0.0)) {
+            throw Error("parametric curve: a = " + format_shortest(p[1]) +
+                        " must be > 0 (the curve must rise)");
+        }
+    }
+    switch (function_type) {
+        case 1: q[4] = -p[2] / p[1]; break;
+        case 2: q[4] = -p[2] / p[1], q[5] = p[3], q[6] = p[3]; break;
+        case 3: q[3] = p[3], q[4] = p[4]; break;
+        case 4: q[3] = p[3], q[4] = p[4], q[5] = p[5], q[6] = p[6]; break;
+        default: break;
+    }
+    if (!(g > 0.0 && g <= 10.0)) {
+        throw Error("parametric curve: g = " + format_shortest(g) + " must be in (0, 10]");
+    }
+    if (q[3] < 0.0) {
+        throw Error("parametric curve: c = " + format_shortest(q[3]) +
+                    " must be >= 0 (the curve must not fall)");
+    }
+    return TransferFunction(Kind::parametric, q, nullptr);
+}
+
+TransferFunction TransferFunction::sampled(std::vector<double> linear) {
+    if (linear.size() < 2 || linear.size() > 65536) {
+        throw Error("sampled curve: " + std::to_string(linear.size()) +
+                    " samples; a sampled curve has 2 to 65536");
+    }
+    for (std::size_t i = 0; i < linear.size(); ++i) {
+        if (!std::isfinite(linear[i])) {
+            throw Error("sampled curve: sample " + std::to_string(i) + " is not finite");
+        }
+        if (i > 0 && linear[i] < linear[i - 1]) {
+            throw Error("sampled curve: sample " + std::to_string(i) + " (" +
+                        format_shortest(linear[i]) + ") is below the one before it (" +
+                        format_shortest(linear[i - 1]) + "); a decoding must not fall");
+        }
+    }
+    if (!(linear.back() > linear.front())) {
+        throw Error("sampled curve: the samples do not rise (every one is " +
+                    format_shortest(linear.front()) + ")");
+    }
+    return TransferFunction(Kind::sampled, Parameters{},
+                            std::make_shared<const std::vector<double>>(std::move(linear)));
+}
+
+std::optional<TransferFunction::Parameters> TransferFunction::parameters() const noexcept {
+    const auto camera = [](double alpha, double beta) {
+        return Parameters{1.0 / 0.45, 1.0 / alpha, (alpha - 1.0) / alpha, 1.0 / 4.5, 4.5 * beta,
+                          0.0, 0.0};
+    };
+    switch (m_kind) {
+        case Kind::linear: return Parameters{1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        case Kind::srgb:
+            return Parameters{2.4, 1.0 / 1.055, 0.055 / 1.055, 1.0 / 12.92, srgb_encoded_limit, 0.0, 0.0};
+        case Kind::rec709: return camera(rec709_alpha, rec709_beta);
+        case Kind::rec2020: return camera(rec2020_alpha, rec2020_beta);
+        case Kind::gamma: return Parameters{m_gamma, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        case Kind::parametric: return m_params;
+        case Kind::sampled: return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+std::span<const double> TransferFunction::samples() const noexcept {
+    if (!m_samples) return {};
+    return *m_samples;
+}
+
+double TransferFunction::max_difference(const TransferFunction& other) const noexcept {
+    double worst = 0.0;
+    for (int i = 0; i <= 1023; ++i) {
+        const double e = i / 1023.0;
+        worst = std::max(worst, std::abs(decode(e) - other.decode(e)));
+    }
+    return worst;
+}
+
+double TransferFunction::decode_magnitude(double e) const noexcept {
+    if (m_kind == Kind::parametric) {
+        const auto& [g, a, b, c, d, oe, of] = m_params;
+        return e >= d ? std::pow(std::max(0.0, a * e + b), g) + oe : c * e + of;
+    }
+    // Sampled: linear interpolation, the last segment extended beyond 1.
+    const std::vector<double>& s = *m_samples;
+    const double last = static_cast<double>(s.size() - 1);
+    const double at = e * last;
+    const std::size_t i = at >= last ? s.size() - 2 : static_cast<std::size_t>(at);
+    const double t = at - static_cast<double>(i);
+    return s[i] + (s[i + 1] - s[i]) * t;
+}
+
+double TransferFunction::encode_magnitude(double v) const noexcept {
+    if (m_kind == Kind::parametric) {
+        const auto& [g, a, b, c, d, oe, of] = m_params;
+        const double at_d = std::pow(std::max(0.0, a * d + b), g) + oe;
+        if (v >= at_d) return std::max(0.0, (std::pow(std::max(0.0, v - oe), 1.0 / g) - b) / a);
+        // Below the upper piece: the linear piece, or d where it is flat (or jumps past v).
+        if (c <= 0.0) return std::max(0.0, d);
+        return std::clamp((v - of) / c, 0.0, std::max(0.0, d));
+    }
+    const std::vector<double>& s = *m_samples;
+    const double last = static_cast<double>(s.size() - 1);
+    if (v <= s.front()) return 0.0;
+    if (v >= s.back()) {
+        const double slope = s[s.size() - 1] - s[s.size() - 2];
+        return slope > 0.0 ? 1.0 + (v - s.back()) / slope / last : 1.0;
+    }
+    // The first segment that reaches v (the lowest encoded value of a flat run).
+    const auto upper = std::lower_bound(s.begin(), s.end(), v);
+    const auto i = static_cast<std::size_t>(upper - s.begin()) - 1;
+    const double t = (v - s[i]) / (s[i + 1] - s[i]);
+    return (static_cast<double>(i) + t) / last;
 }
 
 double TransferFunction::encode(double linear) const noexcept {
     const double v = std::abs(linear);
-    // Every curve maps 1 to 1; the formulas' last bit does not (1.055 − 0.055 rounds below 1).
-    if (v == 1.0) return linear;
     double e = v;
     switch (m_kind) {
         case Kind::linear: return linear;
+        case Kind::parametric:
+        case Kind::sampled: return std::copysign(encode_magnitude(v), linear);
+        default: break;
+    }
+    // Every built-in curve maps 1 to 1; the formulas' last bit does not (1.055 − 0.055 rounds
+    // below 1).
+    if (v == 1.0) return linear;
+    switch (m_kind) {
         case Kind::srgb:
             e = v <= srgb_linear_limit ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
             break;
         case Kind::rec709: e = camera_encode(v, rec709_alpha, rec709_beta); break;
         case Kind::rec2020: e = camera_encode(v, rec2020_alpha, rec2020_beta); break;
         case Kind::gamma: e = std::pow(v, 1.0 / m_gamma); break;
+        default: break;
     }
     return std::copysign(e, linear);
 }
@@ -73,12 +226,18 @@ double TransferFunction::decode(double encoded) const noexcept {
     double v = e;
     switch (m_kind) {
         case Kind::linear: return encoded;
+        case Kind::parametric:
+        case Kind::sampled: return std::copysign(decode_magnitude(e), encoded);
+        default: break;
+    }
+    switch (m_kind) {
         case Kind::srgb:
             v = e <= srgb_encoded_limit ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
             break;
         case Kind::rec709: v = camera_decode(e, rec709_alpha, rec709_beta); break;
         case Kind::rec2020: v = camera_decode(e, rec2020_alpha, rec2020_beta); break;
         case Kind::gamma: v = std::pow(e, m_gamma); break;
+        default: break;
     }
     return std::copysign(v, encoded);
 }

@@ -47,6 +47,10 @@ void clip_image(io::Image& image, const ImageColourChannels& channels, const Cli
     const bool unpremultiply = options.premultiplied_in && alpha >= 0;
     const bool premultiply = options.premultiplied_out && alpha >= 0;
 
+    if (options.profile != nullptr && pipeline.from().family != SpaceFamily::xyz) {
+        throw Error(what + ": colours read through an ICC profile are XYZ; the pipeline starts from " +
+                    color_space_name(pipeline.from()));
+    }
     // Gather the colour channels (unpremultiplied where alpha is above 0).
     std::vector<float> colours(pixels * 3);
     for_pixels(pixels, options.threads, [&](std::size_t begin, std::size_t end) {
@@ -57,6 +61,7 @@ void clip_image(io::Image& image, const ImageColourChannels& channels, const Cli
             for (std::size_t c = 0; c < 3; ++c) colours[i * 3 + c] = s[c3[c]] * k;
         }
     });
+    if (options.profile != nullptr) options.profile->to_xyz(colours, colours, pipeline.white(), options.threads);
     if (const std::optional<std::size_t> bad = pipeline.find_unconvertible(colours)) {
         const std::size_t w = static_cast<std::size_t>(std::max(image.width, 1));
         const float Y = colours[3 * *bad + 2];

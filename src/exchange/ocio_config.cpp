@@ -36,6 +36,8 @@ std::string encode_transform(const RgbSpace& space) {
             return fmt::format("!<ExponentTransform> {{value: [{0}, {0}, {0}, 1], style: mirror, "
                                "direction: inverse}}",
                                t.gamma());
+        case TransferFunction::Kind::parametric:
+        case TransferFunction::Kind::sampled: break;
     }
     throw Error("the transfer function of " + space.name() + " has no OpenColorIO form");
 }

@@ -123,10 +123,11 @@ ImageFormat image_format_for(const fs::path& path) {
 }
 
 Image read_image(const fs::path& path, const ImageLimits& limits) {
-    check_image_header(path, limits);
+    const HeaderFacts facts = check_image_header(path, limits);
     Image image;
     std::string error;
     if (!backend().read(path.c_str(), &limits, &image, &error)) throw Error(error);
+    image.icc_profile_rejected = facts.png_icc_chunk && image.icc_profile.empty();
     return image;
 }
 

@@ -82,7 +82,7 @@ std::string printable(const unsigned char* p, std::size_t n) {
 
 /// PNG (ISO/IEC 15948): every chunk must fit in the file, and the image data (IDAT) must be able
 /// to hold the pixels the header (IHDR) declares.
-void check_png(const std::string& shown, Reader& file, const ImageLimits& limits) {
+void check_png(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts) {
     std::uint64_t pos = 8, idat_bytes = 0;
     std::uint64_t width = 0, height = 0;
     unsigned depth = 0, colour_type = 0;
@@ -107,6 +107,8 @@ void check_png(const std::string& shown, Reader& file, const ImageLimits& limits
             have_header = true;
         } else if (type == "IDAT") {
             idat_bytes += length;
+        } else if (type == "iCCP") {
+            facts.png_icc_chunk = true;
         } else if (type == "IEND") {
             break;
         }
@@ -214,24 +216,26 @@ void check_declared_pixels(const std::string& shown, std::uint64_t width, std::u
     }
 }
 
-void check_image_header(const std::filesystem::path& path, const ImageLimits& limits) {
+HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLimits& limits) {
     const std::string shown = path.string();
+    HeaderFacts facts;
     int fd = -1;
     do {
         fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
     } while (fd < 0 && errno == EINTR);
-    if (fd < 0) return;  // the decoder reports it, with the path
+    if (fd < 0) return facts;  // the decoder reports it, with the path
     struct Closer {
         int fd;
         ~Closer() { ::close(fd); }
     } closer{fd};
     struct stat st {};
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) return;
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) return facts;
     Reader file(fd, static_cast<std::uint64_t>(st.st_size));
     unsigned char magic[8];
-    if (!file.read(0, magic, sizeof magic)) return;
-    if (std::memcmp(magic, "\x89PNG\r\n\x1a\n", 8) == 0) check_png(shown, file, limits);
+    if (!file.read(0, magic, sizeof magic)) return facts;
+    if (std::memcmp(magic, "\x89PNG\r\n\x1a\n", 8) == 0) check_png(shown, file, limits, facts);
     if (std::memcmp(magic, "\x76\x2f\x31\x01", 4) == 0) check_exr(shown, file, limits);
+    return facts;
 }
 
 }  // namespace irid::io

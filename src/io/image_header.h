@@ -11,11 +11,17 @@
 
 namespace irid::io {
 
+/// What a file's header holds that the decoder may not pass on.
+struct HeaderFacts {
+    /// A PNG with an iCCP chunk (libpng drops a profile it finds invalid, with only a warning).
+    bool png_icc_chunk = false;
+};
+
 /// For PNG and OpenEXR files: throws irid::Error naming the file when a chunk or a header
 /// attribute declares more bytes than the file holds, when a PNG's compressed data cannot hold
 /// the pixels its header declares, or when the declared size (PNG IHDR, EXR dataWindow) is
 /// beyond `limits`. Other formats, and files it cannot open, pass (the decoder reports them).
-void check_image_header(const std::filesystem::path& path, const ImageLimits& limits);
+HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLimits& limits);
 
 /// Throws irid::Error "<file>: the image declares W x H pixels (N Mpixel); irid reads at most
 /// ..." when width × height is beyond limits.max_pixels.

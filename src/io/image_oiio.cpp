@@ -145,6 +145,22 @@ Image oiio_read(const fs::path& path, const ImageLimits& limits) {
     image.color_space = spec.get_string_attribute(color_space_attribute);
     if (image.color_space.empty()) image.color_space = spec.get_string_attribute("oiio:ColorSpace");
     image.description = spec.get_string_attribute("ImageDescription");
+    if (const OIIO::ParamValue* icc = spec.find_attribute("ICCProfile");
+        icc != nullptr && icc->type().basetype == OIIO::TypeDesc::UINT8 && icc->nvalues() > 0) {
+        const auto* bytes = static_cast<const unsigned char*>(icc->data());
+        image.icc_profile.assign(bytes, bytes + icc->type().numelements() * icc->nvalues());
+    }
+    const auto floats = [&spec](const char* name, std::size_t count) {
+        std::vector<float> out;
+        const OIIO::ParamValue* p = spec.find_attribute(name);
+        if (p == nullptr || p->type().basetype != OIIO::TypeDesc::FLOAT) return out;
+        if (p->type().basevalues() * static_cast<std::size_t>(p->nvalues()) != count) return out;
+        const auto* v = static_cast<const float*>(p->data());
+        out.assign(v, v + count);
+        return out;
+    };
+    image.chromaticities = floats("chromaticities", 8);
+    image.adopted_neutral = floats("adoptedNeutral", 2);
     image.stored_integer = !spec.format.is_floating_point();
     image.stored_bits =
         spec.get_int_attribute("oiio:BitsPerSample", static_cast<int>(spec.format.size() * 8));
@@ -292,6 +308,21 @@ void oiio_write(OutputFile& file, const Image& image, const ImageEncoding& encod
         spec.attribute(color_space_attribute, image.color_space);  // EXR keeps it
     }
     if (!image.description.empty()) spec.attribute("ImageDescription", image.description);
+    if (format == ImageFormat::exr) {
+        if (image.chromaticities.size() == 8) {
+            spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8),
+                           image.chromaticities.data());
+        }
+        if (image.adopted_neutral.size() == 2) {
+            spec.attribute("adoptedNeutral",
+                           OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::VEC2),
+                           image.adopted_neutral.data());
+        }
+    } else if (!image.icc_profile.empty()) {
+        spec.attribute("ICCProfile",
+                       OIIO::TypeDesc(OIIO::TypeDesc::UINT8, static_cast<int>(image.icc_profile.size())),
+                       image.icc_profile.data());
+    }
     if (!encoding.compression.empty()) spec.attribute("compression", encoding.compression);
 
     OutputProxy proxy(file);

@@ -381,9 +381,16 @@ expect_status 0
 expect_info "$IMG/same16.png" "uint16 png"
 expect_pixels "$IMG/same16.png" 6 '$1 == 51 * 257 && $2 == 102 * 257 && $3 == 153 * 257 && $4 == 64 * 257' \
     "16-bit codes 257 × the 8-bit ones"
-# With the default --from srgb-linear the PNG's values are taken as linear light (a note on
-# stderr says so): code 51 is linear 0.2, written back encoded as round(255 × enc(0.2)).
-run_image clip --method smits "$IMG/in.png" "$IMG/aslinear.png"
+# Without --from an untagged PNG is sRGB, and a note on stderr says it was assumed: its
+# in-gamut codes come back as they were.
+run_image clip --method smits "$IMG/in.png" "$IMG/assumed.png"
+expect_status 0
+expect_stderr_has "has no ICC profile; its values are taken as sRGB"
+expect_pixels "$IMG/assumed.png" 6 '$1 == 51 && $2 == 102 && $3 == 153 && $4 == 64' "codes 51, 102, 153 and alpha 64 unchanged"
+rm -f "$IMG/assumed.png"
+# With --from srgb-linear the PNG's values are taken as linear light (a note on stderr says
+# so): code 51 is linear 0.2, written back encoded as round(255 × enc(0.2)).
+run_image clip --method smits --from srgb-linear "$IMG/in.png" "$IMG/aslinear.png"
 expect_status 0
 expect_stderr_has "--from srgb"
 ENC=$(awk 'function enc(v) { return 1.055 * exp(log(v) / 2.4) - 0.055 }

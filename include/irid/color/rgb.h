@@ -3,6 +3,9 @@
 #include <irid/color/matrix.h>
 #include <irid/color/types.h>
 
+#include <array>
+#include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -29,19 +32,59 @@ public:
         rec2020,
         /// A pure power law v^(1/γ).
         gamma,
+        /// ICC.1:2022 §10.18 parametricCurveType in its general form (function type 4): the
+        /// decoding is (a e + b)^g + ec for e >= d, else c e + f. Types 0-3 are special cases
+        /// of it (see parametric()).
+        parametric,
+        /// A sampled decoding (ICC curveType with more than one entry): linear values at n
+        /// evenly spaced encoded values 0, 1/(n-1), ..., 1, interpolated linearly between them
+        /// and extended beyond 1 along the last segment.
+        sampled,
     };
 
-    /// Throws irid::Error for a gamma kind with γ not in (0, 10].
+    /// The parameters (g, a, b, c, d, e, f) of a parametric curve, in ICC.1's order.
+    using Parameters = std::array<double, 7>;
+
+    /// Throws irid::Error for a gamma kind with γ not in (0, 10], and for the parametric and
+    /// sampled kinds (which need parametric() or sampled()).
     explicit TransferFunction(Kind kind, double gamma = 1.0);
+
+    /// An ICC parametric curve of function type 0-4 (ICC.1:2022 Table 68) with its 1, 3, 4, 5
+    /// or 7 parameters, brought to the general form: type 0 Y = X^g; 1 Y = (aX + b)^g for
+    /// X >= -b/a, else 0; 2 the same + c; 3 (aX + b)^g for X >= d, else cX; 4 (aX + b)^g + e
+    /// for X >= d, else cX + f. Throws irid::Error for another type or count, a parameter that is
+    /// not finite, g not in (0, 10], a <= 0 or c < 0 (a decoding that does not rise).
+    [[nodiscard]] static TransferFunction parametric(int function_type, std::span<const double> params);
+    /// A sampled decoding: `linear[i]` is the linear value of the encoded value i/(n-1). Throws
+    /// irid::Error for fewer than 2 or more than 65536 samples, a sample that is not finite, or
+    /// samples that fall anywhere (a decoding must not; flat runs are allowed) or do not rise
+    /// at all.
+    [[nodiscard]] static TransferFunction sampled(std::vector<double> linear);
 
     [[nodiscard]] double encode(double linear) const noexcept;
     [[nodiscard]] double decode(double encoded) const noexcept;
     [[nodiscard]] Kind kind() const noexcept { return m_kind; }
     [[nodiscard]] double gamma() const noexcept { return m_gamma; }
+    /// The curve as an ICC parametric curve of type 4, (g, a, b, c, d, e, f): exact for every
+    /// kind but sampled (for which it is empty). sRGB: g 2.4, a 1/1.055, b 0.055/1.055,
+    /// c 1/12.92, d 12.92 × 0.0031308; BT.709/BT.2020: g 1/0.45, a 1/α, b (α−1)/α, c 1/4.5,
+    /// d 4.5 β; gamma γ: g γ, a 1; linear: g 1, a 1.
+    [[nodiscard]] std::optional<Parameters> parameters() const noexcept;
+    /// The samples of a sampled curve (empty for any other kind).
+    [[nodiscard]] std::span<const double> samples() const noexcept;
+    /// The largest |decode(e) − other.decode(e)| over 1024 evenly spaced e in [0, 1].
+    [[nodiscard]] double max_difference(const TransferFunction& other) const noexcept;
 
 private:
+    TransferFunction(Kind kind, const Parameters& params, std::shared_ptr<const std::vector<double>> samples);
+    [[nodiscard]] double decode_magnitude(double e) const noexcept;
+    [[nodiscard]] double encode_magnitude(double v) const noexcept;
+
     Kind m_kind;
     double m_gamma;
+    Parameters m_params{};
+    /// The sampled kind's table, shared by copies.
+    std::shared_ptr<const std::vector<double>> m_samples;
 };
 
 /// Chromaticities of the three primaries.

@@ -49,6 +49,8 @@ public:
     [[nodiscard]] const ColorSpace& from() const noexcept { return m_from; }
     [[nodiscard]] const ColorSpace& to() const noexcept { return m_to; }
     [[nodiscard]] const RgbSpace& destination() const noexcept { return *m_to.rgb; }
+    /// The reference white of XYZ, CIELUV and CIELAB sources.
+    [[nodiscard]] const Xy& white() const noexcept { return m_convert.white(); }
     /// Source and destination are forms of the same RGB space: no conversion at all (in-gamut
     /// colours come back bit for bit).
     [[nodiscard]] bool same_space() const noexcept { return m_same_space; }

@@ -40,6 +40,19 @@ struct Image {
     std::string color_space;
     /// A free-text description ("ImageDescription"), empty when none.
     std::string description;
+    /// The ICC profile embedded in the file (OpenImageIO's "ICCProfile": PNG iCCP, TIFF tag
+    /// 34675, JPEG APP2), its bytes as stored; empty when none. write_image embeds it in PNG and
+    /// TIFF files (EXR has no place for one). irid_io does not look inside: irid/exchange/icc.h
+    /// reads and builds profiles.
+    std::vector<unsigned char> icc_profile;
+    /// The file has an ICC profile that its decoder rejected and did not pass on (libpng drops an
+    /// iCCP chunk whose profile it finds invalid, with only a warning). Set by read_image.
+    bool icc_profile_rejected = false;
+    /// OpenEXR's "chromaticities" (red x, y, green x, y, blue x, y, white x, y), 8 values, or
+    /// empty when the file has none. write_image writes it to EXR files only.
+    std::vector<float> chromaticities;
+    /// OpenEXR's "adoptedNeutral" (x, y), 2 values, or empty. EXR files only.
+    std::vector<float> adopted_neutral;
     /// How the file read stored its samples: bits per sample (8, 16, 32, ...) and whether they
     /// are integers, i.e. encoded values (true for 8/16-bit PNG and TIFF, false for EXR and HDR).
     /// Set by read_image; ignored by write_image.

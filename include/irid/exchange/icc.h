@@ -1,0 +1,129 @@
+#pragma once
+
+// ICC profiles and OpenEXR chromaticities: what an image file says about the space of its
+// values, and what irid writes so that other programs know the space of its outputs.
+//
+// Reading (IccProfile::parse, through Little CMS 2):
+// - A matrix/TRC RGB profile (ICC.1:2022 §F.3: rXYZ, gXYZ, bXYZ and one tone curve per channel)
+//   whose three curves are the same is taken exactly as an RgbSpace: the colorants are brought
+//   back from the profile connection space's D50 to the profile's own white, with the inverse of
+//   its chromatic adaptation tag ("chad", ICC.1 Annex G) or, without one (version 2 profiles),
+//   with the inverse of a Bradford adaptation from the media white point to D50 (the convention
+//   of ICC.1:2001); the primaries and the white are their chromaticities, and the curve is the
+//   profile's parametric curve or its table.
+// - Any other RGB profile (LUT-based, or with three different curves) is used through an lcms2
+//   transform to CIE XYZ (relative colorimetric, the PCS's D50 white), Bradford-adapted to the
+//   reference white.
+// - Refused, naming the file and the reason: a profile lcms2 cannot parse, one whose data are
+//   not RGB (CMYK, grey, Lab, ...), a device link, an abstract or a named-colour profile.
+//
+// Writing (make_icc_profile): an ICC version 4.3 display profile built by lcms2 from the space's
+// primaries, white and transfer function. Version 4 because its parametricCurveType stores the
+// transfer functions irid uses (sRGB, BT.709, BT.2020, power laws) as their parameters, where a
+// version 2 profile can only hold a power law or a sampled table, and because its "chad" tag
+// records how the colorants were adapted to D50, so a reader can recover the primaries exactly.
+// Every current reader (lcms2, and so PIL and GIMP; Apple ColorSync; Skia in Chromium; Firefox's
+// qcms; exiftool) reads version 4 matrix/TRC profiles.
+
+#include <irid/color/rgb.h>
+#include <irid/color/types.h>
+#include <irid/io/image.h>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace irid {
+
+/// A parsed ICC profile of RGB data.
+class IccProfile {
+public:
+    /// Parses `bytes`. Throws irid::Error "WHAT: ICC profile: REASON" for a profile that cannot be
+    /// used: unreadable or corrupt (lcms2's reason), data not RGB (names the data colour space),
+    /// a device link, abstract or named-colour profile, or an RGB profile that cannot turn its
+    /// values into colours (neither matrix/TRC tags nor an A2B table).
+    [[nodiscard]] static IccProfile parse(std::span<const unsigned char> bytes, const std::string& what);
+
+    /// The profile's description (its English text, else the first it has); "" when none.
+    [[nodiscard]] const std::string& description() const noexcept { return m_description; }
+    /// The version in the header, "4.3", "2.1", ...
+    [[nodiscard]] const std::string& version() const noexcept { return m_version; }
+    /// The exact RGB space of a matrix/TRC profile with one curve for the three channels, with
+    /// the profile's description as its name; empty for any other profile.
+    [[nodiscard]] const std::optional<RgbSpace>& rgb_space() const noexcept { return m_space; }
+    /// Why rgb_space() is empty ("a LUT-based profile", "three different tone curves"); "" when
+    /// it is not.
+    [[nodiscard]] const std::string& not_exact_reason() const noexcept { return m_not_exact; }
+
+    /// The profile's RGB triples (encoded, as stored: integers scaled to [0, 1]) → CIE XYZ
+    /// relative to `white` (Y = 1 for it), through lcms2's relative colorimetric transform to
+    /// the PCS and a Bradford adaptation from its D50 to `white`. `in` may be `out`; sizes are
+    /// whole triples, the same for both (irid::Error otherwise). Works for every profile, exact
+    /// ones included (irid's own path for those is rgb_space()).
+    void to_xyz(std::span<const float> in, std::span<float> out, const Xy& white, int threads = 0) const;
+
+    /// A sentence for messages: "the ICC profile 'sRGB' (version 4.4, matrix/TRC)".
+    [[nodiscard]] std::string summary() const;
+
+private:
+    struct Transform;
+    std::string m_description;
+    std::string m_version;
+    std::optional<RgbSpace> m_space;
+    std::string m_not_exact;
+    std::shared_ptr<const Transform> m_transform;
+};
+
+/// The ICC version 4.3 display profile of `space` (see the file comment), built by lcms2, with
+/// `description` ("" for "NAME (irid)") as its description tag and an MD5 profile ID. A sampled
+/// curve is written as a curveType table of its samples. Throws irid::Error if lcms2 fails.
+[[nodiscard]] std::vector<unsigned char> make_icc_profile(const RgbSpace& space,
+                                                          std::string_view description = {});
+
+/// The linear RGB space an OpenEXR file's "chromaticities" (red, green, blue, white x, y)
+/// define, named `name`. Throws irid::Error naming `what` when there are not 8 finite values or
+/// they make no RGB space (rgb_to_xyz_matrix's reasons).
+[[nodiscard]] RgbSpace rgb_space_from_chromaticities(std::span<const float> chromaticities,
+                                                     const std::string& name, const std::string& what);
+/// The 8 chromaticities of a space, as EXR stores them.
+[[nodiscard]] std::array<float, 8> exr_chromaticities(const RgbSpace& space) noexcept;
+
+/// The built-in space (irid/color/rgb.h) that `space` is, within `tolerance` in every
+/// chromaticity and in the decoded value of the curve (TransferFunction::max_difference), or
+/// nullptr. With `ignore_curve`, the primaries and white alone decide (a linear space).
+[[nodiscard]] const RgbSpace* matching_builtin_space(const RgbSpace& space, double tolerance = 2e-4,
+                                                     bool ignore_curve = false) noexcept;
+
+/// What an image file says about the space of its values (image_space()).
+struct ImageSpace {
+    /// The space of the values, when it is known exactly (a matrix/TRC profile, EXR
+    /// chromaticities, or the assumption below). A space matching a built-in one is that one.
+    std::optional<RgbSpace> rgb;
+    /// The values are encoded with rgb's transfer function (whatever a profile tags; for an
+    /// untagged file, integer samples), else linear (EXR chromaticities; an untagged float file).
+    bool encoded = false;
+    /// A profile that is not matrix/TRC with one curve: the values go to XYZ through it.
+    std::shared_ptr<const IccProfile> profile;
+    /// The file says nothing: an integer file is taken as sRGB, a float one as linear sRGB.
+    bool assumed = false;
+    /// Where the space came from, for messages: "the ICC profile 'Adobe RGB (1998)' (version 4.4,
+    /// matrix/TRC)", "its EXR chromaticities", "no ICC profile or chromaticities".
+    std::string origin;
+};
+
+/// The space of an image's values: its ICC profile (IccProfile::parse's refusals apply), else its
+/// EXR chromaticities, else assumed (see ImageSpace). `what` names the file in errors.
+[[nodiscard]] ImageSpace image_space(const io::Image& image, const std::string& what);
+
+/// Marks `image`, about to be written to a file of `format`, as holding values of `space`:
+/// color_space = the space's name (with "-linear" for EXR), and for PNG and TIFF the space's
+/// ICC profile (make_icc_profile), for EXR its chromaticities and, when the white is not D65's
+/// (0.3127, 0.3290), the adoptedNeutral that tells readers assuming D65 otherwise. EXR values
+/// are linear, PNG and TIFF values encoded with the space's curve.
+void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format);
+
+}  // namespace irid
