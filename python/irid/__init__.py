@@ -74,11 +74,14 @@ __all__ = [
     "film_color",
     "film_reflectance",
     "gallery",
+    "icc_profile",
     "illuminant",
+    "image_space",
     "materials",
     "morpho_effective_thickness",
     "morpho_reflectance",
     "primaries_transform",
+    "read_icc_profile",
     "read_image",
     "render",
     "rgb_color_spaces",
@@ -98,6 +101,7 @@ __all__ = [
     "write_image",
     "write_ocio_config",
 ]
+
 
 __version__ = "0.1.0"
 
@@ -455,7 +459,8 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
         whose channels come back named R, G, B); every other channel, alpha ("A") included, is
         returned as it was.
     source: the colour's space; default "srgb-linear", or "xyz" for X, Y, Z channels (which
-        allow no other).
+        allow no other). Or the metadata :func:`read_image` returned: the space the file says it
+        holds (:func:`image_space`), as ``irid clip IN OUT`` takes it without ``--from``.
     premultiplied: the colour is premultiplied by A (an EXR's, the OpenEXR convention): it is
         clipped unpremultiplied (a pixel of alpha 0 keeps its values).
     premultiplied_out: premultiply the result by A again (default: as ``premultiplied``; False
@@ -466,12 +471,30 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
     """
     names = [_text(c, "channels") for c in channels]
     xyz_channels = _irid.image_colour_channels(names)[3]
-    if source is None:
+    file_space = None
+    if isinstance(source, dict):
+        if xyz_channels:
+            raise ValueError("channels X, Y, Z hold CIE XYZ; a file's RGB space does not apply")
+        file_space = _file_space(source)
+        target = "srgb-linear" if target is None else target
+        _name(target, "target")
+        values = {k.replace("_", "-"): _parameter_value(k, v) for k, v in params.items()}
+        if method == "aces-rgc":
+            values.setdefault("clip", 1.0)
+        if not isinstance(max, numbers.Real) or isinstance(max, bool):
+            raise ValueError(f"max: {max!r} is not a number")
+        wx, wy = _white(white)
+        p = _irid.ClipPipeline(_name(method, "method"), file_space, target, float(max), wx, wy,
+                               _name(adaptation, "adaptation"), sorted(values.items()),
+                               _flag(inverse, "inverse"))
+    elif source is None:
         source = "xyz" if xyz_channels else "srgb-linear"
     elif xyz_channels and source != "xyz":
         raise ValueError(f"channels X, Y, Z hold CIE XYZ but source is {source!r}; give "
                          f"source='xyz' or leave it out")
-    p = _clip_pipeline(method, source, target, max, white, adaptation, inverse, params, image=True)
+    if file_space is None:
+        p = _clip_pipeline(method, source, target, max, white, adaptation, inverse, params,
+                           image=True)
     if isinstance(pixels, np.ma.MaskedArray):
         raise ValueError("pixels: a masked array (numpy.ma); irid has no masked operations and "
                          "would drop the mask: pass pixels.filled(value) or pixels.data")
@@ -481,8 +504,63 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
     pre_in = _flag(premultiplied, "premultiplied")
     pre_out = pre_in if premultiplied_out is None else _flag(premultiplied_out, "premultiplied_out")
     names = _irid.clip_image(out, names, p, pre_in, pre_out, _flag(encode, "encode"),
-                             _whole(threads, "threads", 0, 1 << 20))
+                             _whole(threads, "threads", 0, 1 << 20), file_space)
     return out, names
+
+
+def _file_space(metadata):
+    try:
+        icc = metadata.get("icc_profile")
+        chroma = metadata.get("chromaticities")
+        integer = metadata["integer"]
+    except (KeyError, AttributeError):
+        raise ValueError("source: a dict is the metadata read_image returns (with 'integer', "
+                         "'icc_profile' and 'chromaticities')") from None
+    if icc is not None and not isinstance(icc, (bytes, bytearray)):
+        raise ValueError("source: 'icc_profile' must be bytes or None")
+    return _irid.FileSpace(None if icc is None else bytes(icc),
+                           None if chroma is None else [float(v) for v in chroma],
+                           bool(integer), bool(metadata.get("icc_profile_rejected", False)))
+
+
+def image_space(metadata):
+    """What an image file says about the space of its values, from :func:`read_image`'s
+    metadata: its ICC profile, else its EXR chromaticities, else the assumption (sRGB for an
+    integer file, linear sRGB for a float one).
+
+    Returns a dict: "space" (the name to give as ``source``, e.g. "adobe-rgb", "acescg-linear";
+    for a space that is none of irid's built-in ones, or a profile taken through Little CMS,
+    None: pass the metadata itself as ``clip_image(..., source=metadata)``), "origin" (where it
+    came from, in words), "assumed" (the file said nothing), "encoded" (values carry the curve),
+    "exact" (matrix/TRC or chromaticities, not through Little CMS). Raises ValueError for a
+    profile irid cannot use (corrupt, CMYK, a device link, ...).
+    """
+    f = _file_space(metadata)
+    name = f.space
+    if name not in _RGB_SPACES:
+        name = None
+    return {"space": name, "origin": f.origin, "assumed": f.assumed, "encoded": f.encoded,
+            "exact": f.exact}
+
+
+def icc_profile(space, description=""):
+    """The ICC profile (version 4.3, display class, matrix/TRC, built by Little CMS) of one of
+    irid's RGB spaces ("display-p3", "rec2020", ...), as bytes: what irid embeds in the PNG and
+    TIFF files it writes. description: the profile's description ("" for "NAME (irid)")."""
+    return _irid.icc_profile(_name(space, "space"), _text(description, "description"))
+
+
+def read_icc_profile(data):
+    """What an ICC profile says, as irid reads it (irid/exchange/icc.h): a dict with
+    "description", "version", "exact" (a matrix/TRC profile with one curve, taken exactly),
+    "reason" (why not, otherwise), "space" (the built-in space it is, or None), "primaries"
+    ((x, y) of red, green, blue), "white" (x, y) and "transfer" ({"kind": "parametric",
+    "parameters": (g, a, b, c, d, e, f)} in ICC.1's type-4 form, or {"kind": "sampled",
+    "samples": (...)}); the last four None for a profile that is not exact. Raises ValueError
+    for a profile irid cannot use, with the reason."""
+    if not isinstance(data, (bytes, bytearray, memoryview)):
+        raise ValueError(f"data: {type(data).__name__}; an ICC profile is bytes")
+    return _irid.read_icc_profile(bytes(data))
 
 
 def read_image(path):
@@ -492,7 +570,10 @@ def read_image(path):
     (8- and 16-bit files scaled to [0, 1] and still encoded: decode them with
     ``convert(..., "srgb", "srgb-linear")`` or the space they are in); metadata a dict with
     "channels" (names), "color_space" (irid's or OpenImageIO's name, may be empty),
-    "description", "bits" (per sample as stored) and "integer" (stored as integers).
+    "description", "bits" (per sample as stored), "integer" (stored as integers),
+    "icc_profile" (the embedded ICC profile's bytes, or None; "icc_profile_rejected" is True when
+    the file had one its decoder refused), "chromaticities" (an EXR's 8 values, or None) and
+    "adopted_neutral" (an EXR's x, y, or None). :func:`image_space` says what space they name.
     Raises OSError for a file that cannot be read (missing, not an image, corrupt, larger than
     64 Mpixel).
     """
@@ -500,13 +581,18 @@ def read_image(path):
 
 
 def write_image(path, array, channels=None, color_space="", description="", bits=8,
-                compression=""):
+                compression="", tag=True, icc_profile=None, chromaticities=None):
     """Writes an image; the format follows the extension (.exr: 32-bit float, linear values;
     .png, .tif/.tiff: ``bits`` 8 or 16, encoded values in [0, 1]).
 
     array: (height, width) or (height, width, channels), any real dtype (written from float32).
     channels: names, default Y / Y,A / R,G,B / R,G,B,A by count.
-    color_space, description: stored as attributes (irid:ColorSpace, ImageDescription).
+    color_space, description: stored as attributes (irid:ColorSpace, ImageDescription). When
+        color_space names one of irid's RGB spaces and ``tag`` is true, the file also says so to
+        other programs: PNG and TIFF get the space's ICC profile (:func:`icc_profile`), EXR its
+        chromaticities (and adoptedNeutral when the white is not D65).
+    icc_profile: bytes of a profile to embed instead (PNG, TIFF; checked as a file's would be).
+    chromaticities: 8 values (red, green, blue, white x, y) to write instead (EXR).
     compression: OpenImageIO's name for the format, or "" for its default. EXR: none, rle, zip,
         zips, piz, pxr24, b44, b44a, dwaa, dwab (zip, zips, dwaa and dwab take a level, "dwaa:45");
         TIFF: none, lzw, zip, packbits, jpeg (lossy); PNG: default, filtered, huffman, rle, fixed
@@ -519,9 +605,14 @@ def write_image(path, array, channels=None, color_space="", description="", bits
         raise ValueError(f"bits: {bits!r}; valid values are 8 and 16")
     names = [_text(c, "channels") for c in (channels or [])]
     _check_compression(_text(compression, "compression"), _path(path))
+    if icc_profile is not None and not isinstance(icc_profile, (bytes, bytearray)):
+        raise ValueError("icc_profile: an ICC profile is bytes")
+    if chromaticities is not None:
+        chromaticities = [float(v) for v in chromaticities]
     return _irid.write_image(_path(path), array, names, _text(color_space, "color_space"),
                              _text(description, "description"), int(bits),
-                             _text(compression, "compression"))
+                             _text(compression, "compression"), _flag(tag, "tag"),
+                             None if icc_profile is None else bytes(icc_profile), chromaticities)
 
 
 # The compressions OpenImageIO 2.4 writes per format (its OpenEXR, TIFF and PNG plugins), and

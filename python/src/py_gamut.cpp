@@ -9,6 +9,7 @@
 #include <irid/gamut/clip.h>
 #include <irid/gamut/pipeline.h>
 #include <irid/gamut/report.h>
+#include <irid/exchange/icc.h>
 #include <irid/exchange/image_clip.h>
 #include <irid/figures/clip_sets.h>
 #include <irid/io/image.h>
@@ -17,10 +18,40 @@
 
 #include <pybind11/stl.h>
 
+#include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
 namespace irid::python {
+namespace {
+
+/// An image file's space and the ColorSpace that points into it.
+struct FileSpace {
+    ImageSpace space;
+    ColorSpace colour;
+};
+
+/// The pipeline of ClipPipeline's Python constructors (the arguments as irid._pipeline passes them).
+ClipPipeline make_pipeline(const std::string& method, const ColorSpace& from, const std::string& target,
+                           double max, double wx, double wy, const std::string& adaptation,
+                           const std::vector<std::pair<std::string, double>>& params, bool inverse) {
+    const ClipMethod cm = parse_clip_method(method);
+    const ColorSpace to = color_space(target);
+    if (!to.is_rgb()) {
+        throw Error("target '" + target + "' is not an RGB space; the gamut is an RGB space's cube");
+    }
+    ClipPipelineOptions o;
+    o.max = max;
+    o.white = {wx, wy};
+    o.adaptation = parse_chromatic_adaptation(adaptation);
+    o.settings.inverse = inverse;
+    for (const auto& [k, v] : params) o.settings.set(k, v);
+    return ClipPipeline(cm, from, to, o);
+}
+
+}  // namespace
+
 namespace {
 
 template <class T>
@@ -118,26 +149,53 @@ void add_gamut(py::module_& m) {
         return py::make_tuple(c.index[0], c.index[1], c.index[2], c.xyz);
     });
 
+    // What an image file says about its space (irid/exchange/icc.h), kept at a fixed address so
+    // that the pipelines built on it can point at its RgbSpace.
+    py::class_<FileSpace, std::shared_ptr<FileSpace>>(m, "FileSpace")
+        .def(py::init([](const std::optional<py::bytes>& icc, const std::optional<std::vector<float>>& chromaticities,
+                         bool integer, bool rejected) {
+                 io::Image image;
+                 if (icc) {
+                     const std::string bytes = *icc;
+                     image.icc_profile.assign(bytes.begin(), bytes.end());
+                 }
+                 if (chromaticities) image.chromaticities = *chromaticities;
+                 image.stored_integer = integer;
+                 image.icc_profile_rejected = rejected;
+                 auto f = std::make_shared<FileSpace>();
+                 f->space = image_space(image, "image");
+                 f->colour = f->space.profile ? ColorSpace{SpaceFamily::xyz, nullptr}
+                                              : ColorSpace{f->space.encoded ? SpaceFamily::rgb_encoded
+                                                                            : SpaceFamily::rgb_linear,
+                                                           &*f->space.rgb};
+                 return f;
+             }),
+             py::arg("icc_profile"), py::arg("chromaticities"), py::arg("integer"), py::arg("rejected"))
+        .def_property_readonly("space", [](const FileSpace& f) {
+            return f.space.profile ? py::object(py::none()) : py::object(py::str(color_space_name(f.colour)));
+        })
+        .def_property_readonly("origin", [](const FileSpace& f) { return f.space.origin; })
+        .def_property_readonly("assumed", [](const FileSpace& f) { return f.space.assumed; })
+        .def_property_readonly("encoded", [](const FileSpace& f) { return f.space.encoded; })
+        .def_property_readonly("exact", [](const FileSpace& f) { return !f.space.profile; });
+
     py::class_<ClipPipeline>(m, "ClipPipeline")
         .def(py::init([](const std::string& method, const std::string& source,
                          const std::string& target, double max, double wx, double wy,
                          const std::string& adaptation, const std::vector<std::pair<std::string, double>>& params,
                          bool inverse) {
-                 const ClipMethod cm = parse_clip_method(method);
-                 const ColorSpace from = color_space(source);
-                 const ColorSpace to = color_space(target);
-                 if (!to.is_rgb()) {
-                     throw Error("target '" + target +
-                                 "' is not an RGB space; the gamut is an RGB space's cube");
-                 }
-                 ClipPipelineOptions o;
-                 o.max = max;
-                 o.white = {wx, wy};
-                 o.adaptation = parse_chromatic_adaptation(adaptation);
-                 o.settings.inverse = inverse;
-                 for (const auto& [k, v] : params) o.settings.set(k, v);
-                 return ClipPipeline(cm, from, to, o);
+                 return make_pipeline(method, color_space(source), target, max, wx, wy, adaptation,
+                                      params, inverse);
              }),
+             py::arg("method"), py::arg("source"), py::arg("target"), py::arg("max"), py::arg("wx"),
+             py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"))
+        .def(py::init([](const std::string& method, const FileSpace& source, const std::string& target,
+                         double max, double wx, double wy, const std::string& adaptation,
+                         const std::vector<std::pair<std::string, double>>& params, bool inverse) {
+                 return make_pipeline(method, source.colour, target, max, wx, wy, adaptation, params,
+                                      inverse);
+             }),
+             py::keep_alive<1, 3>(),  // the pipeline points at the file space's RgbSpace
              py::arg("method"), py::arg("source"), py::arg("target"), py::arg("max"), py::arg("wx"),
              py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"))
         .def(
@@ -190,7 +248,7 @@ void add_gamut(py::module_& m) {
     m.def(
         "clip_image",
         [](py::array_t<float> pixels, std::vector<std::string> channels, const ClipPipeline& p,
-           bool premultiplied_in, bool premultiplied_out, bool encode, int threads) {
+           bool premultiplied_in, bool premultiplied_out, bool encode, int threads, const FileSpace* file) {
             if (pixels.ndim() != 3 || !(pixels.flags() & py::array::c_style) || !pixels.writeable()) {
                 throw py::value_error("pixels: a writeable C-contiguous float32 (height, width, channels) array is needed");
             }
@@ -212,14 +270,15 @@ void add_gamut(py::module_& m) {
                            ImageClipOptions{.premultiplied_in = premultiplied_in,
                                             .premultiplied_out = premultiplied_out,
                                             .encode = encode,
-                                            .threads = threads},
+                                            .threads = threads,
+                                            .profile = file != nullptr ? file->space.profile.get() : nullptr},
                            "image");
                 std::memcpy(data, image.pixels.data(), image.pixels.size() * sizeof(float));
             }
             return image.channel_names;
         },
         py::arg("pixels"), py::arg("channels"), py::arg("pipeline"), py::arg("premultiplied_in"),
-        py::arg("premultiplied_out"), py::arg("encode"), py::arg("threads"));
+        py::arg("premultiplied_out"), py::arg("encode"), py::arg("threads"), py::arg("file") = nullptr);
 }
 
 }  // namespace irid::python

@@ -4,9 +4,14 @@
 
 #include "arrays.h"
 
+#include <irid/color/convert.h>
+#include <irid/exchange/icc.h>
 #include <irid/io/image.h>
 
 #include <pybind11/stl.h>
+
+#include <optional>
+#include <span>
 
 #include <algorithm>
 #include <cstring>
@@ -14,6 +19,19 @@
 #include <vector>
 
 namespace irid::python {
+namespace {
+
+/// The RGB space a name says: for a NAME-linear name, its primaries and white with a linear curve.
+RgbSpace as_named(const ColorSpace& s) {
+    if (s.family == SpaceFamily::rgb_linear && s.rgb->transfer().kind() != TransferFunction::Kind::linear) {
+        return RgbSpace(s.rgb->name() + "-linear", s.rgb->primaries(), s.rgb->white(),
+                        TransferFunction(TransferFunction::Kind::linear));
+    }
+    return *s.rgb;
+}
+
+}  // namespace
+
 void add_io(py::module_& m) {
     m.def(
         "read_image",
@@ -36,6 +54,15 @@ void add_io(py::module_& m) {
             meta["description"] = image.description;
             meta["bits"] = image.stored_bits;
             meta["integer"] = image.stored_integer;
+            meta["icc_profile"] = image.icc_profile.empty()
+                                      ? py::object(py::none())
+                                      : py::object(py::bytes(reinterpret_cast<const char*>(image.icc_profile.data()),
+                                                             image.icc_profile.size()));
+            meta["icc_profile_rejected"] = image.icc_profile_rejected;
+            meta["chromaticities"] = image.chromaticities.empty() ? py::object(py::none())
+                                                                  : py::object(py::tuple(py::cast(image.chromaticities)));
+            meta["adopted_neutral"] = image.adopted_neutral.empty() ? py::object(py::none())
+                                                                    : py::object(py::tuple(py::cast(image.adopted_neutral)));
             return py::make_tuple(pixels, meta);
         },
         py::arg("path"));
@@ -44,7 +71,8 @@ void add_io(py::module_& m) {
         "write_image",
         [](const std::string& path, const py::handle& array, std::vector<std::string> channels,
            const std::string& color_space, const std::string& description, int bits,
-           const std::string& compression) {
+           const std::string& compression, bool tag, const std::optional<py::bytes>& icc_profile,
+           const std::optional<std::vector<float>>& chromaticities) {
             const auto a = contiguous_of<float>(array, "image");
             if (a.ndim() != 2 && a.ndim() != 3) {
                 throw py::value_error("image: shape " + shape_text(a) +
@@ -81,7 +109,36 @@ void add_io(py::module_& m) {
                 }
             }
             image.channel_names = std::move(channels);
+            // The file says what space it holds: a built-in space's profile or chromaticities
+            // (irid/exchange/icc.h), or what the caller gives.
+            io::ImageFormat format{};
+            try {
+                format = io::image_format_for(path);
+            } catch (const Error& e) {
+                throw FileError(e.what());
+            }
+            if (tag) {
+                if (const std::optional<ColorSpace> s = find_color_space(color_space); s && s->is_rgb()) {
+                    tag_image(image, as_named(*s), format);
+                }
+            }
             image.color_space = color_space;
+            if (icc_profile) {
+                if (format == io::ImageFormat::exr) {
+                    throw py::value_error("icc_profile: EXR files carry chromaticities, not ICC profiles");
+                }
+                const std::string bytes = *icc_profile;
+                image.icc_profile.assign(bytes.begin(), bytes.end());
+                (void)IccProfile::parse(image.icc_profile, "icc_profile");  // refused like a file's
+            }
+            if (chromaticities) {
+                if (format != io::ImageFormat::exr) {
+                    throw py::value_error("chromaticities: only EXR files carry them (PNG and TIFF carry an ICC profile)");
+                }
+                (void)rgb_space_from_chromaticities(*chromaticities, "chromaticities", "chromaticities");
+                image.chromaticities = *chromaticities;
+                image.adopted_neutral.clear();
+            }
             image.description = description;
             image.pixels.assign(a.data(), a.data() + a.size());
             py::gil_scoped_release release;
@@ -92,7 +149,57 @@ void add_io(py::module_& m) {
             }
         },
         py::arg("path"), py::arg("array"), py::arg("channels"), py::arg("color_space"),
-        py::arg("description"), py::arg("bits"), py::arg("compression"));
+        py::arg("description"), py::arg("bits"), py::arg("compression"), py::arg("tag"),
+        py::arg("icc_profile"), py::arg("chromaticities"));
+
+    m.def(
+        "icc_profile",
+        [](const std::string& space, const std::string& description) {
+            const ColorSpace s = color_space(space);
+            if (!s.is_rgb()) throw Error("space '" + space + "' is not an RGB space; ICC profiles describe RGB spaces");
+            const std::vector<unsigned char> bytes = make_icc_profile(as_named(s), description);
+            return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        },
+        py::arg("space"), py::arg("description"));
+
+    m.def(
+        "read_icc_profile",
+        [](const py::bytes& data) {
+            const std::string bytes = data;
+            const IccProfile p = IccProfile::parse(
+                std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), "profile");
+            py::dict d;
+            d["description"] = p.description();
+            d["version"] = p.version();
+            d["exact"] = p.rgb_space().has_value();
+            d["reason"] = p.not_exact_reason();
+            if (p.rgb_space()) {
+                const RgbSpace& s = *p.rgb_space();
+                const RgbSpace* builtin = matching_builtin_space(s);
+                d["space"] = builtin != nullptr ? py::object(py::str(builtin->name())) : py::object(py::none());
+                const RgbPrimaries& q = s.primaries();
+                d["primaries"] = py::make_tuple(py::make_tuple(q.red.x, q.red.y), py::make_tuple(q.green.x, q.green.y),
+                                                py::make_tuple(q.blue.x, q.blue.y));
+                d["white"] = py::make_tuple(s.white().x, s.white().y);
+                py::dict t;
+                if (const auto params = s.transfer().parameters()) {
+                    t["kind"] = "parametric";
+                    t["parameters"] = py::tuple(py::cast(std::vector<double>(params->begin(), params->end())));
+                } else {
+                    t["kind"] = "sampled";
+                    const auto samples = s.transfer().samples();
+                    t["samples"] = py::tuple(py::cast(std::vector<double>(samples.begin(), samples.end())));
+                }
+                d["transfer"] = t;
+            } else {
+                d["space"] = py::none();
+                d["primaries"] = py::none();
+                d["white"] = py::none();
+                d["transfer"] = py::none();
+            }
+            return d;
+        },
+        py::arg("data"));
 }
 
 }  // namespace irid::python

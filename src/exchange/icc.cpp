@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <cwchar>
 #include <memory>
 #include <string>
 #include <utility>
@@ -218,6 +219,31 @@ std::wstring wide(std::string_view s) {
     return out;
 }
 
+/// wchar_t (UTF-32 here) → UTF-8; what is not a Unicode scalar value becomes U+FFFD.
+std::string utf8(std::wstring_view s) {
+    std::string out;
+    for (const wchar_t wc : s) {
+        auto c = static_cast<std::uint32_t>(wc);
+        if (c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) c = 0xFFFD;
+        if (c < 0x80) {
+            out += static_cast<char>(c);
+        } else if (c < 0x800) {
+            out += static_cast<char>(0xC0 | (c >> 6));
+            out += static_cast<char>(0x80 | (c & 0x3F));
+        } else if (c < 0x10000) {
+            out += static_cast<char>(0xE0 | (c >> 12));
+            out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+            out += static_cast<char>(0x80 | (c & 0x3F));
+        } else {
+            out += static_cast<char>(0xF0 | (c >> 18));
+            out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+            out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+            out += static_cast<char>(0x80 | (c & 0x3F));
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 /// lcms2's transform to the PCS (XYZ D50) and the context it lives in.
@@ -273,12 +299,13 @@ IccProfile IccProfile::parse(std::span<const unsigned char> bytes, const std::st
     }
 
     IccProfile out;
-    const cmsUInt32Number size = cmsGetProfileInfoASCII(h.get(), cmsInfoDescription, "en", "US", nullptr, 0);
-    if (size > 1) {
-        std::string text(size, '\0');
-        cmsGetProfileInfoASCII(h.get(), cmsInfoDescription, "en", "US", text.data(), size);
-        text.resize(std::strlen(text.c_str()));
-        out.m_description = text;
+    // The description in English where the profile has it (lcms2 falls back to its first).
+    const cmsUInt32Number size = cmsGetProfileInfo(h.get(), cmsInfoDescription, "en", "US", nullptr, 0);
+    if (size > sizeof(wchar_t)) {
+        std::wstring text(size / sizeof(wchar_t), L'\0');
+        cmsGetProfileInfo(h.get(), cmsInfoDescription, "en", "US", text.data(), size);
+        text.resize(std::wcslen(text.c_str()));
+        out.m_description = utf8(text);
     }
     const cmsUInt32Number v = cmsGetEncodedICCversion(h.get());
     out.m_version = fmt::format("{}.{}", (v >> 24) & 0xFF, (v >> 20) & 0xF);
@@ -384,16 +411,30 @@ std::vector<unsigned char> make_icc_profile(const RgbSpace& space, std::string_v
         !cmsWriteTag(h.get(), cmsSigCopyrightTag, copyright.get())) {
         throw Error("ICC profile of " + space.name() + ": " + ctx.reason("the text tags failed"));
     }
-    if (!cmsMD5computeID(h.get())) throw Error("ICC profile of " + space.name() + ": " + ctx.reason("MD5 failed"));
-    cmsUInt32Number size = 0;
-    if (!cmsSaveProfileToMem(h.get(), nullptr, &size) || size == 0) {
-        throw Error("ICC profile of " + space.name() + ": " + ctx.reason("saving failed"));
+    const auto saved = [&](cmsHPROFILE profile) {
+        cmsUInt32Number n = 0;
+        if (!cmsSaveProfileToMem(profile, nullptr, &n) || n == 0) {
+            throw Error("ICC profile of " + space.name() + ": " + ctx.reason("saving failed"));
+        }
+        std::vector<unsigned char> out(n);
+        if (!cmsSaveProfileToMem(profile, out.data(), &n)) {
+            throw Error("ICC profile of " + space.name() + ": " + ctx.reason("saving failed"));
+        }
+        out.resize(n);
+        return out;
+    };
+    // lcms2 stamps the header with the time of creation (ICC.1 §7.2.8), so that the same space
+    // would give different bytes, and different files, at every run. The date is fixed instead
+    // (2026-01-01 00:00:00), read back, and the profile ID (an MD5 of the whole, §7.2.18)
+    // computed over the result.
+    std::vector<unsigned char> bytes = saved(h.get());
+    static constexpr unsigned char date[12] = {0x07, 0xEA, 0, 1, 0, 1, 0, 0, 0, 0, 0, 0};
+    std::copy(std::begin(date), std::end(date), bytes.begin() + 24);
+    const Profile fixed(cmsOpenProfileFromMemTHR(ctx.handle, bytes.data(), static_cast<cmsUInt32Number>(bytes.size())));
+    if (!fixed || !cmsMD5computeID(fixed.get())) {
+        throw Error("ICC profile of " + space.name() + ": " + ctx.reason("MD5 failed"));
     }
-    std::vector<unsigned char> bytes(size);
-    if (!cmsSaveProfileToMem(h.get(), bytes.data(), &size)) {
-        throw Error("ICC profile of " + space.name() + ": " + ctx.reason("saving failed"));
-    }
-    bytes.resize(size);
+    bytes = saved(fixed.get());
     return bytes;
 }
 

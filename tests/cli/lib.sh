@@ -146,3 +146,8 @@ expect_stderr_has() {
 expect_stdout_has() {
     if grep -qF -- "$1" "$TMP/out"; then pass; else fail "stdout containing $(show "$1")" "$(outcome)"; fi
 }
+
+# expect_stderr_lacks TEXT: the fixed string does not occur on stderr.
+expect_stderr_lacks() {
+    if ! grep -qF -- "$1" "$TMP/err"; then pass; else fail "stderr without $(show "$1")" "$(outcome)"; fi
+}

@@ -369,6 +369,10 @@ sh_run '"$IRID" clip --method css --from srgb-linear --to srgb "$EXAMPLES/in.exr
 expect_status 0
 sh_run '"$IRID" clip --method smits < "$EXAMPLES/colours.csv"'
 expect_status 0
+# The tagged photo: its space from its ICC profile, without a note that sRGB was assumed.
+sh_run '"$IRID" clip --method oklab-cusp --to srgb "$EXAMPLES/p3-sweep.png" photo-srgb.png'
+expect_status 0
+expect_stderr_lacks "no ICC profile"
 
 echo "$passed passed, $failed failed"
 ((failed == 0))

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace irid {
 namespace {
@@ -205,6 +206,80 @@ TEST(RgbSpace, AcesMatricesAreThePublishedOnes) {
     EXPECT_EQ(find_rgb_space("aces2065-1"), &aces2065_1());
     EXPECT_EQ(find_rgb_space("acescg"), &acescg());
     EXPECT_EQ(acescg().transfer().kind(), TransferFunction::Kind::linear);
+}
+
+
+// --- ICC parametric and sampled curves -------------------------------------------------------
+
+TEST(TransferFunction, ParametricTypesFollowIccTable68) {
+    // ICC.1:2022 Table 68, each type at a few points against its formula.
+    const double g = 2.2, a = 0.9, b = 0.1, c = 0.3, d = 0.2, e = 0.05, f = 0.01;
+    const auto t0 = TransferFunction::parametric(0, std::vector{g});
+    const auto t1 = TransferFunction::parametric(1, std::vector{g, a, b});
+    const auto t2 = TransferFunction::parametric(2, std::vector{g, a, b, c});
+    const auto t3 = TransferFunction::parametric(3, std::vector{g, a, b, c, d});
+    const auto t4 = TransferFunction::parametric(4, std::vector{g, a, b, c, d, e, f});
+    for (const double x : {0.0, 0.05, 0.15, 0.2, 0.5, 0.9, 1.0}) {
+        EXPECT_NEAR(t0.decode(x), std::pow(x, g), 1e-15) << x;
+        EXPECT_NEAR(t1.decode(x), std::pow(a * x + b, g), 1e-15) << x;  // -b/a < 0: always the power
+        EXPECT_NEAR(t2.decode(x), std::pow(a * x + b, g) + c, 1e-15) << x;
+        EXPECT_NEAR(t3.decode(x), x >= d ? std::pow(a * x + b, g) : c * x, 1e-15) << x;
+        EXPECT_NEAR(t4.decode(x), x >= d ? std::pow(a * x + b, g) + e : c * x + f, 1e-15) << x;
+    }
+    // Type 1 below -b/a gives 0 (a curve that starts late).
+    const auto late = TransferFunction::parametric(1, std::vector{2.0, 1.0, -0.25});
+    EXPECT_EQ(late.decode(0.1), 0.0);
+    EXPECT_NEAR(late.decode(0.75), 0.25, 1e-15);
+}
+
+TEST(TransferFunction, ParametricFormsOfTheBuiltinCurvesAreTheCurves) {
+    using K = TransferFunction::Kind;
+    for (const TransferFunction& t : {TransferFunction(K::srgb), TransferFunction(K::rec709),
+                                     TransferFunction(K::rec2020), TransferFunction(K::gamma, 563.0 / 256.0),
+                                     TransferFunction(K::linear)}) {
+        const auto p = t.parameters();
+        ASSERT_TRUE(p.has_value());
+        const auto as_icc = TransferFunction::parametric(4, *p);
+        for (int i = 0; i <= 1000; ++i) {
+            const double x = i / 1000.0;
+            EXPECT_NEAR(as_icc.decode(x), t.decode(x), 1e-12) << static_cast<int>(t.kind()) << " at " << x;
+            EXPECT_NEAR(as_icc.encode(x), t.encode(x), 1e-12) << static_cast<int>(t.kind()) << " at " << x;
+        }
+        EXPECT_LT(as_icc.max_difference(t), 1e-12);
+    }
+}
+
+TEST(TransferFunction, ParametricAndSampledCurvesRoundTripAndMirrorNegatives) {
+    const auto p = TransferFunction::parametric(3, std::vector{2.4, 1 / 1.055, 0.055 / 1.055, 1 / 12.92, 0.04045});
+    std::vector<double> table(1024);
+    for (std::size_t i = 0; i < table.size(); ++i) table[i] = std::pow(static_cast<double>(i) / 1023.0, 1.8);
+    const auto s = TransferFunction::sampled(table);
+    for (const double v : {0.0, 1e-4, 0.002, 0.01, 0.2, 0.5, 0.99, 1.0, 1.5}) {
+        EXPECT_NEAR(p.decode(p.encode(v)), v, 1e-12 * std::max(1.0, v)) << v;
+        EXPECT_NEAR(s.decode(s.encode(v)), v, 1e-12 * std::max(1.0, v)) << v;
+        EXPECT_EQ(p.encode(-v), -p.encode(v));
+        EXPECT_EQ(s.decode(-v), -s.decode(v));
+    }
+    // At the nodes the table is the curve; between them, linear interpolation.
+    EXPECT_DOUBLE_EQ(s.decode(512.0 / 1023.0), table[512]);
+    EXPECT_NEAR(s.decode(512.5 / 1023.0), 0.5 * (table[512] + table[513]), 1e-15);
+    // A flat run encodes to its lowest code.
+    const auto flat = TransferFunction::sampled({0.0, 0.0, 0.5, 0.5, 1.0});
+    EXPECT_DOUBLE_EQ(flat.encode(0.5), 0.5);
+    EXPECT_DOUBLE_EQ(flat.encode(0.0), 0.0);
+}
+
+TEST(TransferFunction, RefusesCurvesThatAreNotDecodings) {
+    EXPECT_THROW((void)TransferFunction::parametric(5, std::vector{1.0}), Error);
+    EXPECT_THROW((void)TransferFunction::parametric(3, std::vector{2.2, 1.0}), Error);
+    EXPECT_THROW((void)TransferFunction::parametric(1, std::vector{2.2, -1.0, 0.0}), Error);
+    EXPECT_THROW((void)TransferFunction::parametric(0, std::vector{0.0}), Error);
+    EXPECT_THROW((void)TransferFunction::parametric(0, std::vector{std::nan("")}), Error);
+    EXPECT_THROW((void)TransferFunction::parametric(3, std::vector{2.2, 1.0, 0.0, -1.0, 0.1}), Error);
+    EXPECT_THROW((void)TransferFunction::sampled({0.5}), Error);
+    EXPECT_THROW((void)TransferFunction::sampled({0.0, 0.6, 0.5, 1.0}), Error);
+    EXPECT_THROW((void)TransferFunction::sampled({0.3, 0.3}), Error);
+    EXPECT_THROW((void)TransferFunction(TransferFunction::Kind::sampled), Error);
 }
 
 }  // namespace

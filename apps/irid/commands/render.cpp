@@ -12,9 +12,10 @@
 #include "../cli_common.h"
 
 #include <irid/error.h>
+#include <irid/exchange/icc.h>
 #include <irid/gamut/clip.h>
-#include <irid/io/output_file.h>
 #include <irid/io/image.h>
+#include <irid/io/output_file.h>
 #include <irid/render/render.h>
 #include <irid/render/scene.h>
 
@@ -136,12 +137,13 @@ int run_render(const RenderCliOptions& o) {
     const render::RenderResult result = render::render(scene, options);
 
     io::Image image = result.display;
+    const RgbSpace& space = *find_rgb_space(scene.render.space);
     if (format == io::ImageFormat::exr) {  // the clipped values, linear
         for (std::size_t i = 0; i < image.pixels.size(); ++i)
-            image.pixels[i] = static_cast<float>(
-                find_rgb_space(scene.render.space)->transfer().decode(image.pixels[i]));
-        image.color_space = scene.render.space + "-linear";
+            image.pixels[i] = static_cast<float>(space.transfer().decode(image.pixels[i]));
     }
+    // Every output says its space to other programs: an ICC profile or EXR chromaticities.
+    tag_image(image, space, format);
     image.description = fmt::format("irid render {} ({}×{}, {} spp, {} path, {} optics, clip {})",
                                      scene.source, scene.image.width, scene.image.height,
                                      scene.image.spp,
@@ -154,6 +156,7 @@ int run_render(const RenderCliOptions& o) {
     io::write_image(main_file, image);
     if (o.linear) {
         io::Image linear = result.linear;
+        tag_image(linear, space, io::image_format_for(*o.linear));
         linear.description = image.description + ", unclipped";
         io::OutputFile linear_file(*o.linear);
         io::write_image(linear_file, linear);
