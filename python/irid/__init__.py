@@ -583,7 +583,8 @@ def read_image(path):
 def write_image(path, array, channels=None, color_space="", description="", bits=8,
                 compression="", tag=True, icc_profile=None, chromaticities=None):
     """Writes an image; the format follows the extension (.exr: 32-bit float, linear values;
-    .png, .tif/.tiff: ``bits`` 8 or 16, encoded values in [0, 1]).
+    .png, .tif/.tiff: ``bits`` 8 or 16, encoded values in [0, 1]; .jpg/.jpeg: 8 bits, 1 or 3
+    channels, quality 95 unless ``compression="jpeg:Q"``).
 
     array: (height, width) or (height, width, channels), any real dtype (written from float32).
     channels: names, default Y / Y,A / R,G,B / R,G,B,A by count.
@@ -623,6 +624,7 @@ _COMPRESSIONS = {
     ".png": ("default", "filtered", "huffman", "rle", "fixed"),
 }
 _COMPRESSIONS[".tiff"] = _COMPRESSIONS[".tif"]
+_COMPRESSIONS[".jpg"] = _COMPRESSIONS[".jpeg"] = ()    # "jpeg:QUALITY", 1 to 100
 _LEVELLED = ("zip", "zips", "dwaa", "dwab")
 
 
@@ -636,6 +638,11 @@ def _check_compression(compression, path):
     name, _, level = compression.partition(":")
     if name in valid and not level:
         return
+    if ext in (".jpg", ".jpeg"):
+        if name == "jpeg" and level.isdigit() and 1 <= int(level) <= 100 and len(level) <= 3:
+            return
+        raise KeyError(f"compression {compression!r} is unknown for {ext} files; valid: "
+                       f"jpeg:QUALITY with QUALITY 1 to 100 (default jpeg:95)")
     if ext == ".exr" and name in _LEVELLED and level.isdigit() and 0 < len(level) <= 4:
         return
     levelled = ", ".join(f"{n}:LEVEL" for n in _LEVELLED) if ext == ".exr" else ""

@@ -118,8 +118,10 @@ ImageFormat image_format_for(const fs::path& path) {
     if (extension == ".exr") return ImageFormat::exr;
     if (extension == ".png") return ImageFormat::png;
     if (extension == ".tif" || extension == ".tiff") return ImageFormat::tiff;
+    if (extension == ".jpg" || extension == ".jpeg") return ImageFormat::jpeg;
     throw Error(path.string() + ": unsupported extension '" + path.extension().string() +
-                "'; images are written as .exr (linear float), .png, .tif or .tiff (8 or 16 bit)");
+                "'; images are written as .exr (linear float), .png, .tif or .tiff (8 or 16 bit), "
+                ".jpg or .jpeg (8 bit)");
 }
 
 Image read_image(const fs::path& path, const ImageLimits& limits) {

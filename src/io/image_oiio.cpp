@@ -274,11 +274,32 @@ void oiio_write(OutputFile& file, const Image& image, const ImageEncoding& encod
         throw Error(shown + ": " + std::to_string(encoding.bits) +
                     " bits per sample; PNG and TIFF are written with 8 or 16");
     }
+    if (format == ImageFormat::jpeg && encoding.bits != 8) {
+        throw Error(shown + ": " + std::to_string(encoding.bits) +
+                    " bits per sample; JPEG holds 8 (write PNG or TIFF for 16)");
+    }
     check_image(path, image);
+    if (format == ImageFormat::jpeg && image.channels != 1 && image.channels != 3) {
+        throw Error(shown + ": " + std::to_string(image.channels) +
+                    " channels; JPEG holds 1 (grey) or 3 (RGB), no alpha (write PNG or TIFF for "
+                    "alpha)");
+    }
+    std::string quality = "jpeg:95";
+    if (format == ImageFormat::jpeg && !encoding.compression.empty()) {
+        const std::string& c = encoding.compression;
+        const std::string digits = c.rfind("jpeg:", 0) == 0 ? c.substr(5) : "";
+        const bool number = !digits.empty() && digits.size() <= 3 &&
+                            digits.find_first_not_of("0123456789") == std::string::npos;
+        if (!number || std::stoi(digits) < 1 || std::stoi(digits) > 100) {
+            throw Error(shown + ": compression '" + c + "'; JPEG takes jpeg:Q with a quality Q of 1 to 100");
+        }
+        quality = c;
+    }
 
-    const char* format_name = format == ImageFormat::exr   ? "openexr"
-                              : format == ImageFormat::png ? "png"
-                                                           : "tiff";
+    const char* format_name = format == ImageFormat::exr    ? "openexr"
+                              : format == ImageFormat::png  ? "png"
+                              : format == ImageFormat::jpeg ? "jpeg"
+                                                            : "tiff";
     auto out = OIIO::ImageOutput::create(format_name);
     if (!out) {
         throw Error(shown + ": OpenImageIO cannot write " + format_name + ": " +
@@ -323,7 +344,11 @@ void oiio_write(OutputFile& file, const Image& image, const ImageEncoding& encod
                        OIIO::TypeDesc(OIIO::TypeDesc::UINT8, static_cast<int>(image.icc_profile.size())),
                        image.icc_profile.data());
     }
-    if (!encoding.compression.empty()) spec.attribute("compression", encoding.compression);
+    if (format == ImageFormat::jpeg) {
+        spec.attribute("compression", quality);
+    } else if (!encoding.compression.empty()) {
+        spec.attribute("compression", encoding.compression);
+    }
 
     OutputProxy proxy(file);
     OIIO::Filesystem::IOProxy* proxy_pointer = &proxy;

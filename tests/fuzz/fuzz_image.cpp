@@ -13,6 +13,9 @@
 // and 2^22 samples (io::ImageLimits), so that a harness run never needs more than a few hundred
 // MB; irid's own limits are 64 Mpixel and 2^28 samples (docs/RELIABILITY.md).
 //
+// Its space is read as irid clip reads it (irid/exchange/icc.h: the ICC profile through Little
+// CMS, the EXR chromaticities).
+//
 // Checked: an image read has width, height, channels >= 1, one name per channel and
 // width x height x channels samples; the clipped colours are finite and inside [0, max]^3; an
 // image written reads back with the same size and channel count.
@@ -20,6 +23,7 @@
 
 #include <irid/color/rgb.h>
 #include <irid/error.h>
+#include <irid/exchange/icc.h>
 #include <irid/gamut/batch.h>
 #include <irid/gamut/clip.h>
 #include <irid/io/image.h>
@@ -191,6 +195,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     check_read(image);
+    // What the file says about its space (its ICC profile, its EXR chromaticities), as irid
+    // clip reads it: refused with irid::Error, or a space.
+    try {
+        const irid::ImageSpace space = irid::image_space(image, "fuzz");
+        IRID_FUZZ_REQUIRE(space.rgb.has_value() != (space.profile != nullptr),
+                          "an image space is exact or goes through Little CMS");
+    } catch (const irid::Error&) {
+    }
     clip_like_the_cli(std::move(image), exr_in, fnv1a(data, size));
     return 0;
 }

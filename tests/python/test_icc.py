@@ -304,6 +304,30 @@ def test_outputs_carry_a_profile_other_readers_use(irid_cli, tmp_path, space, pr
     assert params == pytest.approx(want, abs=1e-4)
 
 
+def test_jpeg_output_carries_the_profile(irid_cli, tmp_path):
+    save_tagged(tmp_path / "in.tif", patches(), (COLORD / "sRGB.icc").read_bytes())
+    run(irid_cli, "clip", "--method", "clamp", "--to", "display-p3", tmp_path / "in.tif",
+        tmp_path / "out.jpg")
+    from PIL import Image, ImageCms
+    with Image.open(tmp_path / "out.jpg") as im:
+        assert im.format == "JPEG" and im.mode == "RGB"
+        prof = ImageCms.ImageCmsProfile(io.BytesIO(im.info["icc_profile"]))
+    assert ImageCms.getProfileDescription(prof).strip() == "display-p3 (irid)"
+    tags = subprocess.run(["exiftool", "-s3", "-ProfileDescription", str(tmp_path / "out.jpg")],
+                          capture_output=True, text=True, check=True).stdout.strip()
+    assert tags == "display-p3 (irid)"
+    r = run(irid_cli, "clip", "--method", "clamp", "--bits", "16", tmp_path / "in.tif",
+            tmp_path / "deep.jpg", status=2)
+    assert "JPEG holds 8 bits" in r.stderr
+    rgba = np.zeros((2, 2, 4), np.float32)
+    with pytest.raises(OSError, match="JPEG holds 1 .grey. or 3 .RGB., no alpha"):
+        irid.write_image(tmp_path / "a.jpg", rgba)
+    with pytest.raises(KeyError, match="jpeg:QUALITY"):
+        irid.write_image(tmp_path / "a.jpg", rgba[..., :3], compression="jpeg:101")
+    irid.write_image(tmp_path / "q.jpg", np.full((8, 8, 3), 0.5), compression="jpeg:50")
+    assert not (tmp_path / "a.jpg").exists() and (tmp_path / "q.jpg").exists()
+
+
 def test_python_write_image_tags_and_read_image_reports(tmp_path):
     rgb = np.full((2, 2, 3), 0.5, np.float32)
     irid.write_image(tmp_path / "p3.png", rgb, color_space="display-p3")

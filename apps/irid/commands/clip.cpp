@@ -149,6 +149,10 @@ int run_clip_image(const ClipOptions& o, const ClipPipeline& p) {
         if (o.bits != 8 && o.bits != 16) {
             throw UsageError("--bits " + std::to_string(o.bits) + ": valid values are 8 and 16");
         }
+        if (format == io::ImageFormat::jpeg && o.bits != 8) {
+            throw UsageError("--bits " + std::to_string(o.bits) + ": JPEG holds 8 bits per sample; "
+                             "write PNG or TIFF for 16");
+        }
     }
     if (encoded_out && max > 1.0) {
         throw UsageError("--max " + format_shortest(max) +
@@ -204,11 +208,11 @@ int run_clip_image(const ClipOptions& o, const ClipPipeline& p) {
         file_pipeline.emplace(make_clip_pipeline(o, true, &*tagged_space));
     }
     const ClipPipeline& pipe = file_pipeline ? *file_pipeline : p;
-    // PNG and TIFF keep a 16-bit input's depth unless --bits says otherwise.
+    // PNG and TIFF keep a 16-bit input's depth unless --bits says otherwise; JPEG holds 8.
     const int bits =
         o.bits_option->count() > 0 ? o.bits
-        : (image.stored_integer && image.stored_bits > 8) ? 16
-                                                          : 8;
+        : (format != io::ImageFormat::jpeg && image.stored_integer && image.stored_bits > 8) ? 16
+                                                                                            : 8;
     if (image.stored_integer && pipe.from().family == Family::rgb_linear) {
         fmt::print(
             stderr,
@@ -292,11 +296,14 @@ void add_clip_command(CLI::App& app, Runner& runner) {
         "--count-ops", o->count_ops,
         "Print Table 1: operations per colour of the thesis' clip, ours beside the thesis'");
     cmd->add_option("IN", o->in,
-                    "Input image (EXR, TIFF, PNG, HDR, anything OpenImageIO reads). Its values are "
-                    "in --from: decoded with that space's transfer function when --from is an "
-                    "encoded name (an 8-bit sRGB PNG wants --from srgb)");
+                    "Input image (EXR, TIFF, PNG, JPEG, HDR, anything OpenImageIO reads). Its space "
+                    "is its ICC profile's or its EXR chromaticities', else sRGB (linear sRGB for "
+                    "floats); --from overrides it (an encoded name decodes the values with its "
+                    "transfer function)");
     cmd->add_option("OUT", o->out,
-                    "Output image: .exr (linear float), .png, .tif or .tiff (encoded)");
+                    "Output image: .exr (linear float, with the destination's chromaticities), "
+                    ".png, .tif, .tiff (8 or 16 bit) or .jpg, .jpeg (8 bit), encoded, with the "
+                    "destination's ICC profile");
     cmd->footer(
         "\nForms:\n"
         "  irid clip --method M [--from SPACE] [--to SPACE] < colours.csv   CSV, one colour a "

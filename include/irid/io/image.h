@@ -1,7 +1,8 @@
 #pragma once
 
 // Images through OpenImageIO: read anything OpenImageIO reads (EXR, TIFF, PNG, HDR, JPEG, ...)
-// into float pixels, write EXR (linear, 32-bit float) or PNG/TIFF (encoded, 8 or 16 bit).
+// into float pixels, write EXR (linear, 32-bit float), PNG/TIFF (encoded, 8 or 16 bit) or JPEG
+// (encoded, 8 bit).
 // Output files appear only when complete, and never replace what is not a regular file
 // (irid/io/output_file.h). Inputs are checked against stated limits before any pixel is
 // allocated (ImageLimits).
@@ -10,7 +11,7 @@
 // An 8- or 16-bit file (PNG, TIFF, JPEG) holds encoded values (sRGB, a gamma, ...); read_image
 // returns them scaled to [0, 1] and still encoded, and the caller decodes them with the transfer
 // function of the space they are in. write_image likewise expects encoded values in [0, 1] for
-// PNG and TIFF, and linear values for EXR.
+// PNG, TIFF and JPEG, and linear values for EXR.
 
 #include <cstddef>
 #include <filesystem>
@@ -115,12 +116,15 @@ enum class ImageFormat {
     png,
     /// .tif, .tiff: 8 or 16 bit, values in [0, 1] (encoded).
     tiff,
+    /// .jpg, .jpeg: 8 bit, 1 or 3 channels (no alpha), values in [0, 1] (encoded); baseline JPEG
+    /// at quality 95 unless ImageEncoding::compression says "jpeg:Q" (Q 1-100).
+    jpeg,
 };
 
 /// The format for a file name; throws irid::Error naming the file and listing the supported
-/// extensions (.exr, .png, .tif, .tiff) otherwise.
+/// extensions (.exr, .png, .tif, .tiff, .jpg, .jpeg) otherwise.
 [[nodiscard]] ImageFormat image_format_for(const std::filesystem::path& path);
-/// True for the 8/16-bit formats (PNG and TIFF), whose values are encoded and in [0, 1].
+/// True for the integer formats (PNG, TIFF, JPEG), whose values are encoded and in [0, 1].
 [[nodiscard]] constexpr bool is_integer_format(ImageFormat f) noexcept {
     return f != ImageFormat::exr;
 }
