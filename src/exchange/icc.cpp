@@ -435,6 +435,20 @@ std::vector<unsigned char> make_icc_profile(const RgbSpace& space, std::string_v
         throw Error("ICC profile of " + space.name() + ": " + ctx.reason("MD5 failed"));
     }
     bytes = saved(fixed.get());
+    // What a reader will take from it: the same space, or an error (colorants beyond what
+    // s15Fixed16Number can hold, a curve a 16-bit table cannot).
+    const IccProfile back = IccProfile::parse(bytes, "the ICC profile of " + space.name());
+    const auto near = [](const Xy& a, const Xy& b) {
+        return std::abs(a.x - b.x) <= 1e-4 && std::abs(a.y - b.y) <= 1e-4;
+    };
+    const RgbSpace* r = back.rgb_space() ? &*back.rgb_space() : nullptr;
+    if (r == nullptr || !near(r->primaries().red, p.red) || !near(r->primaries().green, p.green) ||
+        !near(r->primaries().blue, p.blue) || !near(r->white(), space.white()) ||
+        !(r->transfer().max_difference(t) <= 1e-4)) {
+        throw Error("ICC profile of " + space.name() +
+                    ": an ICC profile cannot hold this space (its colorants or its curve do not "
+                    "read back within 1e-4)");
+    }
     return bytes;
 }
 

@@ -154,6 +154,10 @@ TEST(IccProfile, WrittenProfilesReadBackAsTheSameSpace) {
     EXPECT_TRUE(std::any_of(a.begin() + 84, a.begin() + 100, [](unsigned char c) { return c != 0; }));
     EXPECT_EQ(a[24], 0x07);
     EXPECT_EQ(a[25], 0xEA);  // 2026
+    // A space no profile holds is refused, not written wrongly: a sampled curve beyond [0, 1]
+    // (a curveType table holds 16-bit values of [0, 1]).
+    const RgbSpace high("high", srgb().primaries(), srgb().white(), TransferFunction::sampled({0.0, 2.0}));
+    EXPECT_THROW((void)make_icc_profile(high), Error);
     // A sampled curve is written as a table and read back as one.
     std::vector<double> table(256);
     for (std::size_t i = 0; i < table.size(); ++i) table[i] = std::pow(static_cast<double>(i) / 255.0, 2.0);

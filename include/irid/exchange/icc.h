@@ -80,7 +80,10 @@ private:
 
 /// The ICC version 4.3 display profile of `space` (see the file comment), built by lcms2, with
 /// `description` ("" for "NAME (irid)") as its description tag and an MD5 profile ID. A sampled
-/// curve is written as a curveType table of its samples. Throws irid::Error if lcms2 fails.
+/// curve is written as a curveType table of its samples. The profile is read back before it is
+/// returned: throws irid::Error when lcms2 fails or when the profile would not give the same
+/// space within 1e-4 (primaries, white, decoded curve): colorants beyond the range of ICC's
+/// s15Fixed16Number, a sampled curve beyond [0, 1].
 [[nodiscard]] std::vector<unsigned char> make_icc_profile(const RgbSpace& space,
                                                           std::string_view description = {});
 
