@@ -10,13 +10,24 @@
 //   BakeLut/<method>/65                bake_lut: node inputs, checks, the same clip, the title
 //   LutText/cube/65, LutText/clf/65    the file's text (shortest round-trip floats, fmt)
 // Wall-clock time (UseRealTime), threads = all.
+//
+// Reading an image's colours through its ICC profile (irid/exchange/icc.h), one thread, 2^20
+// encoded Adobe RGB triples (12 MiB in, 12 MiB out; items are colours):
+//   Memcpy/icc                         memcpy of the triples
+//   ExactProfile/adobe-rgb             a matrix/TRC profile as irid takes it: the exact RgbSpace's
+//                                      Converter (decode, matrix, adapt) to XYZ D65
+//   LittleCms/adobe-rgb                the same profile through lcms2's float transform to XYZ
+//                                      and irid's Bradford adaptation (the path of LUT profiles)
+//   ReadProfile, MakeProfile           parsing a profile (lcms2, transform built); building one
 
 #include <irid/color/convert.h>
+#include <irid/exchange/icc.h>
 #include <irid/exchange/lut.h>
 #include <irid/gamut/pipeline.h>
 
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -85,6 +96,73 @@ void BM_LutText(benchmark::State& state, irid::LutFormat format) {
     }
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * nodes));
 }
+
+constexpr std::size_t icc_colours = std::size_t{1} << 20;
+
+std::vector<float> encoded_colours() {
+    std::vector<float> v(3 * icc_colours);
+    std::uint32_t x = 12345;
+    for (float& f : v) {
+        x = x * 1664525u + 1013904223u;  // Numerical Recipes' LCG: reproducible, cheap
+        f = static_cast<float>(x >> 8) / 16777216.0f;
+    }
+    return v;
+}
+
+void BM_IccMemcpy(benchmark::State& state) {
+    const std::vector<float> in = encoded_colours();
+    std::vector<float> out(in.size());
+    for (auto _ : state) {
+        std::memcpy(out.data(), in.data(), in.size() * sizeof(float));
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * icc_colours));
+}
+BENCHMARK(BM_IccMemcpy)->Name("Memcpy/icc")->UseRealTime()->Unit(benchmark::kMillisecond);
+
+void BM_ExactProfile(benchmark::State& state) {
+    const irid::IccProfile p = irid::IccProfile::parse(irid::make_icc_profile(irid::adobe_rgb()), "bench");
+    const irid::ColorSpace from{irid::SpaceFamily::rgb_encoded, &*p.rgb_space()};
+    const irid::Converter convert(from, irid::color_space("xyz"));
+    const std::vector<float> in = encoded_colours();
+    std::vector<float> out(in.size());
+    for (auto _ : state) {
+        convert.convert(in, out);
+        benchmark::DoNotOptimize(out.data());
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * icc_colours));
+}
+BENCHMARK(BM_ExactProfile)->Name("ExactProfile/adobe-rgb")->UseRealTime()->Unit(benchmark::kMillisecond);
+
+void BM_LittleCms(benchmark::State& state) {
+    const irid::IccProfile p = irid::IccProfile::parse(irid::make_icc_profile(irid::adobe_rgb()), "bench");
+    const std::vector<float> in = encoded_colours();
+    std::vector<float> out(in.size());
+    for (auto _ : state) {
+        p.to_xyz(in, out, {0.3127, 0.3290}, 1);
+        benchmark::DoNotOptimize(out.data());
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * icc_colours));
+}
+BENCHMARK(BM_LittleCms)->Name("LittleCms/adobe-rgb")->UseRealTime()->Unit(benchmark::kMillisecond);
+
+void BM_ReadProfile(benchmark::State& state) {
+    const std::vector<unsigned char> bytes = irid::make_icc_profile(irid::display_p3());
+    for (auto _ : state) {
+        irid::IccProfile p = irid::IccProfile::parse(bytes, "bench");
+        benchmark::DoNotOptimize(&p);
+    }
+}
+BENCHMARK(BM_ReadProfile)->Name("ReadProfile/display-p3")->Unit(benchmark::kMicrosecond);
+
+void BM_MakeProfile(benchmark::State& state) {
+    for (auto _ : state) {
+        std::vector<unsigned char> bytes = irid::make_icc_profile(irid::display_p3());
+        benchmark::DoNotOptimize(bytes.data());
+    }
+}
+BENCHMARK(BM_MakeProfile)->Name("MakeProfile/display-p3")->Unit(benchmark::kMicrosecond);
 
 const int registered = [] {
     for (const auto method : {irid::ClipMethod::smits, irid::ClipMethod::oklab_cusp,
