@@ -519,8 +519,17 @@ def _file_space(metadata):
     if icc is not None and not isinstance(icc, (bytes, bytearray)):
         raise ValueError("source: 'icc_profile' must be bytes or None")
     return _irid.FileSpace(None if icc is None else bytes(icc),
-                           None if chroma is None else [float(v) for v in chroma],
-                           bool(integer), bool(metadata.get("icc_profile_rejected", False)))
+                           None if chroma is None else _floats(chroma, "source: 'chromaticities'"),
+                           _flag(integer, "source: 'integer'"),
+                           _flag(metadata.get("icc_profile_rejected", False),
+                                 "source: 'icc_profile_rejected'"))
+
+
+def _floats(values, what):
+    try:
+        return [float(v) for v in values]
+    except (TypeError, ValueError):
+        raise ValueError(f"{what}: {values!r} is not a sequence of numbers") from None
 
 
 def image_space(metadata):
@@ -536,10 +545,7 @@ def image_space(metadata):
     profile irid cannot use (corrupt, CMYK, a device link, ...).
     """
     f = _file_space(metadata)
-    name = f.space
-    if name not in _RGB_SPACES:
-        name = None
-    return {"space": name, "origin": f.origin, "assumed": f.assumed, "encoded": f.encoded,
+    return {"space": f.space, "origin": f.origin, "assumed": f.assumed, "encoded": f.encoded,
             "exact": f.exact}
 
 
@@ -609,7 +615,7 @@ def write_image(path, array, channels=None, color_space="", description="", bits
     if icc_profile is not None and not isinstance(icc_profile, (bytes, bytearray)):
         raise ValueError("icc_profile: an ICC profile is bytes")
     if chromaticities is not None:
-        chromaticities = [float(v) for v in chromaticities]
+        chromaticities = _floats(chromaticities, "chromaticities")
     return _irid.write_image(_path(path), array, names, _text(color_space, "color_space"),
                              _text(description, "description"), int(bits),
                              _text(compression, "compression"), _flag(tag, "tag"),

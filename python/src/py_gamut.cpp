@@ -172,7 +172,8 @@ void add_gamut(py::module_& m) {
              }),
              py::arg("icc_profile"), py::arg("chromaticities"), py::arg("integer"), py::arg("rejected"))
         .def_property_readonly("space", [](const FileSpace& f) {
-            return f.space.profile ? py::object(py::none()) : py::object(py::str(color_space_name(f.colour)));
+            if (f.space.builtin == nullptr) return py::object(py::none());
+            return py::object(py::str(color_space_name(ColorSpace{f.colour.family, f.space.builtin})));
         })
         .def_property_readonly("origin", [](const FileSpace& f) { return f.space.origin; })
         .def_property_readonly("assumed", [](const FileSpace& f) { return f.space.assumed; })

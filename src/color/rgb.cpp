@@ -102,6 +102,18 @@ TransferFunction TransferFunction::parametric(int function_type, std::span<const
         throw Error("parametric curve: c = " + format_shortest(q[3]) +
                     " must be >= 0 (the curve must not fall)");
     }
+    // Where the pieces meet (d in [0, 1]), the upper one must not start below the lower one by
+    // more than the rounding of published constants leaves (BT.709's pieces miss by 5.5e-5, the
+    // L* curves of eciRGB by 6e-7).
+    if (q[4] > 0.0 && q[4] <= 1.0) {
+        const double lower = q[3] * q[4] + q[6];
+        const double upper = std::pow(std::max(0.0, q[1] * q[4] + q[2]), g) + q[5];
+        if (upper < lower - 1e-3) {
+            throw Error("parametric curve: it falls at d = " + format_shortest(q[4]) + " (from " +
+                        format_shortest(lower) + " to " + format_shortest(upper) +
+                        "); a decoding must not fall");
+        }
+    }
     return TransferFunction(Kind::parametric, q, nullptr);
 }
 
@@ -178,7 +190,9 @@ double TransferFunction::encode_magnitude(double v) const noexcept {
     if (m_kind == Kind::parametric) {
         const auto& [g, a, b, c, d, oe, of] = m_params;
         const double at_d = std::pow(std::max(0.0, a * d + b), g) + oe;
-        if (v >= at_d) return std::max(0.0, (std::pow(std::max(0.0, v - oe), 1.0 / g) - b) / a);
+        // The upper piece starts at d: rounding must not put its inverse below (where decoding
+        // would take the other piece).
+        if (v >= at_d) return std::max({0.0, d, (std::pow(std::max(0.0, v - oe), 1.0 / g) - b) / a});
         // Below the upper piece: the linear piece, or d where it is flat (or jumps past v).
         if (c <= 0.0) return std::max(0.0, d);
         return std::clamp((v - of) / c, 0.0, std::max(0.0, d));
@@ -203,7 +217,11 @@ double TransferFunction::encode(double linear) const noexcept {
     switch (m_kind) {
         case Kind::linear: return linear;
         case Kind::parametric:
-        case Kind::sampled: return std::copysign(encode_magnitude(v), linear);
+        case Kind::sampled:
+            // Mirrored by the sign of the input (a curve may decode below 0: negative offsets);
+            // NaN passes through.
+            if (std::isnan(linear)) return linear;
+            return linear < 0.0 ? -encode_magnitude(v) : encode_magnitude(v);
         default: break;
     }
     // Every built-in curve maps 1 to 1; the formulas' last bit does not (1.055 − 0.055 rounds
@@ -227,7 +245,9 @@ double TransferFunction::decode(double encoded) const noexcept {
     switch (m_kind) {
         case Kind::linear: return encoded;
         case Kind::parametric:
-        case Kind::sampled: return std::copysign(decode_magnitude(e), encoded);
+        case Kind::sampled:
+            if (std::isnan(encoded)) return encoded;
+            return encoded < 0.0 ? -decode_magnitude(e) : decode_magnitude(e);
         default: break;
     }
     switch (m_kind) {

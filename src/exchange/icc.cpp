@@ -101,9 +101,10 @@ std::string data_space_name(cmsColorSpaceSignature cs) {
     }
 }
 
-/// A tone curve as a TransferFunction, or nothing (with the reason) when it is not one
-/// (a segmented curve lcms2 cannot sample, a table that falls).
-std::optional<TransferFunction> transfer_of(const cmsToneCurve* c, std::string& reason) {
+/// A tone curve as a TransferFunction. Throws irid::Error (after `where`) for a curve that is
+/// no decoding (one that falls, is flat, or has parameters out of range): lcms2 would apply it
+/// as it is (a reversed table inverts the image), which is never what an image means.
+TransferFunction transfer_of(const cmsToneCurve* c, const std::string& where, const char* channel) {
     // lcms2's types 1-5 are ICC.1's parametric function types 0-4; their parameter counts.
     static constexpr int counts[] = {1, 3, 4, 5, 7};
     const cmsInt32Number type = cmsGetToneCurveParametricType(c);
@@ -114,16 +115,12 @@ std::optional<TransferFunction> transfer_of(const cmsToneCurve* c, std::string& 
         }
         const cmsUInt32Number n = cmsGetToneCurveEstimatedTableEntries(c);
         const cmsUInt16Number* table = cmsGetToneCurveEstimatedTable(c);
-        if (table == nullptr || n < 2) {
-            reason = "a tone curve without a table";
-            return std::nullopt;
-        }
+        if (table == nullptr || n < 2) throw Error("a tone curve without a table");
         std::vector<double> linear(n);
         for (cmsUInt32Number i = 0; i < n; ++i) linear[i] = table[i] / 65535.0;
         return TransferFunction::sampled(std::move(linear));
     } catch (const Error& e) {
-        reason = std::string("a tone curve irid cannot take exactly (") + e.what() + ")";
-        return std::nullopt;
+        throw Error(where + "its " + channel + " tone curve is no decoding of image values: " + e.what());
     }
 }
 
@@ -136,9 +133,10 @@ bool same_curve(const TransferFunction& a, const TransferFunction& b) {
     return a.parameters() == b.parameters();
 }
 
-/// The exact space of a matrix/TRC profile (see icc.h), or nothing with the reason.
+/// The exact space of a matrix/TRC profile (see icc.h), or nothing with the reason (three
+/// different curves). Throws irid::Error for tags that cannot be read or used.
 std::optional<RgbSpace> matrix_trc_space(cmsHPROFILE h, const std::string& name, const std::string& where,
-                                         std::string& reason) {
+                                         const Context& ctx, std::string& reason) {
     const auto* r = static_cast<const cmsCIEXYZ*>(cmsReadTag(h, cmsSigRedColorantTag));
     const auto* g = static_cast<const cmsCIEXYZ*>(cmsReadTag(h, cmsSigGreenColorantTag));
     const auto* b = static_cast<const cmsCIEXYZ*>(cmsReadTag(h, cmsSigBlueColorantTag));
@@ -146,12 +144,12 @@ std::optional<RgbSpace> matrix_trc_space(cmsHPROFILE h, const std::string& name,
     const auto* gt = static_cast<const cmsToneCurve*>(cmsReadTag(h, cmsSigGreenTRCTag));
     const auto* bt = static_cast<const cmsToneCurve*>(cmsReadTag(h, cmsSigBlueTRCTag));
     if (r == nullptr || g == nullptr || b == nullptr || rt == nullptr || gt == nullptr || bt == nullptr) {
-        throw Error(where + "its colorant or tone-curve tags cannot be read");
+        throw Error(where + "its colorant or tone-curve tags cannot be read: " +
+                    ctx.reason("a tag is damaged"));
     }
-    std::optional<TransferFunction> curves[3] = {transfer_of(rt, reason), transfer_of(gt, reason),
-                                                 transfer_of(bt, reason)};
-    if (!curves[0] || !curves[1] || !curves[2]) return std::nullopt;
-    if (!same_curve(*curves[0], *curves[1]) || !same_curve(*curves[0], *curves[2])) {
+    const TransferFunction curves[3] = {transfer_of(rt, where, "red"), transfer_of(gt, where, "green"),
+                                        transfer_of(bt, where, "blue")};
+    if (!same_curve(curves[0], curves[1]) || !same_curve(curves[0], curves[2])) {
         reason = "three different tone curves";
         return std::nullopt;
     }
@@ -189,13 +187,13 @@ std::optional<RgbSpace> matrix_trc_space(cmsHPROFILE h, const std::string& name,
     const Xy bxy = chromaticity(times(to_native, {b->X, b->Y, b->Z}), where, "blue colorant");
     const Xy wxy = chromaticity(white, where, "white point");
     try {
-        return RgbSpace(name, {rxy, gxy, bxy}, wxy, *curves[0]);
+        return RgbSpace(name, {rxy, gxy, bxy}, wxy, curves[0]);
     } catch (const Error& e) {
         throw Error(where + "its colorants make no RGB space: " + e.what());
     }
 }
 
-/// UTF-8 → wchar_t (UTF-32 here); malformed bytes become U+FFFD.
+/// UTF-8 → the UTF-16 units lcms2 stores, one per wchar_t; malformed bytes become U+FFFD.
 std::wstring wide(std::string_view s) {
     std::wstring out;
     for (std::size_t i = 0; i < s.size();) {
@@ -213,17 +211,31 @@ std::wstring wide(std::string_view s) {
             ok = ok && (n >> 6) == 2;
             code = (code << 6) | (n & 0x3Fu);
         }
-        out += ok ? static_cast<wchar_t>(code) : L'\uFFFD';
+        if (!ok || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) code = 0xFFFD;
+        if (code > 0xFFFF) {  // a surrogate pair: lcms2 2.14 writes each wchar_t as a UTF-16 unit
+            out += static_cast<wchar_t>(0xD800 + ((code - 0x10000) >> 10));
+            out += static_cast<wchar_t>(0xDC00 + ((code - 0x10000) & 0x3FF));
+        } else {
+            out += static_cast<wchar_t>(code);
+        }
         i += ok ? static_cast<std::size_t>(extra) + 1 : 1;
     }
     return out;
 }
 
-/// wchar_t (UTF-32 here) → UTF-8; what is not a Unicode scalar value becomes U+FFFD.
+/// lcms2's wchar_t text (UTF-16 units from the profile's mluc, or whole code points) → UTF-8;
+/// what is not a Unicode scalar value becomes U+FFFD.
 std::string utf8(std::wstring_view s) {
     std::string out;
-    for (const wchar_t wc : s) {
-        auto c = static_cast<std::uint32_t>(wc);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        auto c = static_cast<std::uint32_t>(s[i]);
+        if (c >= 0xD800 && c <= 0xDBFF && i + 1 < s.size()) {
+            const auto low = static_cast<std::uint32_t>(s[i + 1]);
+            if (low >= 0xDC00 && low <= 0xDFFF) {
+                c = 0x10000 + ((c - 0xD800) << 10) + (low - 0xDC00);
+                ++i;
+            }
+        }
         if (c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) c = 0xFFFD;
         if (c < 0x80) {
             out += static_cast<char>(c);
@@ -310,21 +322,23 @@ IccProfile IccProfile::parse(std::span<const unsigned char> bytes, const std::st
     const cmsUInt32Number v = cmsGetEncodedICCversion(h.get());
     out.m_version = fmt::format("{}.{}", (v >> 24) & 0xFF, (v >> 20) & 0xF);
 
-    if (cmsIsMatrixShaper(h.get())) {
-        const std::string name = out.m_description.empty() ? "icc-profile" : out.m_description;
-        out.m_space = matrix_trc_space(h.get(), name, where, out.m_not_exact);
-    } else {
+    // An A2B table takes precedence over the matrix/TRC tags (ICC.1:2022 §8.4; lcms2 and every
+    // CMM use it): a profile with both (DisplayCAL's "XYZ LUT + matrix") is a LUT profile.
+    const bool a2b = cmsIsTag(h.get(), cmsSigAToB0Tag) || cmsIsTag(h.get(), cmsSigAToB1Tag);
+    if (a2b) {
         out.m_not_exact = "a LUT-based profile";
+    } else if (cmsIsMatrixShaper(h.get())) {
+        const std::string name = out.m_description.empty() ? "icc-profile" : out.m_description;
+        out.m_space = matrix_trc_space(h.get(), name, where, ctx, out.m_not_exact);
     }
-
-    cmsUInt32Number intent = INTENT_RELATIVE_COLORIMETRIC;
-    if (!cmsIsIntentSupported(h.get(), intent, LCMS_USED_AS_INPUT)) {
-        intent = INTENT_PERCEPTUAL;
-        if (!cmsIsIntentSupported(h.get(), intent, LCMS_USED_AS_INPUT)) {
-            throw Error(where + "it has neither matrix/TRC tags nor an A2B table: nothing turns its "
-                                "values into colours");
-        }
+    if (!a2b && !cmsIsMatrixShaper(h.get())) {
+        throw Error(where + "it has neither matrix/TRC tags nor an A2B table: nothing turns its "
+                            "values into colours" +
+                    (ctx.error.empty() ? std::string() : " (" + ctx.error + ")"));
     }
+    // Relative colorimetric always: lcms2 takes A2B1 for it, else A2B0, without the black-point
+    // compensation it adds to the perceptual intent of version 4 profiles.
+    const cmsUInt32Number intent = INTENT_RELATIVE_COLORIMETRIC;
     const Profile xyz(cmsCreateXYZProfileTHR(ctx.handle));
     if (!xyz) throw Error(where + "Little CMS could not create an XYZ profile");
     transform->handle = cmsCreateTransformTHR(ctx.handle, h.get(), TYPE_RGB_FLT, xyz.get(), TYPE_XYZ_FLT,
@@ -503,8 +517,8 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
         s.encoded = true;
         s.origin = profile->summary();
         if (profile->rgb_space()) {
-            const RgbSpace* builtin = matching_builtin_space(*profile->rgb_space());
-            s.rgb = builtin != nullptr ? *builtin : *profile->rgb_space();
+            s.builtin = matching_builtin_space(*profile->rgb_space());
+            s.rgb = s.builtin != nullptr ? *s.builtin : *profile->rgb_space();
         } else {
             s.profile = std::move(profile);
         }
@@ -512,8 +526,8 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
     }
     if (!image.chromaticities.empty()) {
         const RgbSpace exr = rgb_space_from_chromaticities(image.chromaticities, "exr-chromaticities", what);
-        const RgbSpace* builtin = matching_builtin_space(exr, 2e-4, true);
-        s.rgb = builtin != nullptr ? *builtin : exr;
+        s.builtin = matching_builtin_space(exr, 2e-4, true);
+        s.rgb = s.builtin != nullptr ? *s.builtin : exr;
         s.origin = fmt::format("its EXR chromaticities (red {:.4f}, {:.4f}, green {:.4f}, {:.4f}, blue {:.4f}, "
                                "{:.4f}, white {:.4f}, {:.4f})",
                                image.chromaticities[0], image.chromaticities[1], image.chromaticities[2],
@@ -522,6 +536,7 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
         return s;
     }
     s.assumed = true;
+    s.builtin = &srgb();
     s.rgb = srgb();
     s.encoded = image.stored_integer;
     s.origin = "no ICC profile or chromaticities";
@@ -529,6 +544,13 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
 }
 
 void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format) {
+    if (image.channels < 3) {  // an RGB profile or chromaticities do not describe grey
+        image.color_space = format == io::ImageFormat::exr ? space.name() + "-linear" : space.name();
+        image.icc_profile.clear();
+        image.chromaticities.clear();
+        image.adopted_neutral.clear();
+        return;
+    }
     if (format == io::ImageFormat::exr) {
         image.color_space = space.name() + "-linear";
         const std::array<float, 8> c = exr_chromaticities(space);

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fcntl.h>
@@ -216,6 +217,106 @@ void check_declared_pixels(const std::string& shown, std::uint64_t width, std::u
     }
 }
 
+/// An embedded ICC profile's tag table (ICC.1:2022 §7.3): every tag inside the profile.
+/// OpenImageIO 2.4 reads the tags of a TIFF's or JPEG's profile without checking them against
+/// its size (decode_icc_profile), and a tag offset that wraps past 2^32 crashes it; libpng
+/// drops such a PNG profile itself.
+void check_icc(const std::string& shown, const std::vector<unsigned char>& p) {
+    const std::string where = shown + ": ICC profile: damaged: ";
+    if (p.size() < 132) {
+        throw Error(where + "only " + std::to_string(p.size()) + " bytes; a profile holds a 128-byte "
+                    "header and a tag table");
+    }
+    const std::uint64_t declared = big_endian32(p.data());
+    if (declared > p.size()) {
+        throw Error(shown + ": ICC profile: truncated: its header declares " + std::to_string(declared) +
+                    " bytes and " + std::to_string(p.size()) + " are there");
+    }
+    const std::uint64_t size = declared;
+    const std::uint64_t count = big_endian32(p.data() + 128);
+    if (132 + 12 * count > size) {
+        throw Error(where + "its tag table of " + std::to_string(count) + " tags runs past its " +
+                    std::to_string(size) + " bytes");
+    }
+    for (std::uint64_t i = 0; i < count; ++i) {
+        const unsigned char* t = p.data() + 132 + 12 * i;
+        const std::uint64_t offset = big_endian32(t + 4), length = big_endian32(t + 8);
+        if (offset + length > size) {
+            throw Error(where + "tag " + std::to_string(i) + " ('" + printable(t, 4) + "') at byte " +
+                        std::to_string(offset) + ", " + std::to_string(length) +
+                        " bytes long, runs past the profile's " + std::to_string(size) + " bytes");
+        }
+    }
+}
+
+/// `n` bytes at `offset`, in pieces the reader's buffer holds; empty when the file ends first.
+std::vector<unsigned char> read_bytes(Reader& file, std::uint64_t offset, std::uint64_t n) {
+    std::vector<unsigned char> out;
+    if (offset + n > file.size()) return out;
+    out.resize(n);
+    for (std::uint64_t done = 0; done < n;) {
+        const std::size_t piece = static_cast<std::size_t>(std::min<std::uint64_t>(n - done, 1 << 15));
+        if (!file.read(offset + done, out.data() + done, piece)) return {};
+        done += piece;
+    }
+    return out;
+}
+
+/// TIFF (TIFF 6.0 §2, classic TIFF): the ICC profile of the first directory, tag 34675.
+void check_tiff_icc(const std::string& shown, Reader& file) {
+    unsigned char head[8];
+    if (!file.read(0, head, sizeof head)) return;
+    const bool little = head[0] == 'I';
+    const auto u16 = [little](const unsigned char* q) {
+        return little ? static_cast<std::uint32_t>(q[0] | q[1] << 8) : static_cast<std::uint32_t>(q[0] << 8 | q[1]);
+    };
+    const auto u32 = [little](const unsigned char* q) { return little ? little_endian32(q) : big_endian32(q); };
+    const std::uint64_t ifd = u32(head + 4);
+    unsigned char count_bytes[2];
+    if (!file.read(ifd, count_bytes, 2)) return;
+    const std::uint32_t entries = u16(count_bytes);
+    for (std::uint32_t i = 0; i < entries; ++i) {
+        unsigned char e[12];
+        if (!file.read(ifd + 2 + 12 * std::uint64_t{i}, e, sizeof e)) return;
+        if (u16(e) != 34675) continue;
+        const std::uint64_t n = u32(e + 4);
+        if (n > (std::uint64_t{64} << 20)) return;  // libtiff refuses such a tag itself
+        const std::vector<unsigned char> profile =
+            n <= 4 ? std::vector<unsigned char>(e + 8, e + 8 + n) : read_bytes(file, u32(e + 8), n);
+        if (profile.size() == n) check_icc(shown, profile);
+        return;
+    }
+}
+
+/// JPEG (ICC.1:2022 Annex B.4): the profile in APP2 "ICC_PROFILE" segments, joined in their order.
+void check_jpeg_icc(const std::string& shown, Reader& file) {
+    std::vector<std::pair<int, std::vector<unsigned char>>> chunks;
+    std::uint64_t pos = 2;
+    unsigned char m[4];
+    while (file.read(pos, m, 4) && m[0] == 0xFF) {
+        const unsigned marker = m[1];
+        if (marker == 0xDA || marker == 0xD9) break;  // the scan, or the end
+        if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0xFF) {
+            pos += marker == 0xFF ? 1 : 2;
+            continue;
+        }
+        const std::uint64_t length = static_cast<std::uint64_t>(m[2]) << 8 | m[3];
+        if (length < 2) return;
+        if (marker == 0xE2 && length >= 16) {
+            std::vector<unsigned char> data = read_bytes(file, pos + 4, length - 2);
+            if (data.size() >= 14 && std::memcmp(data.data(), "ICC_PROFILE\0", 12) == 0) {
+                chunks.emplace_back(data[12], std::vector<unsigned char>(data.begin() + 14, data.end()));
+            }
+        }
+        pos += 2 + length;
+    }
+    if (chunks.empty()) return;
+    std::stable_sort(chunks.begin(), chunks.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<unsigned char> profile;
+    for (const auto& c : chunks) profile.insert(profile.end(), c.second.begin(), c.second.end());
+    check_icc(shown, profile);
+}
+
 HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLimits& limits) {
     const std::string shown = path.string();
     HeaderFacts facts;
@@ -235,6 +336,8 @@ HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLim
     if (!file.read(0, magic, sizeof magic)) return facts;
     if (std::memcmp(magic, "\x89PNG\r\n\x1a\n", 8) == 0) check_png(shown, file, limits, facts);
     if (std::memcmp(magic, "\x76\x2f\x31\x01", 4) == 0) check_exr(shown, file, limits);
+    if (std::memcmp(magic, "II*\0", 4) == 0 || std::memcmp(magic, "MM\0*", 4) == 0) check_tiff_icc(shown, file);
+    if (std::memcmp(magic, "\xff\xd8\xff", 3) == 0) check_jpeg_icc(shown, file);
     return facts;
 }
 

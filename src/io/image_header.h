@@ -20,7 +20,9 @@ struct HeaderFacts {
 /// For PNG and OpenEXR files: throws irid::Error naming the file when a chunk or a header
 /// attribute declares more bytes than the file holds, when a PNG's compressed data cannot hold
 /// the pixels its header declares, or when the declared size (PNG IHDR, EXR dataWindow) is
-/// beyond `limits`. Other formats, and files it cannot open, pass (the decoder reports them).
+/// beyond `limits`, and, for TIFF and JPEG, when an embedded ICC profile's tag table runs past
+/// the profile (OpenImageIO 2.4 reads it unchecked). Other formats, and files it cannot open,
+/// pass (the decoder reports them).
 HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLimits& limits);
 
 /// Throws irid::Error "<file>: the image declares W x H pixels (N Mpixel); irid reads at most

@@ -150,17 +150,19 @@ Image oiio_read(const fs::path& path, const ImageLimits& limits) {
         const auto* bytes = static_cast<const unsigned char*>(icc->data());
         image.icc_profile.assign(bytes, bytes + icc->type().numelements() * icc->nvalues());
     }
-    const auto floats = [&spec](const char* name, std::size_t count) {
+    // As many floats as the attribute holds (up to 64): a wrong count is for the reader of the
+    // space to refuse, not to drop here.
+    const auto floats = [&spec](const char* name) {
         std::vector<float> out;
         const OIIO::ParamValue* p = spec.find_attribute(name);
         if (p == nullptr || p->type().basetype != OIIO::TypeDesc::FLOAT) return out;
-        if (p->type().basevalues() * static_cast<std::size_t>(p->nvalues()) != count) return out;
+        const std::size_t count = p->type().basevalues() * static_cast<std::size_t>(p->nvalues());
         const auto* v = static_cast<const float*>(p->data());
-        out.assign(v, v + count);
+        out.assign(v, v + std::min<std::size_t>(count, 64));
         return out;
     };
-    image.chromaticities = floats("chromaticities", 8);
-    image.adopted_neutral = floats("adoptedNeutral", 2);
+    image.chromaticities = floats("chromaticities");
+    image.adopted_neutral = floats("adoptedNeutral");
     image.stored_integer = !spec.format.is_floating_point();
     image.stored_bits =
         spec.get_int_attribute("oiio:BitsPerSample", static_cast<int>(spec.format.size() * 8));

@@ -269,7 +269,30 @@ TEST(TransferFunction, ParametricAndSampledCurvesRoundTripAndMirrorNegatives) {
     EXPECT_DOUBLE_EQ(flat.encode(0.0), 0.0);
 }
 
+TEST(TransferFunction, NegativeOffsetsJumpsAndNanAreTakenAsTheyAre) {
+    // Type 4 with e = f = -0.01: black decodes to -0.01 (not mirrored to +0.01).
+    const auto t = TransferFunction::parametric(4, std::vector{2.2, 1.0, 0.0, 0.5, 0.0, -0.01, -0.01});
+    EXPECT_DOUBLE_EQ(t.decode(0.0), -0.01);
+    EXPECT_DOUBLE_EQ(t.decode(0.05), std::pow(0.05, 2.2) - 0.01);
+    EXPECT_DOUBLE_EQ(t.decode(-0.05), -(std::pow(0.05, 2.2) - 0.01));  // mirrored by the input's sign
+    // A curve that jumps up at d: encoding the top of the jump gives d, which decodes to it.
+    const auto jump = TransferFunction::parametric(3, std::vector{1.0, 1.0, 0.12, 0.1, 0.2});
+    const double top = jump.decode(0.2);
+    EXPECT_DOUBLE_EQ(top, 0.32);
+    EXPECT_GE(jump.encode(top), 0.2);
+    EXPECT_DOUBLE_EQ(jump.decode(jump.encode(top)), top);
+    EXPECT_DOUBLE_EQ(jump.encode(0.01), 0.1);   // the lower piece, 0.1 e
+    EXPECT_DOUBLE_EQ(jump.encode(0.05), 0.2);   // inside the jump (0.02 to 0.32): d
+    // NaN in, NaN out (no table index from it).
+    const auto s = TransferFunction::sampled({0.0, 0.25, 1.0});
+    EXPECT_TRUE(std::isnan(s.decode(std::nan(""))));
+    EXPECT_TRUE(std::isnan(s.encode(std::nan(""))));
+    EXPECT_TRUE(std::isnan(t.decode(std::nan(""))));
+}
+
 TEST(TransferFunction, RefusesCurvesThatAreNotDecodings) {
+    // A type-4 curve that falls where its pieces meet.
+    EXPECT_THROW((void)TransferFunction::parametric(4, std::vector{1.0, 1.0, 0.0, 1.0, 0.5, -0.3, 0.0}), Error);
     EXPECT_THROW((void)TransferFunction::parametric(5, std::vector{1.0}), Error);
     EXPECT_THROW((void)TransferFunction::parametric(3, std::vector{2.2, 1.0}), Error);
     EXPECT_THROW((void)TransferFunction::parametric(1, std::vector{2.2, -1.0, 0.0}), Error);

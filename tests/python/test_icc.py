@@ -364,6 +364,103 @@ def test_python_clip_image_takes_the_files_space(irid_cli, tmp_path):
     assert np.abs(np.round(out * 255) - np.round(cli * 255)).max() == 0
 
 
+# --- LUT profiles, and profiles that carry a LUT beside their matrix -------------------------
+
+def icc_tags(profile):
+    """(signature, data) of each tag (ICC.1:2022 §7.3)."""
+    import struct
+    count = struct.unpack(">I", profile[128:132])[0]
+    out = []
+    for i in range(count):
+        sig, off, n = struct.unpack(">4sII", profile[132 + 12 * i:144 + 12 * i])
+        out.append((sig, profile[off:off + n]))
+    return out
+
+
+def icc_assemble(header, tags):
+    """A profile of `header`'s first 128 bytes and these tags, 4-byte aligned, sizes set."""
+    import struct
+    table = 132 + 12 * len(tags)
+    data, entries, at = b"", b"", table
+    for sig, body in tags:
+        pad = (-len(body)) % 4
+        entries += struct.pack(">4sII", sig, at, len(body))
+        data += body + b"\0" * pad
+        at += len(body) + pad
+    head = bytearray(header[:128])
+    head[0:4] = struct.pack(">I", table + len(data))
+    head[84:100] = bytes(16)   # no profile ID: it would no longer match
+    return bytes(head) + struct.pack(">I", len(tags)) + entries + data
+
+
+def lcms_link_as_profile(pcs):
+    """An RGB profile whose only transform is an A2B0 table: lcms2's device link from its own
+    sRGB to Lab or XYZ (cmsTransform2DeviceLink), relabelled a display profile."""
+    lib = _lcms()
+    for name, args in (("cmsCreate_sRGBProfile", []), ("cmsCreateLab4Profile", [ctypes.c_void_p]),
+                       ("cmsCreateXYZProfile", [])):
+        getattr(lib, name).restype = ctypes.c_void_p
+        getattr(lib, name).argtypes = args
+    lib.cmsTransform2DeviceLink.restype = ctypes.c_void_p
+    lib.cmsTransform2DeviceLink.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_uint32]
+    src = lib.cmsCreate_sRGBProfile()
+    dst = lib.cmsCreateLab4Profile(None) if pcs == "lab" else lib.cmsCreateXYZProfile()
+    # lcms2.h: TYPE_RGB_16, TYPE_Lab_16 (PT_Lab = 10), TYPE_XYZ_16 (PT_XYZ = 9).
+    out_format = ((10 if pcs == "lab" else 9) << 16) | (3 << 3) | 2
+    t = lib.cmsCreateTransform(src, (4 << 16) | (3 << 3) | 2, dst, out_format, 1, 0)
+    link = lib.cmsTransform2DeviceLink(t, 4.3, 0)
+    n = ctypes.c_uint32(0)
+    assert lib.cmsSaveProfileToMem(link, None, ctypes.byref(n))
+    buf = ctypes.create_string_buffer(n.value)
+    assert lib.cmsSaveProfileToMem(link, buf, ctypes.byref(n))
+    profile = bytearray(buf.raw[:n.value])
+    profile[12:16] = b"mntr"   # ICC.1 §7.2.5: the class
+    return bytes(profile)
+
+
+@pytest.mark.parametrize("pcs", ["lab", "xyz"])
+def test_lut_profile_goes_through_little_cms_as_pil_does(irid_cli, tmp_path, pcs):
+    profile = lcms_link_as_profile(pcs)
+    info = irid.read_icc_profile(profile)
+    assert not info["exact"] and info["reason"] == "a LUT-based profile"
+    px = patches()
+    save_tagged(tmp_path / "in.tif", px, profile)
+    r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "in.tif",
+            tmp_path / "out.png")
+    assert "no ICC profile" not in r.stderr
+    got, _ = read_u8(tmp_path / "out.png")
+    assert np.abs(got - pil_to_srgb(px, profile).astype(np.int32)).max() <= 1
+    # The table is sRGB's: black stays black (no black-point compensation), grey stays grey.
+    assert np.abs(got - px.astype(np.int32)).max() <= 1
+
+
+def test_an_a2b0_table_beside_the_matrix_takes_precedence(irid_cli, tmp_path):
+    # Adobe RGB's matrix/TRC tags with an A2B0 table of sRGB (DisplayCAL's "XYZ LUT + matrix"
+    # profiles carry both): every CMM uses the table (ICC.1:2022 §8.4), and so must irid.
+    adobe = (COLORD / "AdobeRGB1998.icc").read_bytes()
+    a2b0 = dict(icc_tags(lcms_link_as_profile("xyz")))[b"A2B0"]
+    hybrid = icc_assemble(adobe, icc_tags(adobe) + [(b"A2B0", a2b0)])
+    assert irid.read_icc_profile(hybrid)["reason"] == "a LUT-based profile"
+    px = patches()
+    save_tagged(tmp_path / "in.tif", px, hybrid)
+    run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "in.tif",
+        tmp_path / "out.png")
+    got, _ = read_u8(tmp_path / "out.png")
+    assert np.abs(got - pil_to_srgb(px, hybrid).astype(np.int32)).max() <= 1
+    assert np.abs(got - px.astype(np.int32)).max() <= 1   # sRGB's table, not Adobe's matrix
+
+
+def test_a_profile_named_like_a_builtin_space_is_not_taken_for_it(tmp_path):
+    wide = (COLORD / "WideGamutRGB.icc").read_bytes()
+    tags = [(sig, body) for sig, body in icc_tags(wide) if sig != b"desc"]
+    named = icc_assemble(wide, tags + [(b"desc", dict(icc_tags(irid.icc_profile("srgb")))[b"desc"])])
+    assert irid.read_icc_profile(named)["description"] == "srgb (irid)"
+    save_tagged(tmp_path / "in.tif", patches(), named)
+    _, meta = irid.read_image(tmp_path / "in.tif")
+    s = irid.image_space(meta)
+    assert s["space"] is None and s["exact"]
+
+
 # --- refusals -------------------------------------------------------------------------------
 
 def patched(offset, value):
@@ -372,20 +469,27 @@ def patched(offset, value):
     return bytes(p)
 
 
-@pytest.mark.parametrize("profile,reason", [
-    ((COLORD / "Crayons.icc").read_bytes(), "a named-colour profile"),
-    (patched(16, b"CMYK"), "a CMYK profile"),        # ICC.1 §7.2.6, the data colour space
-    (patched(12, b"link"), "a device link"),          # §7.2.5, the profile class
-    (patched(12, b"abst"), "an abstract profile"),
-    (patched(36, b"xxxx"), "cannot be read"),         # §7.2.9, the 'acsp' signature
-    ((COLORD / "sRGB.icc").read_bytes()[:400], "truncated"),
+@pytest.mark.parametrize("profile,reason,readable", [
+    ((COLORD / "Crayons.icc").read_bytes(), "a named-colour profile", True),
+    (patched(16, b"CMYK"), "a CMYK profile", True),    # ICC.1 §7.2.6, the data colour space
+    (patched(12, b"link"), "a device link", True),      # §7.2.5, the profile class
+    (patched(12, b"abst"), "an abstract profile", True),
+    (patched(36, b"xxxx"), "cannot be read", True),     # §7.2.9, the 'acsp' signature
+    # Cut short: refused before OpenImageIO reads its tags (which it does unchecked), so not
+    # even --from can take the file.
+    ((COLORD / "sRGB.icc").read_bytes()[:400], "truncated", False),
 ])
-def test_unusable_profiles_are_refused_with_file_and_reason(irid_cli, tmp_path, profile, reason):
+def test_unusable_profiles_are_refused_with_file_and_reason(irid_cli, tmp_path, profile, reason,
+                                                           readable):
     save_tagged(tmp_path / "bad.tif", patches(), profile)
     r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "bad.tif",
             tmp_path / "out.png", status=1)
     assert f"{tmp_path / 'bad.tif'}: ICC profile: {reason}" in r.stderr
     assert not (tmp_path / "out.png").exists()
+    if not readable:
+        with pytest.raises(OSError, match=reason):
+            irid.read_image(tmp_path / "bad.tif")
+        return
     # --from overrides the file, and says what it overrode.
     r = run(irid_cli, "clip", "--method", "clamp", "--from", "srgb", "--to", "srgb",
             tmp_path / "bad.tif", tmp_path / "out.png")
@@ -393,6 +497,59 @@ def test_unusable_profiles_are_refused_with_file_and_reason(irid_cli, tmp_path, 
     _, meta = irid.read_image(tmp_path / "bad.tif")
     with pytest.raises(ValueError, match=reason):
         irid.image_space(meta)
+
+
+def test_tone_curves_that_decode_nothing_are_refused(irid_cli, tmp_path):
+    # A reversed table would invert the image, a γ of 0 make it white: refused, not applied.
+    import struct
+    srgb = (COLORD / "sRGB.icc").read_bytes()
+    reversed_curve = b"curv" + bytes(4) + struct.pack(">IHH", 2, 65535, 0)
+    flat = b"curv" + bytes(4) + struct.pack(">IHH", 2, 30000, 30000)
+    zero_gamma = b"curv" + bytes(4) + struct.pack(">IH", 1, 0) + bytes(2)
+    for curve, reason in ((reversed_curve, "below the one before it"), (flat, "do not rise"),
+                          (zero_gamma, "g = 0")):
+        tags = [(sig, curve if sig in (b"rTRC", b"gTRC", b"bTRC") else body)
+                for sig, body in icc_tags(srgb)]
+        save_tagged(tmp_path / "bad.tif", patches(), icc_assemble(srgb, tags))
+        r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "bad.tif",
+                tmp_path / "out.png", status=1)
+        assert "ICC profile: its red tone curve is no decoding of image values" in r.stderr
+        assert reason in r.stderr
+
+
+@pytest.mark.parametrize("fmt", ["tif", "jpg"])
+def test_a_tag_past_the_profiles_end_is_refused_before_openimageio_reads_it(irid_cli, tmp_path,
+                                                                            fmt):
+    # A tag offset near 2^32 (offset + size wraps): OpenImageIO 2.4 reads TIFF and JPEG
+    # profiles' tags unchecked and would crash; irid checks the table first.
+    import struct
+    p = bytearray((COLORD / "sRGB.icc").read_bytes())
+    p[132 + 4:132 + 8] = struct.pack(">I", 0xFFFFFFF8)
+    save_tagged(tmp_path / f"bad.{fmt}", patches(), bytes(p))
+    r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / f"bad.{fmt}",
+            tmp_path / "out.png", status=1)
+    assert "ICC profile: damaged: tag 0 ('desc') at byte 4294967288" in r.stderr
+    with pytest.raises(OSError, match="runs past the profile"):
+        irid.read_image(tmp_path / f"bad.{fmt}")
+
+
+def test_grey_images_are_written_without_an_rgb_profile(tmp_path):
+    grey = np.full((4, 4), 0.5, np.float32)
+    for ext in ("png", "tif", "jpg"):
+        irid.write_image(tmp_path / f"g.{ext}", grey, color_space="srgb")
+        _, meta = irid.read_image(tmp_path / f"g.{ext}")
+        assert meta["icc_profile"] is None
+
+
+def test_odd_metadata_is_refused_by_name(tmp_path):
+    with pytest.raises(ValueError, match="chromaticities"):
+        irid.write_image(tmp_path / "x.exr", np.zeros((2, 2, 3)), chromaticities=5)
+    with pytest.raises(ValueError, match="chromaticities"):
+        irid.write_image(tmp_path / "x.exr", np.zeros((2, 2, 3)), chromaticities="abc")
+    with pytest.raises(ValueError, match="'integer'"):
+        irid.image_space({"integer": "no", "icc_profile": None, "chromaticities": None})
+    with pytest.raises(ValueError, match="8 .red, green, blue and white"):
+        irid.image_space({"integer": False, "icc_profile": None, "chromaticities": (0.3, 0.3)})
 
 
 def test_png_profile_that_libpng_drops_is_not_ignored(irid_cli, tmp_path):

@@ -106,6 +106,9 @@ struct ImageSpace {
     /// The space of the values, when it is known exactly (a matrix/TRC profile, EXR
     /// chromaticities, or the assumption below). A space matching a built-in one is that one.
     std::optional<RgbSpace> rgb;
+    /// The built-in space rgb is (matching_builtin_space), or nullptr: a profile named "sRGB" that
+    /// is not sRGB is not taken for it.
+    const RgbSpace* builtin = nullptr;
     /// The values are encoded with rgb's transfer function (whatever a profile tags; for an
     /// untagged file, integer samples), else linear (EXR chromaticities; an untagged float file).
     bool encoded = false;
@@ -126,7 +129,8 @@ struct ImageSpace {
 /// color_space = the space's name (with "-linear" for EXR), and for PNG and TIFF the space's
 /// ICC profile (make_icc_profile), for EXR its chromaticities and, when the white is not D65's
 /// (0.3127, 0.3290), the adoptedNeutral that tells readers assuming D65 otherwise. EXR values
-/// are linear, PNG and TIFF values encoded with the space's curve.
+/// are linear, PNG and TIFF values encoded with the space's curve. An image of fewer than three
+/// channels (grey) gets only the name: an RGB profile does not describe it.
 void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format);
 
 }  // namespace irid
