@@ -144,16 +144,21 @@ D65 = (0.3127, 0.3290)
 
 # --- inputs ---------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("name", RGB_PROFILES)
-def test_colord_tagged_tiff_is_clipped_as_pil_converts_it(irid_cli, tmp_path, name):
-    profile = (COLORD / name).read_bytes()
+def clip_tagged(cli, tmp_path, profile):
+    """The patches tagged with `profile` (TIFF), through `irid clip --method clamp --to srgb`:
+    irid's result and PIL's conversion of the same patches, as int codes."""
     px = patches()
     save_tagged(tmp_path / "in.tif", px, profile)
-    r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "in.tif",
+    r = run(cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "in.tif",
             tmp_path / "out.png")
     assert "no ICC profile" not in r.stderr
-    got, meta = read_u8(tmp_path / "out.png")
-    want = pil_to_srgb(px, profile).astype(np.int32)
+    got, _ = read_u8(tmp_path / "out.png")
+    return got, pil_to_srgb(px, profile).astype(np.int32)
+
+
+@pytest.mark.parametrize("name", RGB_PROFILES)
+def test_colord_tagged_tiff_is_clipped_as_pil_converts_it(irid_cli, tmp_path, name):
+    got, want = clip_tagged(irid_cli, tmp_path, (COLORD / name).read_bytes())
     assert np.abs(got - want).max() <= 1, name
     # The output names its space to PIL too.
     from PIL import Image, ImageCms
@@ -423,15 +428,10 @@ def test_lut_profile_goes_through_little_cms_as_pil_does(irid_cli, tmp_path, pcs
     profile = lcms_link_as_profile(pcs)
     info = irid.read_icc_profile(profile)
     assert not info["exact"] and info["reason"] == "a LUT-based profile"
-    px = patches()
-    save_tagged(tmp_path / "in.tif", px, profile)
-    r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "in.tif",
-            tmp_path / "out.png")
-    assert "no ICC profile" not in r.stderr
-    got, _ = read_u8(tmp_path / "out.png")
-    assert np.abs(got - pil_to_srgb(px, profile).astype(np.int32)).max() <= 1
+    got, pil = clip_tagged(irid_cli, tmp_path, profile)
+    assert np.abs(got - pil).max() <= 1
     # The table is sRGB's: black stays black (no black-point compensation), grey stays grey.
-    assert np.abs(got - px.astype(np.int32)).max() <= 1
+    assert np.abs(got - patches().astype(np.int32)).max() <= 1
 
 
 def test_an_a2b0_table_beside_the_matrix_takes_precedence(irid_cli, tmp_path):
@@ -441,13 +441,9 @@ def test_an_a2b0_table_beside_the_matrix_takes_precedence(irid_cli, tmp_path):
     a2b0 = dict(icc_tags(lcms_link_as_profile("xyz")))[b"A2B0"]
     hybrid = icc_assemble(adobe, icc_tags(adobe) + [(b"A2B0", a2b0)])
     assert irid.read_icc_profile(hybrid)["reason"] == "a LUT-based profile"
-    px = patches()
-    save_tagged(tmp_path / "in.tif", px, hybrid)
-    run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "in.tif",
-        tmp_path / "out.png")
-    got, _ = read_u8(tmp_path / "out.png")
-    assert np.abs(got - pil_to_srgb(px, hybrid).astype(np.int32)).max() <= 1
-    assert np.abs(got - px.astype(np.int32)).max() <= 1   # sRGB's table, not Adobe's matrix
+    got, pil = clip_tagged(irid_cli, tmp_path, hybrid)
+    assert np.abs(got - pil).max() <= 1
+    assert np.abs(got - patches().astype(np.int32)).max() <= 1   # sRGB's table, not Adobe's
 
 
 def test_a_profile_named_like_a_builtin_space_is_not_taken_for_it(tmp_path):
