@@ -437,8 +437,12 @@ expect_empty_stdout
 run_image clip --method smits "$IMG/in.exr" "$IMG/no-such-folder/fail2.exr"
 expect_status 1
 expect_stderr_has "fail2.exr"
-run_image clip --method smits "$IMG/in.exr" "$IMG/fail3.jpg"
+run_image clip --method smits "$IMG/in.exr" "$IMG/fail3.bmp"
 expect_usage_error ".exr"
+# JPEG holds no alpha: refused, nothing written (in.exr has an A channel).
+run_image clip --method smits "$IMG/in.exr" "$IMG/fail3.jpg"
+expect_status 1
+expect_stderr_has "JPEG holds 1 (grey) or 3 (RGB), no alpha"
 run_image clip --method smits --max 2 "$IMG/in.exr" "$IMG/fail4.png"
 expect_usage_error "--max"
 run_image clip --method smits --bits 12 "$IMG/in.exr" "$IMG/fail5.png"

@@ -292,7 +292,7 @@ expect_refused 2 png "'render.path'" oil-slick "${SMALL[@]}" --set render.path=c
 expect_stderr_has "spectral"
 expect_refused 2 png "'pavement.albedo'" oil-slick "${SMALL[@]}" --set 'pavement.albedo=[2, 0, 0]'
 expect_stderr_has "[0, 1]"
-expect_refused 2 jpg ".png" oil-slick "${SMALL[@]}"
+expect_refused 2 bmp ".png" oil-slick "${SMALL[@]}"
 expect_stderr_has ".exr"
 expect_refused 2 png "--no-such-option" oil-slick "${SMALL[@]}" --no-such-option
 # Each side within its limit but too many pixels in all: refused before any work, naming the
