@@ -193,7 +193,8 @@ std::optional<RgbSpace> matrix_trc_space(cmsHPROFILE h, const std::string& name,
     }
 }
 
-/// UTF-8 → the UTF-16 units lcms2 stores, one per wchar_t; malformed bytes become U+FFFD.
+/// UTF-8 → the UTF-16 units lcms2 stores, one per wchar_t; malformed bytes and characters beyond
+/// U+FFFF become U+FFFD.
 std::wstring wide(std::string_view s) {
     std::wstring out;
     for (std::size_t i = 0; i < s.size();) {
@@ -211,13 +212,10 @@ std::wstring wide(std::string_view s) {
             ok = ok && (n >> 6) == 2;
             code = (code << 6) | (n & 0x3Fu);
         }
-        if (!ok || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) code = 0xFFFD;
-        if (code > 0xFFFF) {  // a surrogate pair: lcms2 2.14 writes each wchar_t as a UTF-16 unit
-            out += static_cast<wchar_t>(0xD800 + ((code - 0x10000) >> 10));
-            out += static_cast<wchar_t>(0xDC00 + ((code - 0x10000) & 0x3FF));
-        } else {
-            out += static_cast<wchar_t>(code);
-        }
+        // Beyond the Basic Multilingual Plane too: lcms2 2.14 writes each wchar_t as one UTF-16
+        // unit, and its surrogate pairs do not read back reliably.
+        if (!ok || code > 0xFFFF || (code >= 0xD800 && code <= 0xDFFF)) code = 0xFFFD;
+        out += static_cast<wchar_t>(code);
         i += ok ? static_cast<std::size_t>(extra) + 1 : 1;
     }
     return out;

@@ -215,7 +215,7 @@ TEST_F(ImageIo, ColourSpaceMetadataIsWritten) {
 
 TEST_F(ImageIo, UnsupportedExtensionIsAnErrorNamingTheFile) {
     const Image image = ramp(2, 2, 3);
-    for (const char* name : {"out.jpg", "out.hdr", "out", "out.exr.bak"}) {
+    for (const char* name : {"out.bmp", "out.hdr", "out", "out.exr.bak"}) {
         try {
             write_image(m_dir / name, image);
             ADD_FAILURE() << name << " was accepted";
@@ -226,6 +226,11 @@ TEST_F(ImageIo, UnsupportedExtensionIsAnErrorNamingTheFile) {
     }
     EXPECT_TRUE(files().empty());
     EXPECT_THROW(write_image(m_dir / "bits.png", image, {.bits = 12, .compression = {}}), Error);
+    // JPEG: 8 bits, no alpha, a quality of 1 to 100.
+    EXPECT_THROW(write_image(m_dir / "deep.jpg", image, {.bits = 16, .compression = {}}), Error);
+    EXPECT_THROW(write_image(m_dir / "alpha.jpg", ramp(2, 2, 4)), Error);
+    EXPECT_THROW(write_image(m_dir / "q.jpg", image, {.bits = 8, .compression = "jpeg:0"}), Error);
+    EXPECT_THROW(write_image(m_dir / "q.jpg", image, {.bits = 8, .compression = "zip"}), Error);
     EXPECT_TRUE(files().empty());
 }
 
