@@ -87,7 +87,7 @@ std::string signature_text(std::uint32_t sig) {
     return s;
 }
 
-std::string data_space_name(cmsColorSpaceSignature cs) {
+std::string data_space_name(std::uint32_t cs) {
     switch (cs) {
         case cmsSigCmykData: return "CMYK";
         case cmsSigCmyData: return "CMY";
@@ -285,7 +285,9 @@ IccProfile IccProfile::parse(std::span<const unsigned char> bytes, const std::st
     const Profile h(cmsOpenProfileFromMemTHR(ctx.handle, bytes.data(), static_cast<cmsUInt32Number>(bytes.size())));
     if (!h) throw Error(where + "cannot be read: " + ctx.reason("not a valid ICC profile"));
 
-    const cmsProfileClassSignature cls = cmsGetDeviceClass(h.get());
+    // Signatures as numbers: a profile may hold any four bytes, which as lcms2's enum types would
+    // be values outside them.
+    const auto cls = static_cast<std::uint32_t>(cmsGetDeviceClass(h.get()));
     if (cls == cmsSigLinkClass) {
         throw Error(where + "a device link (it converts between two devices' values and defines no "
                             "colour space of its own); an image needs an input, display or colour-space profile");
@@ -298,12 +300,12 @@ IccProfile IccProfile::parse(std::span<const unsigned char> bytes, const std::st
         throw Error(where + "a named-colour profile (a palette of named colours), not the colour space "
                             "of an image");
     }
-    const cmsColorSpaceSignature data = cmsGetColorSpace(h.get());
+    const auto data = static_cast<std::uint32_t>(cmsGetColorSpace(h.get()));
     if (data != cmsSigRgbData) {
         throw Error(where + "a " + data_space_name(data) + " profile; irid reads RGB images, whose "
                             "profiles have RGB data");
     }
-    const cmsColorSpaceSignature pcs = cmsGetPCS(h.get());
+    const auto pcs = static_cast<std::uint32_t>(cmsGetPCS(h.get()));
     if (pcs != cmsSigXYZData && pcs != cmsSigLabData) {
         throw Error(where + "its connection space is '" + signature_text(pcs) + "'; ICC.1 allows XYZ or Lab");
     }

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <zlib.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -81,6 +82,157 @@ std::string printable(const unsigned char* p, std::size_t n) {
     throw Error(shown + ": truncated or corrupt: " + what);
 }
 
+/// An embedded ICC profile's tag table (ICC.1:2022 §7.3): every tag inside the profile.
+/// OpenImageIO 2.4 reads the tags of a TIFF's or JPEG's profile without checking them against
+/// its size (decode_icc_profile), and a tag offset that wraps past 2^32 crashes it; libpng
+/// drops such a PNG profile itself.
+void check_icc(const std::string& shown, const std::vector<unsigned char>& p) {
+    const std::string where = shown + ": ICC profile: damaged: ";
+    if (p.size() < 132) {
+        throw Error(where + "only " + std::to_string(p.size()) + " bytes; a profile holds a 128-byte "
+                    "header and a tag table");
+    }
+    const std::uint64_t declared = big_endian32(p.data());
+    if (declared > p.size()) {
+        throw Error(shown + ": ICC profile: truncated: its header declares " + std::to_string(declared) +
+                    " bytes and " + std::to_string(p.size()) + " are there");
+    }
+    const std::uint64_t size = declared;
+    const std::uint64_t count = big_endian32(p.data() + 128);
+    if (132 + 12 * count > size) {
+        throw Error(where + "its tag table of " + std::to_string(count) + " tags runs past its " +
+                    std::to_string(size) + " bytes");
+    }
+    const auto past = [&](std::uint64_t i, const unsigned char* t, const std::string& what) {
+        throw Error(where + "tag " + std::to_string(i) + " ('" + printable(t, 4) + "') " + what +
+                    " runs past the profile's " + std::to_string(size) + " bytes");
+    };
+    for (std::uint64_t i = 0; i < count; ++i) {
+        const unsigned char* t = p.data() + 132 + 12 * i;
+        const std::uint64_t offset = big_endian32(t + 4), length = big_endian32(t + 8);
+        if (offset + std::max<std::uint64_t>(length, 4) > size) {
+            past(i, t, "at byte " + std::to_string(offset) + ", " + std::to_string(length) + " bytes long,");
+        }
+        // The text types OpenImageIO decodes (ICC.1:2022 §10.24 textType, §10.15
+        // multiLocalizedUnicodeType, and ICC.1:2001's textDescriptionType): their headers must
+        // fit in the tag, and each string in the profile.
+        const unsigned char* body = p.data() + offset;
+        const std::string type = printable(body, 4);
+        if ((type == "text" && length < 8) || (type == "desc" && length < 12) ||
+            (type == "mluc" && length < 16)) {
+            throw Error(where + "tag " + std::to_string(i) + " ('" + printable(t, 4) + "') of type '" +
+                        type + "' is " + std::to_string(length) + " bytes, shorter than its header");
+        }
+        if (type == "mluc") {
+            const std::uint64_t records = big_endian32(body + 8), record_size = big_endian32(body + 12);
+            if (offset + 16 + records * 12 > size) past(i, t, "holds " + std::to_string(records) + " records that");
+            for (std::uint64_t r = 0; record_size == 12 && r < records; ++r) {
+                const unsigned char* rec = body + 16 + 12 * r;
+                const std::uint64_t n = big_endian32(rec + 4), at = big_endian32(rec + 8);
+                if (offset + at + n > size) past(i, t, "has a string of " + std::to_string(n) + " bytes that");
+            }
+        }
+    }
+}
+
+/// `n` bytes at `offset`, in pieces the reader's buffer holds; empty when the file ends first.
+std::vector<unsigned char> read_bytes(Reader& file, std::uint64_t offset, std::uint64_t n) {
+    std::vector<unsigned char> out;
+    if (offset + n > file.size()) return out;
+    out.resize(n);
+    for (std::uint64_t done = 0; done < n;) {
+        const std::size_t piece = static_cast<std::size_t>(std::min<std::uint64_t>(n - done, 1 << 15));
+        if (!file.read(offset + done, out.data() + done, piece)) return {};
+        done += piece;
+    }
+    return out;
+}
+
+/// TIFF (TIFF 6.0 §2, classic TIFF): the ICC profile of the first directory, tag 34675.
+void check_tiff_icc(const std::string& shown, Reader& file) {
+    unsigned char head[8];
+    if (!file.read(0, head, sizeof head)) return;
+    const bool little = head[0] == 'I';
+    const auto u16 = [little](const unsigned char* q) {
+        return little ? static_cast<std::uint32_t>(q[0] | q[1] << 8) : static_cast<std::uint32_t>(q[0] << 8 | q[1]);
+    };
+    const auto u32 = [little](const unsigned char* q) { return little ? little_endian32(q) : big_endian32(q); };
+    const std::uint64_t ifd = u32(head + 4);
+    unsigned char count_bytes[2];
+    if (!file.read(ifd, count_bytes, 2)) return;
+    const std::uint32_t entries = u16(count_bytes);
+    for (std::uint32_t i = 0; i < entries; ++i) {
+        unsigned char e[12];
+        if (!file.read(ifd + 2 + 12 * std::uint64_t{i}, e, sizeof e)) return;
+        if (u16(e) != 34675) continue;
+        const std::uint64_t n = u32(e + 4);
+        if (n > (std::uint64_t{64} << 20)) return;  // libtiff refuses such a tag itself
+        const std::vector<unsigned char> profile =
+            n <= 4 ? std::vector<unsigned char>(e + 8, e + 8 + n) : read_bytes(file, u32(e + 8), n);
+        if (profile.size() == n) check_icc(shown, profile);
+        return;
+    }
+}
+
+/// JPEG (ICC.1:2022 Annex B.4): the profile in APP2 "ICC_PROFILE" segments, joined in their order.
+void check_jpeg_icc(const std::string& shown, Reader& file) {
+    std::vector<std::pair<int, std::vector<unsigned char>>> chunks;
+    std::uint64_t pos = 2;
+    unsigned char m[4];
+    while (file.read(pos, m, 4) && m[0] == 0xFF) {
+        const unsigned marker = m[1];
+        if (marker == 0xDA || marker == 0xD9) break;  // the scan, or the end
+        if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0xFF) {
+            pos += marker == 0xFF ? 1 : 2;
+            continue;
+        }
+        const std::uint64_t length = static_cast<std::uint64_t>(m[2]) << 8 | m[3];
+        if (length < 2) return;
+        if (marker == 0xE2 && length >= 16) {
+            std::vector<unsigned char> data = read_bytes(file, pos + 4, length - 2);
+            if (data.size() >= 14 && std::memcmp(data.data(), "ICC_PROFILE\0", 12) == 0) {
+                chunks.emplace_back(data[12], std::vector<unsigned char>(data.begin() + 14, data.end()));
+            }
+        }
+        pos += 2 + length;
+    }
+    if (chunks.empty()) return;
+    std::stable_sort(chunks.begin(), chunks.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<unsigned char> profile;
+    for (const auto& c : chunks) profile.insert(profile.end(), c.second.begin(), c.second.end());
+    check_icc(shown, profile);
+}
+
+/// PNG's iCCP chunk (ISO/IEC 15948 §11.3.3.3): a name, a NUL, the compression method (0) and the
+/// zlib-compressed profile, which is inflated (up to 64 MiB) and checked as TIFF's and JPEG's
+/// are: libpng checks the header of a profile, not its tag table, which OpenImageIO 2.4 then
+/// reads unchecked.
+void check_png_icc(const std::string& shown, Reader& file, std::uint64_t offset, std::uint64_t length) {
+    if (length > (std::uint64_t{64} << 20)) return;
+    const std::vector<unsigned char> chunk = read_bytes(file, offset, length);
+    const auto nul = std::find(chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(chunk.size(), 80)), 0);
+    if (nul == chunk.end() || nul + 2 > chunk.end()) return;  // libpng refuses such a chunk
+    z_stream z{};
+    if (inflateInit(&z) != Z_OK) return;
+    z.next_in = const_cast<Bytef*>(&*(nul + 2));
+    z.avail_in = static_cast<uInt>(chunk.end() - (nul + 2));
+    std::vector<unsigned char> profile;
+    int status = Z_OK;
+    while (status == Z_OK && profile.size() < (std::size_t{64} << 20)) {
+        const std::size_t done = profile.size();
+        profile.resize(done + (1 << 16));
+        z.next_out = profile.data() + done;
+        z.avail_out = 1 << 16;
+        status = inflate(&z, Z_NO_FLUSH);
+        profile.resize(done + (1 << 16) - z.avail_out);
+    }
+    inflateEnd(&z);
+    // What was inflated, even when the stream ends badly: libpng does not check the checksum
+    // of a compressed chunk, and passes on what it inflated.
+    if (status != Z_STREAM_END && profile.size() < 132) return;
+    check_icc(shown, profile);
+}
+
 /// PNG (ISO/IEC 15948): every chunk must fit in the file, and the image data (IDAT) must be able
 /// to hold the pixels the header (IHDR) declares.
 void check_png(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts) {
@@ -110,6 +262,7 @@ void check_png(const std::string& shown, Reader& file, const ImageLimits& limits
             idat_bytes += length;
         } else if (type == "iCCP") {
             facts.png_icc_chunk = true;
+            check_png_icc(shown, file, pos + 8, length);
         } else if (type == "IEND") {
             break;
         }
@@ -215,106 +368,6 @@ void check_declared_pixels(const std::string& shown, std::uint64_t width, std::u
                     "; irid reads at most " + std::to_string(limits.max_pixels) + " pixels (" +
                     std::to_string(limits.max_pixels >> 20) + " Mpixel)");
     }
-}
-
-/// An embedded ICC profile's tag table (ICC.1:2022 §7.3): every tag inside the profile.
-/// OpenImageIO 2.4 reads the tags of a TIFF's or JPEG's profile without checking them against
-/// its size (decode_icc_profile), and a tag offset that wraps past 2^32 crashes it; libpng
-/// drops such a PNG profile itself.
-void check_icc(const std::string& shown, const std::vector<unsigned char>& p) {
-    const std::string where = shown + ": ICC profile: damaged: ";
-    if (p.size() < 132) {
-        throw Error(where + "only " + std::to_string(p.size()) + " bytes; a profile holds a 128-byte "
-                    "header and a tag table");
-    }
-    const std::uint64_t declared = big_endian32(p.data());
-    if (declared > p.size()) {
-        throw Error(shown + ": ICC profile: truncated: its header declares " + std::to_string(declared) +
-                    " bytes and " + std::to_string(p.size()) + " are there");
-    }
-    const std::uint64_t size = declared;
-    const std::uint64_t count = big_endian32(p.data() + 128);
-    if (132 + 12 * count > size) {
-        throw Error(where + "its tag table of " + std::to_string(count) + " tags runs past its " +
-                    std::to_string(size) + " bytes");
-    }
-    for (std::uint64_t i = 0; i < count; ++i) {
-        const unsigned char* t = p.data() + 132 + 12 * i;
-        const std::uint64_t offset = big_endian32(t + 4), length = big_endian32(t + 8);
-        if (offset + length > size) {
-            throw Error(where + "tag " + std::to_string(i) + " ('" + printable(t, 4) + "') at byte " +
-                        std::to_string(offset) + ", " + std::to_string(length) +
-                        " bytes long, runs past the profile's " + std::to_string(size) + " bytes");
-        }
-    }
-}
-
-/// `n` bytes at `offset`, in pieces the reader's buffer holds; empty when the file ends first.
-std::vector<unsigned char> read_bytes(Reader& file, std::uint64_t offset, std::uint64_t n) {
-    std::vector<unsigned char> out;
-    if (offset + n > file.size()) return out;
-    out.resize(n);
-    for (std::uint64_t done = 0; done < n;) {
-        const std::size_t piece = static_cast<std::size_t>(std::min<std::uint64_t>(n - done, 1 << 15));
-        if (!file.read(offset + done, out.data() + done, piece)) return {};
-        done += piece;
-    }
-    return out;
-}
-
-/// TIFF (TIFF 6.0 §2, classic TIFF): the ICC profile of the first directory, tag 34675.
-void check_tiff_icc(const std::string& shown, Reader& file) {
-    unsigned char head[8];
-    if (!file.read(0, head, sizeof head)) return;
-    const bool little = head[0] == 'I';
-    const auto u16 = [little](const unsigned char* q) {
-        return little ? static_cast<std::uint32_t>(q[0] | q[1] << 8) : static_cast<std::uint32_t>(q[0] << 8 | q[1]);
-    };
-    const auto u32 = [little](const unsigned char* q) { return little ? little_endian32(q) : big_endian32(q); };
-    const std::uint64_t ifd = u32(head + 4);
-    unsigned char count_bytes[2];
-    if (!file.read(ifd, count_bytes, 2)) return;
-    const std::uint32_t entries = u16(count_bytes);
-    for (std::uint32_t i = 0; i < entries; ++i) {
-        unsigned char e[12];
-        if (!file.read(ifd + 2 + 12 * std::uint64_t{i}, e, sizeof e)) return;
-        if (u16(e) != 34675) continue;
-        const std::uint64_t n = u32(e + 4);
-        if (n > (std::uint64_t{64} << 20)) return;  // libtiff refuses such a tag itself
-        const std::vector<unsigned char> profile =
-            n <= 4 ? std::vector<unsigned char>(e + 8, e + 8 + n) : read_bytes(file, u32(e + 8), n);
-        if (profile.size() == n) check_icc(shown, profile);
-        return;
-    }
-}
-
-/// JPEG (ICC.1:2022 Annex B.4): the profile in APP2 "ICC_PROFILE" segments, joined in their order.
-void check_jpeg_icc(const std::string& shown, Reader& file) {
-    std::vector<std::pair<int, std::vector<unsigned char>>> chunks;
-    std::uint64_t pos = 2;
-    unsigned char m[4];
-    while (file.read(pos, m, 4) && m[0] == 0xFF) {
-        const unsigned marker = m[1];
-        if (marker == 0xDA || marker == 0xD9) break;  // the scan, or the end
-        if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0xFF) {
-            pos += marker == 0xFF ? 1 : 2;
-            continue;
-        }
-        const std::uint64_t length = static_cast<std::uint64_t>(m[2]) << 8 | m[3];
-        if (length < 2) return;
-        if (marker == 0xE2 && length >= 16) {
-            std::vector<unsigned char> data = read_bytes(file, pos + 4, length - 2);
-            if (data.size() >= 14 && std::memcmp(data.data(), "ICC_PROFILE\0", 12) == 0) {
-                chunks.emplace_back(data[12], std::vector<unsigned char>(data.begin() + 14, data.end()));
-            }
-        }
-        pos += 2 + length;
-    }
-    if (chunks.empty()) return;
-    std::stable_sort(chunks.begin(), chunks.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<unsigned char> profile;
-    for (const auto& c : chunks) profile.insert(profile.end(), c.second.begin(), c.second.end());
-    check_icc(shown, profile);
 }
 
 HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLimits& limits) {

@@ -529,6 +529,15 @@ def test_a_tag_past_the_profiles_end_is_refused_before_openimageio_reads_it(irid
         irid.read_image(tmp_path / f"bad.{fmt}")
 
 
+def test_a_png_profile_string_past_its_end_is_refused(irid_cli, tmp_path):
+    # The image harness's finding png-3 (docs/RELIABILITY.md): an mluc string offset past the
+    # profile, which libpng passes and OpenImageIO 2.4 read out of bounds.
+    png = pathlib.Path(__file__).resolve().parents[1] / "fuzz/regressions/image/png-iccp-tag-past-end-oiio-segv.png"
+    r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", png, tmp_path / "out.png",
+            status=1)
+    assert "ICC profile: damaged: tag 1 ('cprt') has a string of 48 bytes" in r.stderr
+
+
 def test_grey_images_are_written_without_an_rgb_profile(tmp_path):
     grey = np.full((4, 4), 0.5, np.float32)
     for ext in ("png", "tif", "jpg"):
