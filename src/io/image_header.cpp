@@ -210,12 +210,16 @@ void check_jpeg_icc(const std::string& shown, Reader& file) {
 void check_png_icc(const std::string& shown, Reader& file, std::uint64_t offset, std::uint64_t length) {
     if (length > (std::uint64_t{64} << 20)) return;
     const std::vector<unsigned char> chunk = read_bytes(file, offset, length);
-    const auto nul = std::find(chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(chunk.size(), 80)), 0);
-    if (nul == chunk.end() || nul + 2 > chunk.end()) return;  // libpng refuses such a chunk
+    // The name: 1 to 79 bytes and a NUL; then the compression method, then the data.
+    const auto name_end = chunk.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(chunk.size(), 80));
+    const auto nul = std::find(chunk.begin(), name_end, 0);
+    if (nul == name_end) return;  // libpng refuses such a chunk
+    const std::size_t data = static_cast<std::size_t>(nul - chunk.begin()) + 2;
+    if (data >= chunk.size()) return;
     z_stream z{};
     if (inflateInit(&z) != Z_OK) return;
-    z.next_in = const_cast<Bytef*>(&*(nul + 2));
-    z.avail_in = static_cast<uInt>(chunk.end() - (nul + 2));
+    z.next_in = const_cast<Bytef*>(chunk.data() + data);
+    z.avail_in = static_cast<uInt>(chunk.size() - data);
     std::vector<unsigned char> profile;
     int status = Z_OK;
     while (status == Z_OK && profile.size() < (std::size_t{64} << 20)) {
