@@ -26,11 +26,6 @@
 namespace irid::python {
 namespace {
 
-/// An image file's space and the ColorSpace that points into it.
-struct FileSpace {
-    ImageSpace space;
-    ColorSpace colour;
-};
 
 /// The pipeline of ClipPipeline's Python constructors (the arguments as irid._pipeline passes them).
 ClipPipeline make_pipeline(const std::string& method, const ColorSpace& from, const std::string& target,
@@ -151,7 +146,7 @@ void add_gamut(py::module_& m) {
 
     // What an image file says about its space (irid/exchange/icc.h), kept at a fixed address so
     // that the pipelines built on it can point at its RgbSpace.
-    py::class_<FileSpace, std::shared_ptr<FileSpace>>(m, "FileSpace")
+    py::class_<ImageSpace, std::shared_ptr<ImageSpace>>(m, "FileSpace")
         .def(py::init([](const std::optional<py::bytes>& icc, const std::optional<std::vector<float>>& chromaticities,
                          bool integer, bool rejected) {
                  io::Image image;
@@ -162,23 +157,17 @@ void add_gamut(py::module_& m) {
                  if (chromaticities) image.chromaticities = *chromaticities;
                  image.stored_integer = integer;
                  image.icc_profile_rejected = rejected;
-                 auto f = std::make_shared<FileSpace>();
-                 f->space = image_space(image, "image");
-                 f->colour = f->space.profile ? ColorSpace{SpaceFamily::xyz, nullptr}
-                                              : ColorSpace{f->space.encoded ? SpaceFamily::rgb_encoded
-                                                                            : SpaceFamily::rgb_linear,
-                                                           &*f->space.rgb};
-                 return f;
+                 return std::make_shared<ImageSpace>(image_space(image, "image"));
              }),
              py::arg("icc_profile"), py::arg("chromaticities"), py::arg("integer"), py::arg("rejected"))
-        .def_property_readonly("space", [](const FileSpace& f) {
-            if (f.space.builtin == nullptr) return py::object(py::none());
-            return py::object(py::str(color_space_name(ColorSpace{f.colour.family, f.space.builtin})));
+        .def_property_readonly("space", [](const ImageSpace& f) {
+            if (f.builtin == nullptr) return py::object(py::none());
+            return py::object(py::str(color_space_name(ColorSpace{f.colour_space().family, f.builtin})));
         })
-        .def_property_readonly("origin", [](const FileSpace& f) { return f.space.origin; })
-        .def_property_readonly("assumed", [](const FileSpace& f) { return f.space.assumed; })
-        .def_property_readonly("encoded", [](const FileSpace& f) { return f.space.encoded; })
-        .def_property_readonly("exact", [](const FileSpace& f) { return !f.space.profile; });
+        .def_property_readonly("origin", [](const ImageSpace& f) { return f.origin; })
+        .def_property_readonly("assumed", [](const ImageSpace& f) { return f.assumed; })
+        .def_property_readonly("encoded", [](const ImageSpace& f) { return f.encoded; })
+        .def_property_readonly("exact", [](const ImageSpace& f) { return !f.profile; });
 
     py::class_<ClipPipeline>(m, "ClipPipeline")
         .def(py::init([](const std::string& method, const std::string& source,
@@ -190,10 +179,10 @@ void add_gamut(py::module_& m) {
              }),
              py::arg("method"), py::arg("source"), py::arg("target"), py::arg("max"), py::arg("wx"),
              py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"))
-        .def(py::init([](const std::string& method, const FileSpace& source, const std::string& target,
+        .def(py::init([](const std::string& method, const ImageSpace& source, const std::string& target,
                          double max, double wx, double wy, const std::string& adaptation,
                          const std::vector<std::pair<std::string, double>>& params, bool inverse) {
-                 return make_pipeline(method, source.colour, target, max, wx, wy, adaptation, params,
+                 return make_pipeline(method, source.colour_space(), target, max, wx, wy, adaptation, params,
                                       inverse);
              }),
              py::keep_alive<1, 3>(),  // the pipeline points at the file space's RgbSpace
@@ -249,7 +238,7 @@ void add_gamut(py::module_& m) {
     m.def(
         "clip_image",
         [](py::array_t<float> pixels, std::vector<std::string> channels, const ClipPipeline& p,
-           bool premultiplied_in, bool premultiplied_out, bool encode, int threads, const FileSpace* file) {
+           bool premultiplied_in, bool premultiplied_out, bool encode, int threads, const ImageSpace* file) {
             if (pixels.ndim() != 3 || !(pixels.flags() & py::array::c_style) || !pixels.writeable()) {
                 throw py::value_error("pixels: a writeable C-contiguous float32 (height, width, channels) array is needed");
             }
@@ -272,7 +261,7 @@ void add_gamut(py::module_& m) {
                                             .premultiplied_out = premultiplied_out,
                                             .encode = encode,
                                             .threads = threads,
-                                            .profile = file != nullptr ? file->space.profile.get() : nullptr},
+                                            .profile = file != nullptr ? file->profile.get() : nullptr},
                            "image");
                 std::memcpy(data, image.pixels.data(), image.pixels.size() * sizeof(float));
             }

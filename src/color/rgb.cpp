@@ -63,13 +63,11 @@ TransferFunction::TransferFunction(Kind kind, const Parameters& params,
       m_samples(std::move(samples)) {}
 
 TransferFunction TransferFunction::parametric(int function_type, std::span<const double> p) {
-    // ICC.1:2022 Table 68: the number of parameters of function types 0 to 4.
-    static constexpr std::array<std::size_t, 5> counts{1, 3, 4, 5, 7};
     if (function_type < 0 || function_type > 4) {
         throw Error("parametric curve: function type " + std::to_string(function_type) +
                     " is not one of ICC.1's 0 to 4");
     }
-    const std::size_t count = counts[static_cast<std::size_t>(function_type)];
+    const std::size_t count = parametric_counts[static_cast<std::size_t>(function_type)];
     if (p.size() != count) {
         throw Error("parametric curve: function type " + std::to_string(function_type) + " takes " +
                     std::to_string(count) + " parameters, not " + std::to_string(p.size()));

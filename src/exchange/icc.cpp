@@ -105,13 +105,12 @@ std::string data_space_name(std::uint32_t cs) {
 /// no decoding (one that falls, is flat, or has parameters out of range): lcms2 would apply it
 /// as it is (a reversed table inverts the image), which is never what an image means.
 TransferFunction transfer_of(const cmsToneCurve* c, const std::string& where, const char* channel) {
-    // lcms2's types 1-5 are ICC.1's parametric function types 0-4; their parameter counts.
-    static constexpr int counts[] = {1, 3, 4, 5, 7};
+    // lcms2's types 1-5 are ICC.1's parametric function types 0-4.
     const cmsInt32Number type = cmsGetToneCurveParametricType(c);
     try {
         if (type >= 1 && type <= 5) {
-            const double* p = cmsGetToneCurveParams(c);
-            return TransferFunction::parametric(type - 1, std::span<const double>(p, static_cast<std::size_t>(counts[type - 1])));
+            const std::size_t count = TransferFunction::parametric_counts[static_cast<std::size_t>(type - 1)];
+            return TransferFunction::parametric(type - 1, std::span<const double>(cmsGetToneCurveParams(c), count));
         }
         const cmsUInt32Number n = cmsGetToneCurveEstimatedTableEntries(c);
         const cmsUInt16Number* table = cmsGetToneCurveEstimatedTable(c);
@@ -541,6 +540,11 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
     s.encoded = image.stored_integer;
     s.origin = "no ICC profile or chromaticities";
     return s;
+}
+
+ColorSpace ImageSpace::colour_space() const noexcept {
+    if (profile) return {SpaceFamily::xyz, nullptr};
+    return {encoded ? SpaceFamily::rgb_encoded : SpaceFamily::rgb_linear, &*rgb};
 }
 
 void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format) {

@@ -11,6 +11,8 @@
 #include <irid/exchange/icc.h>
 
 #include <cmath>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 

@@ -197,14 +197,10 @@ int run_clip_image(const ClipOptions& o, const ClipPipeline& p) {
                        "(give --from to say otherwise)\n",
                        o.in);
         }
-        if (tagged->profile) {
-            tagged_space = ColorSpace{Family::xyz, nullptr};
-            from_text = tagged->origin;
-        } else {
-            tagged_space = ColorSpace{tagged->encoded ? Family::rgb_encoded : Family::rgb_linear, &*tagged->rgb};
-            from_text = tagged->assumed ? color_space_name(*tagged_space)
-                                        : fmt::format("{} ({})", color_space_name(*tagged_space), tagged->origin);
-        }
+        tagged_space = tagged->colour_space();
+        from_text = tagged->profile   ? tagged->origin
+                    : tagged->assumed ? color_space_name(*tagged_space)
+                                      : fmt::format("{} ({})", color_space_name(*tagged_space), tagged->origin);
         file_pipeline.emplace(make_clip_pipeline(o, true, &*tagged_space));
     }
     const ClipPipeline& pipe = file_pipeline ? *file_pipeline : p;

@@ -44,6 +44,8 @@ public:
 
     /// The parameters (g, a, b, c, d, e, f) of a parametric curve, in ICC.1's order.
     using Parameters = std::array<double, 7>;
+    /// How many parameters ICC.1:2022 Table 68 gives function types 0 to 4.
+    static constexpr std::array<std::size_t, 5> parametric_counts{1, 3, 4, 5, 7};
 
     /// Throws irid::Error for a gamma kind with γ not in (0, 10], and for the parametric and
     /// sampled kinds (which need parametric() or sampled()).

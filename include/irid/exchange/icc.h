@@ -25,6 +25,7 @@
 // Every current reader (lcms2, and so PIL and GIMP; Apple ColorSync; Skia in Chromium; Firefox's
 // qcms; exiftool) reads version 4 matrix/TRC profiles.
 
+#include <irid/color/convert.h>
 #include <irid/color/rgb.h>
 #include <irid/color/types.h>
 #include <irid/io/image.h>
@@ -119,6 +120,11 @@ struct ImageSpace {
     /// Where the space came from, for messages: "the ICC profile 'Adobe RGB (1998)' (version 4.4,
     /// matrix/TRC)", "its EXR chromaticities", "no ICC profile or chromaticities".
     std::string origin;
+
+    /// The space a clip pipeline starts from: xyz for a profile (its values go to XYZ through
+    /// it), else rgb, encoded or linear. Points into this ImageSpace, which must outlive it and
+    /// stay where it is.
+    [[nodiscard]] ColorSpace colour_space() const noexcept;
 };
 
 /// The space of an image's values: its ICC profile (IccProfile::parse's refusals apply), else its
