@@ -194,10 +194,16 @@ class Film:
             raise ValueError("thickness: the Morpho wing has none (d1 and d2 set it)")
         return self._model.spectrum(wavelengths, a, _optional_number(thickness, "thickness"))
 
-    def color(self, thickness=None, angle=0.0, illuminant="D65", observer="cie1931", rgb="srgb"):
+    def color(self, thickness=None, angle=0.0, illuminant="D65", observer="cie1931", rgb="srgb",
+              integration="sum"):
         """The colours at every (thickness, angle) of the two arrays broadcast together:
         :class:`FilmColors` (xyz, rgb) of shape broadcast + (3,). thickness default the film's.
-        Each angle's Fresnel terms are computed once for all its thicknesses."""
+        Each angle's Fresnel terms are computed once for all its thicknesses.
+
+        integration: "sum" (the CIE 1 nm sum) or "fourier" (the exact single film's Airy series
+        against the transformed matching functions, ``irid film --color --integration
+        fourier``): one lossless layer, unpolarised, else ValueError; an unknown name is a
+        KeyError."""
         if thickness is None:
             thickness = self._model.thickness
         elif not self._model.has_thickness:
@@ -206,11 +212,12 @@ class Film:
         t = np.asarray(thickness, dtype=np.float64)
         a = _radians(angle)
         t, a = np.broadcast_arrays(t, a)
-        for name, v in (("illuminant", illuminant), ("observer", observer), ("rgb", rgb)):
+        for name, v in (("illuminant", illuminant), ("observer", observer), ("rgb", rgb),
+                        ("integration", integration)):
             if not isinstance(v, str):
                 raise ValueError(f"{name}: {v!r} is not a name")
         xyz, out = self._model.colors(np.ascontiguousarray(t).ravel(), np.ascontiguousarray(a).ravel(),
-                                      illuminant, observer, rgb)
+                                      illuminant, observer, rgb, integration)
         shape = t.shape + (3,)
         return FilmColors(xyz.reshape(shape), out.reshape(shape))
 
@@ -268,10 +275,12 @@ def film_reflectance(stack, wavelengths, angle=0.0, polarization="unpolarized", 
 
 
 def film_color(stack, thickness=None, angle=0.0, illuminant="D65", observer="cie1931", rgb="srgb",
-               ambient="air", substrate="air"):
+               ambient="air", substrate="air", integration="sum"):
     """Colours of a stack (as :func:`film_reflectance`) over arrays of thicknesses (of the first
-    layer) and angles [degrees] broadcast together: :class:`FilmColors` (xyz, rgb)."""
-    return _film(stack, ambient, substrate, "unpolarized").color(thickness, angle, illuminant, observer, rgb)
+    layer) and angles [degrees] broadcast together: :class:`FilmColors` (xyz, rgb).
+    integration: "sum" or "fourier" (:meth:`Film.color`)."""
+    return _film(stack, ambient, substrate, "unpolarized").color(thickness, angle, illuminant, observer, rgb,
+                                                                 integration)
 
 
 # --- The thesis' closed forms, element-wise with numpy broadcasting -------------------------

@@ -7,6 +7,7 @@
 #include <irid/color.h>
 #include <irid/optics/film.h>
 #include <irid/optics/film_color.h>
+#include <irid/optics/fourier_film.h>
 #include <irid/optics/material.h>
 #include <irid/optics/thesis_models.h>
 
@@ -77,6 +78,19 @@ void film_colors(const FilmModel& film, const Colorimeter& colorimeter, const st
             xyz[3 * i] = c.xyz.X, xyz[3 * i + 1] = c.xyz.Y, xyz[3 * i + 2] = c.xyz.Z;
             rgb[3 * i] = c.rgb_linear.r, rgb[3 * i + 1] = c.rgb_linear.g, rgb[3 * i + 2] = c.rgb_linear.b;
         }
+    });
+}
+
+/// The same colours by the Fourier series (irid/optics/fourier_film.h): the exact single film
+/// only (fourier_single_film throws for anything else).
+void fourier_film_colors(const FilmModel& film, const Colorimeter& colorimeter, const std::vector<double>& t,
+                         const std::vector<double>& angle_rad, double* xyz, double* rgb) {
+    const SingleFilm single = fourier_single_film(film);
+    const FourierFilm fourier(single, fourier_colorimeter_for(single, colorimeter));
+    tbb::parallel_for(std::size_t{0}, t.size(), [&](std::size_t i) {
+        const FilmColor c = fourier.color(t[i], std::cos(angle_rad[i]));
+        xyz[3 * i] = c.xyz.X, xyz[3 * i + 1] = c.xyz.Y, xyz[3 * i + 2] = c.xyz.Z;
+        rgb[3 * i] = c.rgb_linear.r, rgb[3 * i + 1] = c.rgb_linear.g, rgb[3 * i + 2] = c.rgb_linear.b;
     });
 }
 
@@ -200,7 +214,16 @@ void add_optics(py::module_& m) {
         .def(
             "colors",
             [](const FilmModel& f, const py::handle& thickness, const py::handle& angle_rad,
-               const std::string& illuminant, const std::string& observer, const std::string& rgb) {
+               const std::string& illuminant, const std::string& observer, const std::string& rgb,
+               const std::string& integration) {
+                const FilmIntegration how = parse_film_integration(integration);
+                if (how == FilmIntegration::fourier) {
+                    try {
+                        (void)fourier_single_film(f);
+                    } catch (const Error& e) {
+                        throw Error(std::string("integration 'fourier': ") + e.what() + "; use 'sum'");
+                    }
+                }
                 const std::vector<double> t = doubles(thickness, "thickness");
                 const std::vector<double> a = doubles(angle_rad, "angle");
                 if (t.size() != a.size()) throw Error("thickness and angle: sizes differ");
@@ -214,12 +237,13 @@ void add_optics(py::module_& m) {
                 double* rp = out_rgb.mutable_data();
                 {
                     py::gil_scoped_release release;
-                    film_colors(f, c, t, a, xp, rp);
+                    if (how == FilmIntegration::fourier) fourier_film_colors(f, c, t, a, xp, rp);
+                    else film_colors(f, c, t, a, xp, rp);
                 }
                 return py::make_tuple(xyz, out_rgb);
             },
             py::arg("thickness"), py::arg("angle_rad"), py::arg("illuminant"), py::arg("observer"),
-            py::arg("rgb"))
+            py::arg("rgb"), py::arg("integration") = "sum")
         .def("effective_thickness", &FilmModel::effective_thickness_nm, py::arg("angle_rad"));
 
     m.def(

@@ -357,6 +357,24 @@ Complex Material::index(double lambda_nm) const noexcept {
         m_model);
 }
 
+bool Material::is_constant() const noexcept {
+    return std::visit(Overloaded{
+                          [](const Constant&) { return true; },
+                          [](const Cauchy& c) { return c.b_um2 == 0.0 && c.c_um4 == 0.0; },
+                          [](const Sellmeier& m) {
+                              return std::all_of(m.terms.begin(), m.terms.end(), [](const SellmeierTerm& t) {
+                                  return t.b == 0.0 || t.c_um2 == 0.0;
+                              });
+                          },
+                          [](const Tabulated& t) {
+                              return std::all_of(t.samples.begin(), t.samples.end(), [&](const IndexSample& s) {
+                                  return s.n == t.samples.front().n && s.k == t.samples.front().k;
+                              });
+                          },
+                      },
+                      m_model);
+}
+
 bool Material::is_lossless() const noexcept {
     return std::visit(Overloaded{
                           [](const Constant& c) { return c.index.imag() == 0.0; },

@@ -77,6 +77,20 @@ struct TableOps {
     [[nodiscard]] Xyz xyz(const Carrier& c) const noexcept { return world.basis().xyz(c); }
 };
 
+/// The table path's RGB products with the film's colour by the Fourier series per hit.
+struct FourierOps {
+    using Carrier = RgbCarrier;
+    const World& world;
+    [[nodiscard]] Carrier rgb(const Rgb3& c) const noexcept { return {c}; }
+    [[nodiscard]] Carrier film(const ThicknessSample& t, double cos_theta) const noexcept {
+        return {world.film_fourier(t, cos_theta)};
+    }
+    [[nodiscard]] Carrier wing(double theta_deg) const noexcept {
+        return {world.wing_table().at(theta_deg)};
+    }
+    [[nodiscard]] Xyz xyz(const Carrier& c) const noexcept { return world.basis().xyz(c); }
+};
+
 struct SpectralOps {
     using Carrier = SpectralCarrier;
     const World& world;
@@ -328,9 +342,17 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         tbb::parallel_for(0, tiles, [&](int t) {
             const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
             const int x1 = std::min(W, x0 + tile), y1 = std::min(H, y0 + tile);
-            tile_rays[t] = scene.render.path == ColorPath::table
-                               ? trace_tile(world, TableOps{world}, x0, y0, x1, y1, samples)
-                               : trace_tile(world, SpectralOps{world}, x0, y0, x1, y1, samples);
+            switch (scene.render.path) {
+                case ColorPath::table:
+                    tile_rays[t] = trace_tile(world, TableOps{world}, x0, y0, x1, y1, samples);
+                    break;
+                case ColorPath::spectral:
+                    tile_rays[t] = trace_tile(world, SpectralOps{world}, x0, y0, x1, y1, samples);
+                    break;
+                case ColorPath::fourier:
+                    tile_rays[t] = trace_tile(world, FourierOps{world}, x0, y0, x1, y1, samples);
+                    break;
+            }
             const int n = ++done;
             if (options.progress) options.progress(n, tiles);
         });

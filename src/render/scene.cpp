@@ -200,12 +200,29 @@ void read_camera(const Json& j, const std::string& source, CameraParams& p) {
     if (p.eye == p.look_at) r.fail("camera.look_at", "must differ from camera.eye");
 }
 
+}  // namespace
+
+std::string_view color_path_name(ColorPath path) noexcept {
+    switch (path) {
+        case ColorPath::table: return "table";
+        case ColorPath::spectral: return "spectral";
+        case ColorPath::fourier: return "fourier";
+    }
+    return "table";
+}
+
+namespace {
+
 void read_render(const Json& j, const std::string& source, RenderParams& p) {
     ObjectReader r(j, "render", source,
                    {"path", "optics", "antialias", "max_depth", "seed", "space", "clip",
                     "exposure", "filter_radius", "filter_sigma"});
-    r.choice("path", p.path, {{"table", ColorPath::table}, {"spectral", ColorPath::spectral}});
+    r.choice("path", p.path,
+             {{"table", ColorPath::table}, {"spectral", ColorPath::spectral}, {"fourier", ColorPath::fourier}});
     r.choice("optics", p.optics, {{"thesis", OpticsModel::thesis}, {"exact", OpticsModel::exact}});
+    if (p.path == ColorPath::fourier && p.optics != OpticsModel::exact) {
+        r.fail("render.path", "is \"fourier\", the exact film's colour; it needs render.optics \"exact\"");
+    }
     r.choice("antialias", p.antialias,
              {{"none", FilmAntialias::none}, {"footprint", FilmAntialias::footprint}});
     r.integer("max_depth", p.max_depth, 1, 32);

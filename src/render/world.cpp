@@ -207,6 +207,10 @@ void World::build_tables() {
         } else {
             m_film_model = std::make_shared<ThesisFilm>(*m_film, 0.0);
         }
+        if (rp.path == ColorPath::fourier) {
+            m_fourier_film.emplace(*m_film, fourier_colorimeter_for(*m_film, col));
+            return;
+        }
         if (rp.path != ColorPath::table) return;
         // 2 nm × 41 rows of cos θ: the exact table keeps lookups within ΔE2000 0.36 over 0–80°
         // (docs/OPTICS.md).
@@ -258,7 +262,7 @@ void World::build_tables() {
         }
         return s;
     };
-    if (rp.path == ColorPath::table) {
+    if (rp.path == ColorPath::table || rp.path == ColorPath::fourier) {
         m_wing_rgb = AngleTable<Rgb3>(1.0, [&](double theta_deg) {
             const auto s = spectrum_at(theta_deg);
             const Rgb c = col.linear_rgb(
@@ -285,15 +289,40 @@ void World::wing_spectrum(double theta_deg, SpectralCarrier& out) const noexcept
     }
 }
 
+namespace {
+
+/// Thicknesses over a footprint: up to 8 spread evenly across it (one without a footprint).
+int footprint_thicknesses(const ThicknessSample& t, std::array<double, 8>& ts) noexcept {
+    const int n = t.footprint_nm > 1.0 ? std::clamp(static_cast<int>(t.footprint_nm / 4.0) + 1, 2, 8) : 1;
+    for (int k = 0; k < n; ++k)
+        ts[k] = n == 1 ? t.t_nm : std::max(0.0, t.t_nm + t.footprint_nm * ((k + 0.5) / n - 0.5));
+    return n;
+}
+
+}  // namespace
+
+Rgb3 World::film_fourier(const ThicknessSample& t, double cos_theta) const noexcept {
+    std::array<double, 8> ts{};
+    const int n = footprint_thicknesses(t, ts);
+    // As film_spectrum: stay just short of grazing incidence.
+    const double c = std::clamp(cos_theta, 1e-6, 1.0);
+    Xyz sum;
+    for (int k = 0; k < n; ++k) {
+        const Xyz x = m_fourier_film->xyz(ts[k], c);
+        sum.X += x.X / n;
+        sum.Y += x.Y / n;
+        sum.Z += x.Z / n;
+    }
+    const Rgb rgb = m_basis->colorimeter().linear_rgb(sum);
+    return {rgb.r, rgb.g, rgb.b};
+}
+
 void World::film_spectrum(const ThicknessSample& t, double cos_theta, SpectralCarrier& out) const {
     // Grazing incidence itself (cos θ = 0) carries no light into the film; stay just short of it.
     const double angle = std::acos(std::clamp(cos_theta, 1e-6, 1.0));
     // Over the footprint, the mean of up to 8 thicknesses spread evenly across it.
-    const int n = t.footprint_nm > 1.0 ? std::clamp(static_cast<int>(t.footprint_nm / 4.0) + 1, 2, 8) : 1;
     std::array<double, 8> ts{};
-    for (int k = 0; k < n; ++k)
-        ts[k] = n == 1 ? t.t_nm
-                       : std::max(0.0, t.t_nm + t.footprint_nm * ((k + 0.5) / n - 0.5));
+    const int n = footprint_thicknesses(t, ts);
     out.v.fill(0.0);
     const std::unique_ptr<FilmAtAngle> film = m_film_model->at_angle(angle);
     DenseValues r;

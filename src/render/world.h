@@ -9,6 +9,7 @@
 #include <irid/io/image.h>
 #include <irid/optics/film.h>
 #include <irid/optics/film_color.h>
+#include <irid/optics/fourier_film.h>
 #include <irid/optics/multilayer.h>
 #include <irid/optics/thesis_models.h>
 #include <irid/render/camera.h>
@@ -96,6 +97,9 @@ public:
     void wing_spectrum(double theta_deg, SpectralCarrier& out) const noexcept;
     /// The film's reflectance spectrum at a thickness (mean over the footprint) and angle.
     void film_spectrum(const ThicknessSample& t, double cos_theta, SpectralCarrier& out) const;
+    /// The film's linear RGB by the Fourier series (the fourier path), the mean over the
+    /// footprint taken as film_spectrum takes it.
+    [[nodiscard]] Rgb3 film_fourier(const ThicknessSample& t, double cos_theta) const noexcept;
 
     [[nodiscard]] double epsilon() const noexcept { return m_epsilon; }
     [[nodiscard]] double table_seconds() const noexcept { return m_table_seconds; }
@@ -130,6 +134,7 @@ private:
     std::optional<SingleFilm> m_film;
     std::shared_ptr<const FilmModel> m_film_model;
     std::optional<FilmTable> m_film_table;
+    std::optional<FourierFilm> m_fourier_film;
     double m_max_thickness_nm = 0;
     MorphoParameters m_wing_params;
     MorphoBlend m_wing_blend;

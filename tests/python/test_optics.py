@@ -211,6 +211,35 @@ def test_film_color_broadcasts_thickness_and_angle():
     assert np.all(c.xyz[..., 1] <= 1.0)
 
 
+def test_fourier_integration_matches_the_sum_and_the_closed_forms():
+    # A constant-index film on glass: the series against the 1 nm sum within ΔE2000 0.2 over
+    # thickness × angle, the bare interface at zero thickness (Fresnel, written here) and the
+    # incoherent sum of the faces for a 1 mm film.
+    f = irid.Film.exact([(1.33, 0.0)], ambient=1.0, substrate=1.5)
+    t = np.linspace(0.0, 2000.0, 41)[:, None]
+    a = np.array([0.0, 30.0, 60.0, 85.0])
+    exact = f.color(t, a)
+    fast = f.color(t, a, integration="fourier")
+    lab = lambda x: irid.convert(x, "xyz", "lab")
+    assert irid.delta_e(lab(exact.xyz), lab(fast.xyz)).max() < 0.2
+    bare = f.color(0.0, [0.0, 45.0], integration="fourier")
+    r = [0.5 * (airy(1.0, 1.5, 1.5, 0.0, 500.0, np.radians(x), "s") + airy(1.0, 1.5, 1.5, 0.0, 500.0, np.radians(x), "p"))
+         for x in (0.0, 45.0)]
+    np.testing.assert_allclose(bare.xyz[:, 1], np.ravel(r), atol=2e-6)
+    r01, r12 = (0.33 / 2.33) ** 2, (0.17 / 2.83) ** 2
+    thick = f.color(1e6, 0.0, integration="fourier")
+    np.testing.assert_allclose(thick.xyz[1], r01 + (1 - r01) ** 2 * r12 / (1 - r01 * r12), atol=1e-9)
+    # The same through film_color, and what it does not cover is refused.
+    np.testing.assert_allclose(irid.film_color([(1.33, 300.0)], angle=20.0, integration="fourier").xyz,
+                               irid.film_color([(1.33, 300.0)], angle=20.0).xyz, atol=2e-4)
+    with pytest.raises(ValueError, match="one layer"):
+        irid.Film.exact([(1.33, 100.0), (2.0, 50.0)]).color(integration="fourier")
+    with pytest.raises(ValueError, match="exact film"):
+        irid.Film.thesis("water", 300.0).color(integration="fourier")
+    with pytest.raises(KeyError, match="sum, fourier"):
+        f.color(100.0, integration="fft")
+
+
 def test_every_model_colours():
     for f in (irid.Film.exact([(1.33, 300.0)], polarization="s"), irid.Film.thesis("water", 300.0),
               irid.Film.thesis_multilayer("chitin", 100.0, 12), irid.Film.morpho(blend=True)):

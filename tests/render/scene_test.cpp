@@ -250,10 +250,17 @@ TEST(Scene, TheExactMorphosTableWorkIsBoundedBeforeRendering) {
     EXPECT_EQ(morpho_table_work(load_scene("oil-slick", {"render.optics=exact"})), 0.0);
 }
 
+TEST(Scene, TheFourierPathIsForTheExactOptics) {
+    EXPECT_EQ(load_scene("oil-slick", {"render.path=fourier"}).render.path, ColorPath::fourier);
+    EXPECT_EQ(color_path_name(ColorPath::fourier), "fourier");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("oil-slick", {"render.path=fourier", "render.optics=thesis"}); }),
+                    "'render.path' is \"fourier\", the exact film's colour; it needs render.optics \"exact\"");
+}
+
 TEST(Scene, AnOverrideThatIsNotUtf8IsAnErrorOfIrids) {
     // The scene fuzzer's scene-1: nlohmann's dump threw its own type_error on the bytes.
     EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"render.path=\xff"}); }),
-                    "'render.path' is \"\xef\xbf\xbd\"; allowed: table, spectral");
+                    "'render.path' is \"\xef\xbf\xbd\"; allowed: table, spectral, fourier");
     EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"render.p\xffth=1"}); }),
                     "unknown key 'render.p\\xffth'");
 }

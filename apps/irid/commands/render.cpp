@@ -147,7 +147,7 @@ int run_render(const RenderCliOptions& o) {
     image.description = fmt::format("irid render {} ({}×{}, {} spp, {} path, {} optics, clip {})",
                                      scene.source, scene.image.width, scene.image.height,
                                      scene.image.spp,
-                                     scene.render.path == render::ColorPath::table ? "table" : "spectral",
+                                     render::color_path_name(scene.render.path),
                                      scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
                                      scene.render.clip);
     // Both files or neither: each is written whole under a temporary name beside its target,

@@ -59,6 +59,11 @@ public:
     [[nodiscard]] const Xyz& white() const noexcept { return m_white; }
     [[nodiscard]] const RgbSpace& rgb_space() const noexcept { return m_rgb; }
     [[nodiscard]] Observer observer() const noexcept { return m_observer; }
+    /// The summation weights S(λ) x̄(λ) / Σ S ȳ, and those of ȳ and z̄, on the 1 nm grid: xyz()
+    /// is the dot product of a reflectance with each.
+    [[nodiscard]] const DenseSpectrum& weight_x() const noexcept { return m_weight_x; }
+    [[nodiscard]] const DenseSpectrum& weight_y() const noexcept { return m_weight_y; }
+    [[nodiscard]] const DenseSpectrum& weight_z() const noexcept { return m_weight_z; }
 
 private:
     DenseSpectrum m_weight_x, m_weight_y, m_weight_z;  // S(λ) x̄(λ) / Σ S ȳ, ...

@@ -77,6 +77,10 @@ public:
     /// True when k = 0 at every wavelength: always for the Cauchy and Sellmeier models (validated
     /// to be real over the visible range), for constant and tabulated data when every k is 0.
     [[nodiscard]] bool is_lossless() const noexcept;
+    /// True when N does not depend on the wavelength: a constant index, a Cauchy formula with
+    /// B = C = 0, a Sellmeier formula each of whose terms has B = 0 or C = 0, a table whose
+    /// samples all hold the same n and k.
+    [[nodiscard]] bool is_constant() const noexcept;
 
 private:
     struct Constant {

@@ -29,9 +29,13 @@ using RgbParam = std::array<double, 3>;
 enum class SceneKind { oil_slick, soap_bubbles, morpho };
 
 /// How film colour reaches the image: the thesis' way (§3.3: a colour table per film, colours
-/// multiplied as RGB) or a spectrum per ray (reflectance evaluated per hit at 1 nm, every
-/// product taken wavelength by wavelength, XYZ at the end).
-enum class ColorPath { table, spectral };
+/// multiplied as RGB), a spectrum per ray (reflectance evaluated per hit at 1 nm, every product
+/// taken wavelength by wavelength, XYZ at the end), or the exact film's colour per hit by the
+/// Fourier series (irid/optics/fourier_film.h), multiplied as RGB like the table path but with
+/// no table (the exact optics only; the Morpho wing, a stack, keeps its angle table).
+enum class ColorPath { table, spectral, fourier };
+/// "table", "spectral", "fourier".
+[[nodiscard]] std::string_view color_path_name(ColorPath path) noexcept;
 
 /// Which physics gives the film's reflectance: the thesis' closed forms (eq. 21/22 with eq. 24
 /// for single films, eq. 25 with eq. 29 for the Morpho) or the exact optics (Airy with Fresnel

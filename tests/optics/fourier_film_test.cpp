@@ -1,0 +1,232 @@
+// The Fourier film colour against the exact 1 nm sum (PreparedFilm, itself tested against the
+// transfer matrix), and against the closed forms it must reduce to: a bare interface at zero
+// thickness and the incoherent sum of the two faces for a thick film.
+#include <irid/color/illuminant.h>
+#include <irid/error.h>
+#include <irid/optics/fourier_film.h>
+#include <irid/optics/multilayer.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+namespace irid {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+SingleFilm constant_film(double n0, double n1, Complex n2) {
+    return {Material::constant("ambient", n0), Material::constant("film", n1),
+            Material::constant("substrate", n2.real(), n2.imag())};
+}
+
+std::shared_ptr<const FourierColorimeter> shared_table(const Colorimeter& c, int bands = 1,
+                                                       bool slopes = false) {
+    return std::make_shared<const FourierColorimeter>(c, bands, slopes);
+}
+
+struct Error2000 {
+    double max = 0.0, mean = 0.0;
+};
+
+/// ΔE2000 between the series and the 1 nm sum over thickness 0..2000 nm × angle 0..85°.
+Error2000 error_over_grid(const SingleFilm& film, const FourierFilm& fourier, const Colorimeter& c,
+                          double thickness_step = 13.0, double angle_step = 8.5) {
+    Error2000 e;
+    int n = 0;
+    for (double angle = 0.0; angle <= 85.0 + 1e-9; angle += angle_step) {
+        const double theta = angle * pi / 180.0;
+        const PreparedFilm exact(film, theta);
+        for (double t = 0.0; t <= 2000.0; t += thickness_step) {
+            const double d = delta_e_2000_of(c, exact.color(t, c).xyz, fourier.xyz(t, std::cos(theta)));
+            e.max = std::max(e.max, d);
+            e.mean += d;
+            ++n;
+        }
+    }
+    e.mean /= n;
+    return e;
+}
+
+TEST(FourierColorimeter, BandsPartitionTheWhite) {
+    const Colorimeter c;
+    for (const int bands : {1, 3, 8}) {
+        const FourierColorimeter f(c, bands, true);
+        Xyz sum;
+        for (int b = 0; b < f.bands(); ++b) {
+            sum.X += f.band_white(b).X;
+            sum.Y += f.band_white(b).Y;
+            sum.Z += f.band_white(b).Z;
+            // At τ = 0 the transform is the band's white (every phasor is 1).
+            const auto v = f.transform(b, 0.0);
+            EXPECT_NEAR(v.y.real(), f.band_white(b).Y, 1e-12);
+            EXPECT_NEAR(v.y.imag(), 0.0, 1e-12);
+            EXPECT_GT(f.max_opd_nm(b), 10000.0);
+        }
+        EXPECT_NEAR(sum.X, c.white().X, 1e-12) << bands;
+        EXPECT_NEAR(sum.Y, 1.0, 1e-12) << bands;
+        EXPECT_NEAR(sum.Z, c.white().Z, 1e-12) << bands;
+    }
+}
+
+TEST(FourierColorimeter, TransformIsTheDirectSumBetweenNodes) {
+    // V(τ) = Σ_i w_i e^{2πiτ(ν_i − ν_c)}, summed directly at a τ between table nodes.
+    const Colorimeter c;
+    const FourierColorimeter f(c);
+    for (const double tau : {1.0, 333.3, 2501.7, 9999.0}) {
+        std::complex<double> direct;
+        for (int i = 0; i < dense_sample_count; ++i) {
+            const double nu = 1.0 / DenseSpectrum::wavelength_nm(i);
+            direct += c.weight_y()[i] * std::polar(1.0, 2.0 * pi * tau * (nu - f.band_wavenumber(0)));
+        }
+        const auto v = f.transform(0, tau);
+        // Linear interpolation at a 2 nm step: within h²/8 max|V''| (header).
+        EXPECT_NEAR(v.y.real(), direct.real(), 2e-5) << tau;
+        EXPECT_NEAR(v.y.imag(), direct.imag(), 2e-5) << tau;
+    }
+    EXPECT_EQ(f.transform(0, -1.0).y, std::complex<double>(0.0));
+    EXPECT_EQ(f.transform(0, 1e9).y, std::complex<double>(0.0));
+}
+
+TEST(FourierColorimeter, RejectsBandCounts) {
+    const Colorimeter c;
+    EXPECT_THROW(FourierColorimeter(c, 0), Error);
+    EXPECT_THROW(FourierColorimeter(c, FourierColorimeter::max_bands + 1), Error);
+}
+
+TEST(FourierFilm, ConstantIndicesMatchTheOneNanometreSum) {
+    // The grid of film indices on air, water (n = 1.333), glass (1.5) and a metal with
+    // a constant complex index (silver near 550 nm, Johnson & Christy 1972: 0.12 + 3.34i).
+    const Colorimeter c;
+    const auto table = shared_table(c);
+    for (const double n1 : {1.2, 1.33, 1.5, 2.0}) {
+        for (const Complex n2 : {Complex(1.0), Complex(1.333), Complex(1.5), Complex(0.12, 3.34)}) {
+            const SingleFilm film = constant_film(1.0, n1, n2);
+            const FourierFilm fourier(film, table);
+            const Error2000 e = error_over_grid(film, fourier, c);
+            EXPECT_LT(e.max, 0.2) << "film " << n1 << " on " << n2;
+            EXPECT_LT(e.mean, 0.01) << "film " << n1 << " on " << n2;
+        }
+    }
+}
+
+TEST(FourierFilm, OtherIlluminantsAndObservers) {
+    const SingleFilm film = constant_film(1.0, 1.33, 1.0);
+    for (const char* illuminant : {"A", "D50"}) {
+        const Colorimeter c(illuminant_by_name(illuminant), Observer::cie1964_10deg);
+        const FourierFilm fourier(film, shared_table(c));
+        EXPECT_LT(error_over_grid(film, fourier, c, 29.0, 17.0).max, 0.2) << illuminant;
+    }
+}
+
+TEST(FourierFilm, ZeroThicknessIsTheBareInterface) {
+    // d = 0: the film vanishes and R is the ambient–substrate Fresnel reflectance (constant in
+    // λ), so XYZ = R × white.
+    const Colorimeter c;
+    const auto table = shared_table(c);
+    for (const Complex n2 : {Complex(1.5), Complex(0.12, 3.34)}) {
+        const SingleFilm film = constant_film(1.0, 1.4, n2);
+        const FourierFilm fourier(film, table);
+        for (const double angle : {0.0, 40.0, 75.0}) {
+            const double s = std::sin(angle * pi / 180.0);
+            const FresnelCoefficients f = fresnel(1.0, n2, s);
+            const double r = 0.5 * (std::norm(f.r_s) + std::norm(f.r_p));
+            const Xyz x = fourier.xyz(0.0, std::cos(angle * pi / 180.0));
+            EXPECT_NEAR(x.Y, r, 2e-6) << angle;
+            EXPECT_NEAR(x.X, r * c.white().X, 2e-6) << angle;
+        }
+    }
+}
+
+TEST(FourierFilm, ThickFilmIsTheIncoherentSum) {
+    // Past the table's end every interference term drops and R is the incoherent sum of the
+    // faces' reflectances per polarisation (Stokes): R = R01 + (1 − R01)² R12 / (1 − R01 R12).
+    const Colorimeter c;
+    const double n1 = 1.5;
+    const SingleFilm film = constant_film(1.0, n1, Complex(2.2));
+    const FourierFilm fourier(film, shared_table(c));
+    for (const double angle : {0.0, 30.0, 60.0}) {
+        const double s = std::sin(angle * pi / 180.0);
+        const FresnelCoefficients f01 = fresnel(1.0, n1, s);
+        const FresnelCoefficients f12 = fresnel(n1, 2.2, s);
+        const auto incoherent = [](double r01, double r12) {
+            return r01 + (1.0 - r01) * (1.0 - r01) * r12 / (1.0 - r01 * r12);
+        };
+        const double r = 0.5 * (incoherent(std::norm(f01.r_s), std::norm(f12.r_s)) +
+                                 incoherent(std::norm(f01.r_p), std::norm(f12.r_p)));
+        const Xyz x = fourier.xyz(1e6, std::cos(angle * pi / 180.0));
+        EXPECT_NEAR(x.Y, r, 1e-9) << angle;
+    }
+}
+
+TEST(FourierFilm, MoreBandsAgreeForConstantIndices) {
+    // The partition into bands is exact when nothing disperses.
+    const Colorimeter c;
+    const SingleFilm film = constant_film(1.0, 1.33, Complex(1.5));
+    const FourierFilm one(film, shared_table(c, 1));
+    const FourierFilm four(film, shared_table(c, 4, true));
+    for (const double t : {0.0, 120.0, 480.0, 1500.0}) {
+        for (const double cos_theta : {1.0, 0.6, 0.2}) {
+            EXPECT_LT(delta_e_2000_of(c, one.xyz(t, cos_theta), four.xyz(t, cos_theta)), 0.05)
+                << t << " " << cos_theta;
+        }
+    }
+}
+
+TEST(FourierFilm, DispersiveFilmsWithSlopes) {
+    // Water's and mineral oil's dispersion (Daimon & Masumura 2007; Cauchy) handled by the
+    // slopes of one band (fourier_colorimeter_for): oil on water stays within 0.2 everywhere,
+    // a soap film on average (its worst is past 75°, docs/OPTICS.md).
+    const Colorimeter c;
+    const SingleFilm oil{*find_material("air"), *find_material("mineral-oil"), *find_material("water")};
+    ASSERT_TRUE(fourier_needs_slopes(oil));
+    const FourierFilm oil_fourier(oil, fourier_colorimeter_for(oil, c));
+    EXPECT_LT(error_over_grid(oil, oil_fourier, c).max, 0.2);
+    const SingleFilm soap{*find_material("air"), *find_material("water"), *find_material("air")};
+    const FourierFilm soap_fourier(soap, fourier_colorimeter_for(soap, c));
+    EXPECT_LT(error_over_grid(soap, soap_fourier, c).mean, 0.2);
+    // Holding the indices at the band's centre (no slopes) is worse: the correction corrects.
+    const FourierFilm held(soap, shared_table(c, 1, false));
+    EXPECT_GT(error_over_grid(soap, held, c).mean, error_over_grid(soap, soap_fourier, c).mean);
+}
+
+TEST(FourierFilm, PastTheFilmsCriticalAngleFallsBackToTheSum) {
+    // From water into a film of 1.2, past 64.4° the film is evanescent: no real phase, so the
+    // 1 nm sum is used, and the colours agree with PreparedFilm exactly.
+    const Colorimeter c;
+    const SingleFilm film = constant_film(1.33, 1.2, Complex(1.5));
+    const FourierFilm fourier(film, shared_table(c));
+    const double theta = 70.0 * pi / 180.0;
+    const PreparedFilm exact(film, theta);
+    for (const double t : {10.0, 200.0}) {
+        const Xyz a = exact.color(t, c).xyz, b = fourier.xyz(t, std::cos(theta));
+        EXPECT_NEAR(a.Y, b.Y, 1e-12);
+        EXPECT_NEAR(a.Z, b.Z, 1e-12);
+    }
+}
+
+TEST(FourierFilm, RefusesAbsorbingFilmsAndModelsItDoesNotCover) {
+    const Colorimeter c;
+    const auto table = shared_table(c);
+    EXPECT_THROW(FourierFilm(constant_film(1.0, 1.0, Complex(1.5)), nullptr), Error);
+    const SingleFilm absorbing{Material::constant("air", 1.0), Material::constant("dye", 1.5, 0.1),
+                               Material::constant("glass", 1.5)};
+    EXPECT_THROW(FourierFilm(absorbing, table), Error);
+    const Material air = Material::constant("air", 1.0);
+    const ExactFilm two(air, {{Material::constant("a", 1.4), 100.0}, {Material::constant("b", 2.0), 50.0}}, air);
+    EXPECT_THROW((void)fourier_single_film(two), Error);
+    const ExactFilm polarised(air, {{Material::constant("a", 1.4), 100.0}}, air, Polarization::s);
+    EXPECT_THROW((void)fourier_single_film(polarised), Error);
+    const ThesisFilm thesis({air, Material::constant("a", 1.4), air}, 100.0);
+    EXPECT_THROW((void)fourier_single_film(thesis), Error);
+    const ExactFilm one(air, {{Material::constant("a", 1.4), 100.0}}, air);
+    EXPECT_EQ(fourier_single_film(one).film.name(), "a");
+    EXPECT_EQ(parse_film_integration("fourier"), FilmIntegration::fourier);
+    EXPECT_EQ(film_integration_name(FilmIntegration::sum), "sum");
+    EXPECT_THROW((void)parse_film_integration("fft"), UnknownNameError);
+}
+
+}  // namespace
+}  // namespace irid
