@@ -26,6 +26,7 @@
 #include <irid/color/spectrum.h>
 #include <irid/color/types.h>
 #include <irid/optics/film_color.h>
+#include <irid/optics/fourier_film.h>
 #include <irid/optics/material.h>
 #include <irid/optics/multilayer.h>
 #include <irid/optics/thesis_models.h>
@@ -282,6 +283,49 @@ void BM_PreparedFilmColor(benchmark::State& state) {
     run_colors(state, [&](std::size_t, double t) { return prepared.color(t, cm); });
 }
 BENCHMARK(BM_PreparedFilmColor)->ArgName("film")->Arg(0)->Arg(1)->Arg(2);
+
+// (d) The Fourier series (irid/optics/fourier_film.h): any thickness and any angle per colour,
+// nothing prepared per angle, so its peer is (a), from scratch, not (b), prepared at one angle.
+// The cosine of the angle cycles through 256 pseudo-random values in [cos 80°, 1]. Arg 0: a
+// constant-index soap film (n 1.333 in vacuum, one band); 1: the soap film of water (Sellmeier,
+// one band with slopes); 2: mineral oil on water (slopes); 3: a 1.5 film on a constant metal
+// index 0.12 + 3.34i (silver near 550 nm, Johnson & Christy 1972; complex r12, one band).
+irid::SingleFilm fourier_case(std::int64_t which) {
+    switch (which) {
+        case 1: return soap_film();
+        case 2: return {material("air"), material("mineral-oil"), material("water")};
+        case 3:
+            return {irid::Material::constant("vacuum", 1.0), irid::Material::constant("film", 1.5),
+                    irid::Material::constant("metal", 0.12, 3.34)};
+        default:
+            return {irid::Material::constant("vacuum", 1.0), irid::Material::constant("soap", 1.333),
+                    irid::Material::constant("vacuum", 1.0)};
+    }
+}
+
+void BM_FourierFilmColor(benchmark::State& state) {
+    const irid::SingleFilm f = fourier_case(state.range(0));
+    const irid::FourierFilm fourier(f, irid::fourier_colorimeter_for(f, colorimeter()));
+    std::mt19937 rng(seed + 1);
+    std::uniform_real_distribution<double> cos_theta(std::cos(80.0 * std::numbers::pi / 180.0), 1.0);
+    std::vector<double> cosines(thickness_count);
+    for (double& c : cosines) c = cos_theta(rng);
+    run_colors(state, [&](std::size_t which, double t) { return fourier.xyz(t, cosines[which]); });
+}
+BENCHMARK(BM_FourierFilmColor)->ArgName("film")->Arg(0)->Arg(1)->Arg(2)->Arg(3);
+
+// (d') Building the transforms for a colorimeter (once per illuminant and observer): one band,
+// and one band with its slope table.
+void BM_FourierColorimeterBuild(benchmark::State& state) {
+    const bool slopes = state.range(0) != 0;
+    for (auto _ : state) {
+        const irid::FourierColorimeter table(colorimeter(), 1, slopes);
+        benchmark::DoNotOptimize(&table);
+        benchmark::ClobberMemory();
+    }
+    report(state, 1);
+}
+BENCHMARK(BM_FourierColorimeterBuild)->ArgName("slopes")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // (c) The generic path: transfer-matrix spectrum of the one-layer stack, then XYZ.
 void BM_StackSpectrumXyz(benchmark::State& state) {

@@ -125,42 +125,72 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
             band.white.Y += c[1][i];
             band.white.Z += c[2][i];
         }
-        std::tie(band.table, band.bound) =
-            tabulate(nu, band.nu_c, c, step_nm, quiet_level, run_nodes, max_nodes);
-        if (!slopes) continue;
+        std::vector<std::array<double, 6>> v, v1, v2;
+        std::tie(v, band.bound) = tabulate(nu, band.nu_c, c, step_nm, quiet_level, run_nodes, max_nodes);
+        const auto store = [&] {
+            band.nodes = v.size();
+            band.table.assign(band.nodes * stride(), 0.0);
+            for (std::size_t j = 0; j < band.nodes; ++j) {
+                double* row = &band.table[j * stride()];
+                std::copy(v[j].begin(), v[j].end(), row);
+                if (j < v1.size()) std::copy(v1[j].begin(), v1[j].end(), row + 6);
+                if (j < v2.size()) std::copy(v2[j].begin(), v2[j].end(), row + 12);
+            }
+        };
+        if (!slopes) {
+            store();
+            continue;
+        }
         for (int i = 0; i < dense_sample_count; ++i) {
             for (int ch = 0; ch < 3; ++ch) c[ch][i] *= nu[i] - band.nu_c;
             band.moment.X += c[0][i];
             band.moment.Y += c[1][i];
             band.moment.Z += c[2][i];
         }
-        // The moment's values are about δ times smaller: its quiet level scales with δ.
-        std::tie(band.moment_table, band.moment_bound) =
+        // The moments' values are about δ and δ² times smaller: so are their quiet levels.
+        std::tie(v1, band.moment_bound) =
             tabulate(nu, band.nu_c, c, step_nm, quiet_level * m_slope_step, run_nodes, max_nodes);
+        for (int i = 0; i < dense_sample_count; ++i) {
+            for (int ch = 0; ch < 3; ++ch) c[ch][i] *= nu[i] - band.nu_c;
+        }
+        std::tie(v2, band.second_moment_bound) = tabulate(
+            nu, band.nu_c, c, step_nm, quiet_level * m_slope_step * m_slope_step, run_nodes, max_nodes);
+        store();
     }
 }
 
 namespace {
 
-FourierColorimeter::Transform lookup(const std::vector<std::array<double, 6>>& t, double u) noexcept {
-    if (!(u >= 0.0) || u >= static_cast<double>(t.size()) - 1.0) return {};
+/// Linear interpolation of `count` transforms (6 doubles each) from a row-major table of
+/// `stride` doubles per node, at node position u; zeros outside [0, nodes − 1).
+template <std::size_t count>
+std::array<FourierColorimeter::Transform, count> lookup(const std::vector<double>& t, std::size_t nodes,
+                                                        std::size_t stride, double u) noexcept {
+    std::array<FourierColorimeter::Transform, count> out{};
+    if (!(u >= 0.0) || u >= static_cast<double>(nodes) - 1.0) return out;
     const auto j = static_cast<std::size_t>(u);
     const double f = u - static_cast<double>(j);
-    const auto& a = t[j];
-    const auto& c = t[j + 1];
-    const auto at = [&](int k) { return a[k] + f * (c[k] - a[k]); };
-    return {{at(0), at(1)}, {at(2), at(3)}, {at(4), at(5)}};
+    const double* a = &t[j * stride];
+    const double* c = a + stride;
+    const auto at = [&](std::size_t k) { return a[k] + f * (c[k] - a[k]); };
+    for (std::size_t n = 0; n < count; ++n) {
+        const std::size_t o = 6 * n;
+        out[n] = {{at(o), at(o + 1)}, {at(o + 2), at(o + 3)}, {at(o + 4), at(o + 5)}};
+    }
+    return out;
 }
 
 }  // namespace
 
 FourierColorimeter::Transform FourierColorimeter::transform(int b, double tau_nm) const noexcept {
-    return lookup(m_bands[b].table, tau_nm / step_nm);
+    const Band& band = m_bands[b];
+    return lookup<1>(band.table, band.nodes, stride(), tau_nm / step_nm)[0];
 }
 
-std::array<FourierColorimeter::Transform, 2> FourierColorimeter::transforms(int b, double tau_nm) const noexcept {
-    const double u = tau_nm / step_nm;
-    return {lookup(m_bands[b].table, u), lookup(m_bands[b].moment_table, u)};
+std::array<FourierColorimeter::Transform, 3> FourierColorimeter::transforms(int b, double tau_nm) const noexcept {
+    const Band& band = m_bands[b];
+    if (!m_slopes) return {transform(b, tau_nm), Transform{}, Transform{}};
+    return lookup<3>(band.table, band.nodes, stride(), tau_nm / step_nm);
 }
 
 bool fourier_needs_slopes(const SingleFilm& film) noexcept {
@@ -185,6 +215,7 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
         throw Error("Fourier film colour: the film '" + film.film.name() +
                     "' absorbs (k > 0); the series needs a lossless film (use the 1 nm sum)");
     }
+    m_sum_only = !film.substrate.is_lossless() && !film.substrate.is_constant();
     const auto media_at = [&](double lambda) {
         return Media{film.ambient.index(lambda).real(), film.film.index(lambda).real(),
                      film.substrate.index(lambda)};
@@ -240,18 +271,28 @@ bool series_of(double n0, double n1, std::complex<double> n2, double cos_theta, 
     const double q1_sq = n1 * n1 - n0 * n0 * sin2;
     if (!(q1_sq > 1e-6 * n1 * n1)) return false;
     const double q1 = std::sqrt(q1_sq);
-    std::complex<double> q2 = std::sqrt(n2 * n2 - n0 * n0 * sin2);
-    if (q2.imag() < 0.0 || (q2.imag() == 0.0 && q2.real() < 0.0)) q2 = -q2;
     // Fresnel amplitudes as PreparedFilm::prepare writes them (tangential fields).
     const double a0 = n0 * n0, a1 = n1 * n1;
-    const std::complex<double> a2 = n2 * n2;
     const double r01[2] = {(q0 - q1) / (q0 + q1), (a0 * q1 - a1 * q0) / (a0 * q1 + a1 * q0)};
-    const std::complex<double> r12[2] = {(q1 - q2) / (q1 + q2), (a1 * q2 - a2 * q1) / (a1 * q2 + a2 * q1)};
+    std::complex<double> r12[2];
+    const double q2_sq = n2.real() * n2.real() - n0 * n0 * sin2;
+    if (n2.imag() == 0.0 && q2_sq > 0.0) {
+        // A lossless substrate below its critical angle: real amplitudes (no complex division).
+        const double q2 = std::sqrt(q2_sq), a2 = n2.real() * n2.real();
+        r12[0] = (q1 - q2) / (q1 + q2);
+        r12[1] = (a1 * q2 - a2 * q1) / (a1 * q2 + a2 * q1);
+    } else {
+        std::complex<double> q2 = std::sqrt(n2 * n2 - n0 * n0 * sin2);
+        if (q2.imag() < 0.0 || (q2.imag() == 0.0 && q2.real() < 0.0)) q2 = -q2;
+        const std::complex<double> a2 = n2 * n2;
+        r12[0] = (q1 - q2) / (q1 + q2);
+        r12[1] = (a1 * q2 - a2 * q1) / (a1 * q2 + a2 * q1);
+    }
     for (int p = 0; p < 2; ++p) {
         const double a = r01[p];
         const std::complex<double> b = r12[p] * (1.0 - a * a);
         const std::complex<double> q = -a * r12[p];
-        if (std::abs(q) > max_ratio) return false;
+        if (std::norm(q) > max_ratio * max_ratio) return false;
         const double denom = 1.0 - std::norm(q);
         // Unpolarised: the mean of s and p, so each carries half.
         out[p] = {0.5 * (a * a + std::norm(b) / denom), 0.5 * (a * b + std::norm(b) * q / denom), q};
@@ -263,6 +304,7 @@ bool series_of(double n0, double n1, std::complex<double> n2, double cos_theta, 
 }  // namespace
 
 Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
+    if (m_sum_only) return exact_sum(thickness_nm, cos_theta);
     const FourierColorimeter& fc = *m_colorimeter;
     const double d = thickness_nm;
     const double sin2 = std::max(0.0, 1.0 - cos_theta * cos_theta);
@@ -278,61 +320,79 @@ Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
         const BandMedia& m = m_media[b];
         // Sets of coefficients: 0 at the centre, 1 and 2 at ν_c − δ and ν_c + δ (slopes).
         std::array<Series, 2> set[3];
-        double q1 = 0.0, q1_side = 0.0;
+        double q1 = 0.0, q1_below = 0.0, q1_above = 0.0;
         if (!series_of(m.centre.n0, m.centre.n1, m.centre.n2, cos_theta, sin2, max_ratio, set[0], q1)) {
             return exact_sum(thickness_nm, cos_theta);
         }
         const int sets = slopes ? 3 : 1;
-        if (slopes && (!series_of(m.below.n0, m.below.n1, m.below.n2, cos_theta, sin2, max_ratio, set[1], q1_side) ||
-                       !series_of(m.above.n0, m.above.n1, m.above.n2, cos_theta, sin2, max_ratio, set[2], q1_side))) {
+        if (slopes && (!series_of(m.below.n0, m.below.n1, m.below.n2, cos_theta, sin2, max_ratio, set[1], q1_below) ||
+                       !series_of(m.above.n0, m.above.n1, m.above.n2, cos_theta, sin2, max_ratio, set[2], q1_above))) {
             return exact_sum(thickness_nm, cos_theta);
         }
         add(set[0][0].dc + set[0][1].dc, fc.band_white(b));
         if (slopes) add((set[2][0].dc + set[2][1].dc - set[1][0].dc - set[1][1].dc) * inv_2delta, fc.band_moment(b));
-        // The phase about the band's centre: φ(ν) ≈ φ_c + 2π τ1 (ν − ν_c), τ1 = 2 d g, g the group
-        // value of q1 (dq1/dλ from the indices' slopes per nm); e^{imφ} W(...) = e^{imφ_c} V(m τ1).
-        const double dq1 = (m.centre.n1 * m.dn1 - m.centre.n0 * m.dn0 * sin2) / q1;
-        const double tau1 = 2.0 * d * (q1 - m.lambda_c * dq1);
-        const std::complex<double> u = std::polar(1.0, 4.0 * pi * d * q1 / m.lambda_c);
+        // The phase about the band's centre, φ = 4π d f(ν), f = ν q1: φ(ν) ≈ φ_c + 2π τ1 (ν − ν_c)
+        // (+ ψ), τ1 = 2 d f'(ν_c); e^{imφ} W(...) = e^{imφ_c} V(m τ1). Without slopes f' is the
+        // group value q1 − λ dq1/dλ from the indices' slopes per nm; with them, f' and f'' come
+        // from f at ν_c and ν_c ± δ, and ψ = 2π d f'' (ν − ν_c)² enters as i m ψ against V2.
+        const double nu_c = 1.0 / m.lambda_c;
+        double f1 = 0.0, psi2 = 0.0;
+        if (slopes) {
+            const double delta = fc.slope_step();
+            const double f_below = (nu_c - delta) * q1_below, f_c = nu_c * q1, f_above = (nu_c + delta) * q1_above;
+            f1 = (f_above - f_below) / (2.0 * delta);
+            psi2 = 2.0 * pi * d * (f_above - 2.0 * f_c + f_below) / (delta * delta);
+        } else {
+            const double dq1 = (m.centre.n1 * m.dn1 - m.centre.n0 * m.dn0 * sin2) / q1;
+            f1 = q1 - m.lambda_c * dq1;
+        }
+        const double tau1 = 2.0 * d * f1;
+        const std::complex<double> u = std::polar(1.0, 4.0 * pi * d * q1 * nu_c);
         // term[s][p] = G q^{k-1} u^k for set s, polarisation p, at the k-th step of the loop.
         std::complex<double> term[3][2], ratio[3][2];
-        double tail = 0.0;  // Σ |term| bound / (1 − |q|): what the terms not yet added can add
         const double bounds[3] = {fc.band_bound(b), fc.band_moment_bound(b) * inv_2delta,
                                   fc.band_moment_bound(b) * inv_2delta};
-        double tail_factor[3][2];
+        // After k terms, what the rest can add is at most 2 Σ |term_1| |q|^k bound / (1 − |q|)
+        // ≤ 2 A |q|max^k (|V| <= bound; the quadratic term's own tail is at most m|ψ| times the
+        // linear one's): the number of terms follows once, not per term.
+        double a = 0.0, q_max = 0.0;
         for (int s = 0; s < sets; ++s) {
             for (int p = 0; p < 2; ++p) {
                 term[s][p] = set[s][p].g * u;
                 ratio[s][p] = set[s][p].q * u;
-                tail_factor[s][p] = bounds[s] / (1.0 - std::abs(set[s][p].q));
+                const double q_abs = std::sqrt(std::norm(set[s][p].q));
+                a += std::sqrt(std::norm(term[s][p])) * bounds[s] / (1.0 - q_abs);
+                q_max = std::max(q_max, q_abs);
             }
         }
+        const double wanted = series_tolerance / (2.0 * a);
+        int terms = 0;
+        if (!(wanted >= 1.0)) {
+            terms = q_max > 0.0 ? static_cast<int>(std::ceil(std::log(wanted) / std::log(q_max))) : 1;
+            terms = std::max(terms, 1);
+        }
         const double max_tau = fc.max_opd_nm(b);
-        for (int k = 1;; ++k) {
+        for (int k = 1; k <= terms; ++k) {
             const double tau = k * tau1;
             if (tau >= max_tau) break;
             const std::complex<double> t = term[0][0] + term[0][1];
             if (slopes) {
                 const auto v = fc.transforms(b, tau);
                 const std::complex<double> ts = (term[2][0] + term[2][1] - term[1][0] - term[1][1]) * inv_2delta;
-                // 2 Re(t V + ts V1) per channel.
-                out.X += 2.0 * (t * v[0].x + ts * v[1].x).real();
-                out.Y += 2.0 * (t * v[0].y + ts * v[1].y).real();
-                out.Z += 2.0 * (t * v[0].z + ts * v[1].z).real();
+                const std::complex<double> tq = t * std::complex<double>(0.0, k * psi2);
+                // 2 Re(t V + ts V1 + i k ψ2 t V2) per channel.
+                out.X += 2.0 * (t * v[0].x + ts * v[1].x + tq * v[2].x).real();
+                out.Y += 2.0 * (t * v[0].y + ts * v[1].y + tq * v[2].y).real();
+                out.Z += 2.0 * (t * v[0].z + ts * v[1].z + tq * v[2].z).real();
             } else {
                 const auto v = fc.transform(b, tau);
                 out.X += 2.0 * (t.real() * v.x.real() - t.imag() * v.x.imag());
                 out.Y += 2.0 * (t.real() * v.y.real() - t.imag() * v.y.imag());
                 out.Z += 2.0 * (t.real() * v.z.real() - t.imag() * v.z.imag());
             }
-            tail = 0.0;
             for (int s = 0; s < sets; ++s) {
-                for (int p = 0; p < 2; ++p) {
-                    term[s][p] *= ratio[s][p];
-                    tail += std::abs(term[s][p]) * tail_factor[s][p];
-                }
+                for (int p = 0; p < 2; ++p) term[s][p] *= ratio[s][p];
             }
-            if (2.0 * tail < series_tolerance) break;
         }
     }
     return out;

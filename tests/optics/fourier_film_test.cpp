@@ -176,9 +176,9 @@ TEST(FourierFilm, MoreBandsAgreeForConstantIndices) {
 }
 
 TEST(FourierFilm, DispersiveFilmsWithSlopes) {
-    // Water's and mineral oil's dispersion (Daimon & Masumura 2007; Cauchy) handled by the
-    // slopes of one band (fourier_colorimeter_for): oil on water stays within 0.2 everywhere,
-    // a soap film on average (its worst is past 75°, docs/OPTICS.md).
+    // Water's and mineral oil's dispersion (Daimon & Masumura 2007; Cauchy) handled by one band
+    // with slopes (fourier_colorimeter_for): oil on water within 0.2 everywhere, a soap film
+    // within 0.2 on average and 0.5 at worst (past 75°, docs/OPTICS.md).
     const Colorimeter c;
     const SingleFilm oil{*find_material("air"), *find_material("mineral-oil"), *find_material("water")};
     ASSERT_TRUE(fourier_needs_slopes(oil));
@@ -186,10 +186,24 @@ TEST(FourierFilm, DispersiveFilmsWithSlopes) {
     EXPECT_LT(error_over_grid(oil, oil_fourier, c).max, 0.2);
     const SingleFilm soap{*find_material("air"), *find_material("water"), *find_material("air")};
     const FourierFilm soap_fourier(soap, fourier_colorimeter_for(soap, c));
-    EXPECT_LT(error_over_grid(soap, soap_fourier, c).mean, 0.2);
+    const Error2000 corrected = error_over_grid(soap, soap_fourier, c);
+    EXPECT_LT(corrected.mean, 0.2);
+    EXPECT_LT(corrected.max, 0.5);
     // Holding the indices at the band's centre (no slopes) is worse: the correction corrects.
     const FourierFilm held(soap, shared_table(c, 1, false));
-    EXPECT_GT(error_over_grid(soap, held, c).mean, error_over_grid(soap, soap_fourier, c).mean);
+    EXPECT_GT(error_over_grid(soap, held, c).mean, 2.0 * corrected.mean);
+}
+
+TEST(FourierFilm, AMetalTableIsSummed) {
+    // Gold's tabulated index turns too sharply for the series: every colour is the 1 nm sum.
+    const Colorimeter c;
+    const SingleFilm film{*find_material("air"), Material::constant("film", 1.5), *find_material("gold")};
+    const FourierFilm fourier(film, fourier_colorimeter_for(film, c));
+    ASSERT_TRUE(fourier.uses_sum());
+    const PreparedFilm exact(film, 0.5);
+    const Xyz a = exact.color(240.0, c).xyz, b = fourier.xyz(240.0, std::cos(0.5));
+    EXPECT_NEAR(a.Y, b.Y, 1e-12);
+    EXPECT_NEAR(a.X, b.X, 1e-12);
 }
 
 TEST(FourierFilm, PastTheFilmsCriticalAngleFallsBackToTheSum) {

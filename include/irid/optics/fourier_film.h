@@ -30,13 +30,15 @@
 // Dispersion. The amplitudes and the phase depend on the wavelength through the indices. The
 // spectrum is split into bands by a smooth partition of unity in wavenumber (normalised
 // Gaussians, so that each band's transform decays as fast as the whole's). In each band the
-// phase is linearised about the band's centre, φ(ν) ≈ φ_c + 4π d g (ν − ν_c), with
-// g = q1 − λ dq1/dλ the group value of q1 = n1 cos θ1, and the series' coefficients are either
-// held at the centre (`slopes` off: "the index held constant per band") or taken linear in ν
-// through the band, from their values at ν_c ± δ, which needs a second transform per band,
-// V1(τ) = Σ_i w_i (ν_i − ν_c) e^{2πiτ(ν_i − ν_c)}. One band is exact for wavelength-independent
-// media; for dispersive ones (water, silica, metals) the band count trades speed for accuracy
-// (docs/OPTICS.md, "The fast exact film colour").
+// phase φ = 4π d f(ν), f(ν) = ν q1(ν) with q1 = n1 cos θ1, is expanded about the band's centre.
+// With `slopes` off ("the index held constant per band") it is linear, φ ≈ φ_c + 4π d g (ν − ν_c)
+// with g = q1 − λ dq1/dλ the group value of q1, and the series' coefficients are held at the
+// centre. With `slopes` on, f, the coefficients A0 and G q^{m-1} are evaluated at ν_c and ν_c ± δ:
+// the coefficients vary linearly through the band, and the phase gets its quadratic term
+// ψ = 2π d f''(ν_c) (ν − ν_c)², to first order (e^{imψ} ≈ 1 + imψ). These need the moments
+// V1(τ) = Σ_i w_i (ν_i − ν_c) e^{2πiτ(ν_i − ν_c)} and V2 (with (ν_i − ν_c)²) beside V. One band is
+// exact for wavelength-independent media; for dispersive ones (water, oil, silica, metals) see
+// docs/OPTICS.md, "The fast exact film colour", for what each correction buys.
 
 #include <irid/color/types.h>
 #include <irid/optics/film.h>
@@ -72,8 +74,8 @@ public:
     static constexpr double max_opd_cap_nm = 20000.0;
 
     /// Throws irid::Error unless 1 <= bands <= max_bands. With `slopes`, each band also holds
-    /// the first-moment transform V1 that FourierFilm needs to vary the coefficients linearly
-    /// through the band (the dispersion correction; twice the table).
+    /// the moment transforms V1 and V2 that FourierFilm's dispersion correction needs (three
+    /// times the table).
     explicit FourierColorimeter(const Colorimeter& colorimeter, int bands = 1, bool slopes = false);
 
     struct Transform {
@@ -95,27 +97,33 @@ public:
     /// The band's demodulated transform V_b(τ) = Σ_i w_b(ν_i) w_i e^{2πiτ(ν_i − ν_c)},
     /// interpolated; 0 beyond the band's table.
     [[nodiscard]] Transform transform(int b, double tau_nm) const noexcept;
-    /// V_b and V1_b at once (V1 is 0 without slopes).
-    [[nodiscard]] std::array<Transform, 2> transforms(int b, double tau_nm) const noexcept;
+    /// V_b, V1_b and V2_b at once (the moments are 0 without slopes).
+    [[nodiscard]] std::array<Transform, 3> transforms(int b, double tau_nm) const noexcept;
     /// Where the band's table ends [nm].
     [[nodiscard]] double max_opd_nm(int b) const noexcept {
-        return step_nm * static_cast<double>(m_bands[b].table.size() - 1);
+        return step_nm * static_cast<double>(m_bands[b].nodes - 1);
     }
     /// max over τ and channels of |V_b(τ)|: the bound the series' truncation uses.
     [[nodiscard]] double band_bound(int b) const noexcept { return m_bands[b].bound; }
-    /// max over τ and channels of |V1_b(τ)| (0 without slopes).
+    /// max over τ and channels of |V1_b(τ)| and of |V2_b(τ)| (0 without slopes).
     [[nodiscard]] double band_moment_bound(int b) const noexcept { return m_bands[b].moment_bound; }
+    [[nodiscard]] double band_second_moment_bound(int b) const noexcept {
+        return m_bands[b].second_moment_bound;
+    }
     [[nodiscard]] const Colorimeter& colorimeter() const noexcept { return m_colorimeter; }
 
 private:
-    /// V (and V1) at one τ: x, y, z as real and imaginary parts.
-    using Node = std::array<double, 6>;
     struct Band {
         double nu_c = 0.0;
         Xyz white, moment;
-        double bound = 0.0, moment_bound = 0.0;
-        std::vector<Node> table, moment_table;
+        double bound = 0.0, moment_bound = 0.0, second_moment_bound = 0.0;
+        /// Per node of τ: V (x, y, z as real and imaginary parts), then with slopes V1 and V2,
+        /// side by side so that one lookup reads adjacent memory; the moments are 0 past their
+        /// own quiet ends.
+        std::vector<double> table;
+        std::size_t nodes = 0;
     };
+    [[nodiscard]] std::size_t stride() const noexcept { return m_slopes ? 18 : 6; }
     Colorimeter m_colorimeter;
     bool m_slopes = false;
     double m_slope_step = 0.0;
@@ -140,8 +148,10 @@ public:
 
     /// XYZ (white Y = 1) at a thickness [nm, finite, >= 0] and the cosine of the angle of
     /// incidence in the ambient (in (0, 1]). Where the series does not apply — the film at or
-    /// past its own critical angle, or |q| > max_ratio at grazing incidence, where it converges
-    /// too slowly — the 1 nm sum (PreparedFilm's Airy sum per wavelength) is evaluated instead.
+    /// past its own critical angle, |q| > max_ratio at grazing incidence, where it converges
+    /// too slowly, or a dispersive absorbing substrate (a metal's table: its reflectance turns
+    /// too sharply for one band, ΔE2000 up to 18 for gold, docs/OPTICS.md) — the 1 nm sum
+    /// (PreparedFilm's Airy sum per wavelength) is evaluated instead.
     [[nodiscard]] Xyz xyz(double thickness_nm, double cos_theta) const noexcept;
     [[nodiscard]] FilmColor color(double thickness_nm, double cos_theta) const noexcept;
 
@@ -151,6 +161,8 @@ public:
     static constexpr double series_tolerance = 1e-7;
 
     [[nodiscard]] const SingleFilm& film() const noexcept { return m_film; }
+    /// Whether every colour is the 1 nm sum (a dispersive absorbing substrate).
+    [[nodiscard]] bool uses_sum() const noexcept { return m_sum_only; }
     [[nodiscard]] const FourierColorimeter& colorimeter() const noexcept { return *m_colorimeter; }
 
 private:
@@ -170,6 +182,7 @@ private:
     SingleFilm m_film;
     std::shared_ptr<const FourierColorimeter> m_colorimeter;
     std::vector<BandMedia> m_media;
+    bool m_sum_only = false;
 };
 
 /// How a colour is integrated over the spectrum: the 1 nm sum (CIE 015:2018) or the Fourier
