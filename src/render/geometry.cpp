@@ -271,6 +271,30 @@ Aabb Sphere::bounds() const noexcept {
     return {m_center - r, m_center + r};
 }
 
+// --- Ellipsoid ----------------------------------------------------------------------------------
+
+Ellipsoid::Ellipsoid(Vec3 center, Vec3 semi_axes) : m_center(center), m_axes(semi_axes) {
+    if (!is_finite(center)) throw Error("Ellipsoid: center " + text(center) + " must be finite");
+    if (!is_finite(semi_axes) || !(semi_axes.x > 0.0 && semi_axes.y > 0.0 && semi_axes.z > 0.0)) {
+        throw Error("Ellipsoid: semi-axes " + text(semi_axes) + " must be finite and > 0");
+    }
+}
+
+bool Ellipsoid::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const noexcept {
+    const Vec3 o = ray.origin - m_center;
+    const Ray local{{o.x / m_axes.x, o.y / m_axes.y, o.z / m_axes.z},
+                    {ray.direction.x / m_axes.x, ray.direction.y / m_axes.y, ray.direction.z / m_axes.z}};
+    SurfaceHit h;
+    if (!m_unit.intersect(local, t_min, t_max, h)) return false;
+    hit = h;
+    hit.position = ray.at(h.t);
+    const Vec3 p = hit.position - m_center;
+    hit.normal = normalize(Vec3{p.x / (m_axes.x * m_axes.x), p.y / (m_axes.y * m_axes.y),
+                                p.z / (m_axes.z * m_axes.z)});
+    hit.shading_normal = hit.normal;
+    return true;
+}
+
 // --- Plane --------------------------------------------------------------------------------------
 
 Plane::Plane(Vec3 point, Vec3 normal, Vec3 u_axis) : m_point(point) {

@@ -233,8 +233,8 @@ private:
         const C base = m_ops.rgb(scale(m.base_albedo, light));
         if (hit.margin_distance < m.margin) return base;
         // The scales' multilayer colour at the viewing angle (Smits 1990 §3.7), lit like the
-        // wing's surface, over the melanin base.
-        return m_ops.wing(theta_deg) * m_ops.rgb(light) + base;
+        // wing's surface, over the melanin base; veins carry no blue scales.
+        return m_ops.wing(theta_deg) * m_ops.rgb(light) * (1.0 - 0.85 * hit.vein) + base;
     }
 
     /// Water at 589 nm (IAPWS 1997 formulation, 20 °C): n = 1.333.

@@ -151,49 +151,146 @@ void World::build_morpho() {
     if (!m.wing_mesh.empty()) {
         m_wing_mesh = TriangleMesh::read_obj(m_scene.directory / m.wing_mesh);
     } else {
-        // Procedural outlines of a Morpho's fore- and hindwing (right side, a outward along
-        // the span, b towards the head), in units of the half span. Drawn after photographs
-        // of Morpho menelaus: a broad forewing with a rounded tip, a hindwing with a scalloped
-        // outer edge. The root edges (the first and last points) are not margin.
-        const std::vector<std::array<double, 2>> fore = {
-            {0.05, 0.12}, {0.35, 0.30}, {0.70, 0.42}, {0.95, 0.45}, {1.00, 0.36},
-            {0.93, 0.12}, {0.80, -0.08}, {0.60, -0.20}, {0.35, -0.22}, {0.08, -0.06}};
-        const std::vector<std::array<double, 2>> hind = {
-            {0.06, -0.04}, {0.40, -0.18}, {0.66, -0.22}, {0.78, -0.38}, {0.74, -0.55},
-            {0.62, -0.72}, {0.45, -0.82}, {0.28, -0.80}, {0.14, -0.62}, {0.04, -0.30}};
-        const double tilt = m.dihedral_deg * pi / 180.0;
-        for (int side = -1; side <= 1; side += 2) {
-            for (const auto* outline : {&fore, &hind}) {
-                Wing w;
-                w.origin = Vec3{side * 0.04 * half, 0, 0};
-                // Tilted up by the dihedral about the body axis (z).
-                w.axis_a = Vec3{side * std::cos(tilt), std::sin(tilt), 0};
-                w.axis_b = Vec3{0, 0, -1};
-                w.normal = normalize(cross(w.axis_b, w.axis_a));
-                if (w.normal.y < 0) w.normal = -w.normal;
-                for (const auto& p : *outline) w.outline.push_back({p[0] * half, p[1] * half});
-                const std::size_t n = w.outline.size();
-                w.outer_edge.assign(n, true);
-                w.outer_edge[n - 1] = false;  // the root edge back to the first point
-                w.length = half;
-                w.bounds = {w.outline[0][0], w.outline[0][0], w.outline[0][1], w.outline[0][1]};
-                for (const auto& p : w.outline) {
-                    w.bounds[0] = std::min(w.bounds[0], p[0]);
-                    w.bounds[1] = std::max(w.bounds[1], p[0]);
-                    w.bounds[2] = std::min(w.bounds[2], p[1]);
-                    w.bounds[3] = std::max(w.bounds[3], p[1]);
-                }
-                m_wings.push_back(std::move(w));
+        build_morpho_wings(half);
+    }
+    // The body along z, head towards −z: head, thorax and abdomen as ellipsoids, two eyes, and
+    // two clubbed antennae as chains of overlapping spheres. Proportions after photographs of
+    // Morpho peleides (dorsal view): the thorax about 0.12 of the span long, the abdomen about
+    // 0.2, the antennae about half the forewing's length.
+    const auto part = [&](double z, Vec3 axes) {
+        m_body_parts.emplace_back(Vec3{0, 0.01 * half, z * half}, axes * half);
+    };
+    part(-0.255, {0.040, 0.036, 0.040});   // head
+    part(-0.120, {0.070, 0.060, 0.110});   // thorax
+    part(0.200, {0.045, 0.040, 0.240});    // abdomen
+    for (int side = -1; side <= 1; side += 2) {
+        m_body.emplace_back(Vec3{side * 0.032 * half, 0.022 * half, -0.272 * half}, 0.017 * half);  // eye
+        SphereChain antenna;
+        const Vec3 root{side * 0.014 * half, 0.035 * half, -0.29 * half};
+        const Vec3 tip{side * 0.20 * half, 0.09 * half, -0.74 * half};
+        const double r = 0.0055 * half;
+        const int count = static_cast<int>(std::ceil(length(tip - root) / (0.8 * r)));
+        for (int k = 0; k <= count; ++k) {
+            const double f = static_cast<double>(k) / count;
+            // A gentle outward bow, and the club: the last 12 % thicken to 2.2 r.
+            const Vec3 bow = Vec3{side * 0.025 * half, 0, 0} * std::sin(pi * f);
+            const double club = f > 0.88 ? 1.0 + 1.2 * std::sin(pi * (f - 0.88) / 0.24) : 1.0;
+            antenna.spheres.emplace_back(root + f * (tip - root) + bow, r * club);
+            antenna.bounds.expand(antenna.spheres.back().bounds());
+        }
+        m_antennae.push_back(std::move(antenna));
+    }
+    m_epsilon = 1e-7 * half;
+}
+
+namespace {
+
+using Point2 = std::array<double, 2>;
+
+/// A closed Catmull–Rom spline through control points (uniform parameter, tension ½), `per`
+/// points per segment; segment k runs from control k to k + 1 (the last back to the first).
+std::vector<Point2> closed_spline(const std::vector<Point2>& c, int per) {
+    std::vector<Point2> out;
+    const std::size_t n = c.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const Point2& p0 = c[(k + n - 1) % n];
+        const Point2& p1 = c[k];
+        const Point2& p2 = c[(k + 1) % n];
+        const Point2& p3 = c[(k + 2) % n];
+        for (int j = 0; j < per; ++j) {
+            const double t = static_cast<double>(j) / per, t2 = t * t, t3 = t2 * t;
+            Point2 q{};
+            for (int a = 0; a < 2; ++a) {
+                q[a] = 0.5 * (2.0 * p1[a] + (p2[a] - p0[a]) * t + (2.0 * p0[a] - 5.0 * p1[a] + 4.0 * p2[a] - p3[a]) * t2 +
+                              (3.0 * p1[a] - p0[a] - 3.0 * p2[a] + p3[a]) * t3);
             }
+            out.push_back(q);
         }
     }
-    // The body: head, thorax and a tapering abdomen along −z (head) to +z.
-    const double r = 0.05 * half;
-    m_body.emplace_back(Vec3{0, 0.02 * half, -0.30 * half}, 0.9 * r);
-    m_body.emplace_back(Vec3{0, 0.01 * half, -0.12 * half}, 1.5 * r);
-    for (int i = 0; i < 5; ++i)
-        m_body.emplace_back(Vec3{0, 0, (0.08 + 0.12 * i) * half}, r * (1.2 - 0.15 * i));
-    m_epsilon = 1e-7 * half;
+    return out;
+}
+
+}  // namespace
+
+void World::build_morpho_wings(double half) {
+    // Procedural outlines of a Morpho's right fore- and hindwing (a outward along the span, b
+    // towards the head), in units of the half span, drawn after dorsal photographs of Morpho
+    // peleides and M. menelaus: a long, nearly straight costa (leading edge), a rounded apex, a
+    // slightly concave outer margin, and a broad hindwing whose outer edge is scalloped. The
+    // last control point back to the first is the root edge, along the body: not margin.
+    const std::vector<Point2> fore = {{0.06, 0.10}, {0.32, 0.25}, {0.62, 0.37}, {0.86, 0.45}, {0.98, 0.42},
+                                      {1.00, 0.33}, {0.93, 0.18}, {0.84, 0.02}, {0.72, -0.12},
+                                      {0.55, -0.19}, {0.32, -0.17}, {0.08, -0.05}};
+    const std::vector<Point2> hind = {{0.06, -0.03}, {0.36, -0.12}, {0.60, -0.17}, {0.74, -0.27},
+                                      {0.78, -0.42}, {0.72, -0.58}, {0.60, -0.72}, {0.44, -0.81},
+                                      {0.28, -0.80}, {0.15, -0.66}, {0.07, -0.40}};
+    constexpr int per = 12;
+    const double tilt = m_scene.morpho.dihedral_deg * pi / 180.0;
+    for (int side = -1; side <= 1; side += 2) {
+        for (const auto* controls : {&fore, &hind}) {
+            Wing w;
+            w.forewing = controls == &fore;
+            w.origin = Vec3{side * 0.04 * half, 0, 0};
+            // Tilted up by the dihedral about the body axis (z).
+            w.axis_a = Vec3{side * std::cos(tilt), std::sin(tilt), 0};
+            w.axis_b = Vec3{0, 0, -1};
+            w.normal = normalize(cross(w.axis_b, w.axis_a));
+            if (w.normal.y < 0) w.normal = -w.normal;
+            std::vector<Point2> outline = closed_spline(*controls, per);
+            const std::size_t n = outline.size();
+            const std::size_t root_edges = per;  // the last segment, control n−1 back to 0
+            w.outer_edge.assign(n, true);
+            for (std::size_t e = n - root_edges; e < n; ++e) w.outer_edge[e] = false;
+            Point2 centre{};
+            for (const Point2& c : *controls) {
+                centre[0] += c[0] / static_cast<double>(controls->size());
+                centre[1] += c[1] / static_cast<double>(controls->size());
+            }
+            if (!w.forewing) {
+                // Scallops: the outer edge pulled in between its 7 vein ends, by up to 1.2 % of
+                // the half span.
+                const std::size_t first = per, last = n - 2 * per;  // from the costa's end to the inner margin
+                for (std::size_t e = first; e <= last; ++e) {
+                    const double f = static_cast<double>(e - first) / static_cast<double>(last - first);
+                    const double pull = 0.012 * (0.5 - 0.5 * std::cos(2.0 * pi * 7.0 * f));
+                    const double dx = centre[0] - outline[e][0], dy = centre[1] - outline[e][1];
+                    const double len = std::hypot(dx, dy);
+                    outline[e][0] += pull * dx / len;
+                    outline[e][1] += pull * dy / len;
+                }
+            }
+            // Veins from the wing's root to points spread along its outer edge, bending at the
+            // end of the discal cell (40 % of the way); the costal vein runs near the leading
+            // edge and is hidden in the margin.
+            const Point2 root{0.5 * ((*controls)[0][0] + controls->back()[0]),
+                              0.5 * ((*controls)[0][1] + controls->back()[1])};
+            const int veins = w.forewing ? 9 : 8;
+            for (int v = 0; v < veins; ++v) {
+                const double f = (v + 0.5) / veins;
+                const auto e = static_cast<std::size_t>(per + f * static_cast<double>(n - 3 * per));
+                const Point2 end = outline[e];
+                const Point2 bend{root[0] + 0.4 * (end[0] - root[0]) + 0.03 * (centre[0] - end[0]),
+                                  root[1] + 0.4 * (end[1] - root[1]) + 0.03 * (centre[1] - end[1])};
+                w.veins.push_back({root, bend});
+                w.veins.push_back({bend, end});
+            }
+            w.vein_half_width = 0.003 * half;
+            w.vein_start = 0.3 * half;
+            for (const Point2& p : outline) w.outline.push_back({p[0] * half, p[1] * half});
+            for (auto& seg : w.veins) {
+                for (Point2& p : seg) p = {p[0] * half, p[1] * half};
+            }
+            w.length = half;
+            w.bounds = {w.outline[0][0], w.outline[0][0], w.outline[0][1], w.outline[0][1]};
+            for (const auto& p : w.outline) {
+                w.bounds[0] = std::min(w.bounds[0], p[0]);
+                w.bounds[1] = std::max(w.bounds[1], p[0]);
+                w.bounds[2] = std::min(w.bounds[2], p[1]);
+                w.bounds[3] = std::max(w.bounds[3], p[1]);
+            }
+            m_wings.push_back(std::move(w));
+        }
+    }
 }
 
 void World::build_tables() {
@@ -336,6 +433,14 @@ void World::film_spectrum(const ThicknessSample& t, double cos_theta, SpectralCa
 
 namespace {
 
+/// Distance from (a, b) to the segment p–q.
+double segment_distance(double a, double b, const std::array<double, 2>& p, const std::array<double, 2>& q) {
+    const double ex = q[0] - p[0], ey = q[1] - p[1];
+    const double len2 = ex * ex + ey * ey;
+    const double s = len2 > 0 ? std::clamp(((a - p[0]) * ex + (b - p[1]) * ey) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(a - (p[0] + s * ex), b - (p[1] + s * ey));
+}
+
 /// Crossing-number test and the distance to the outer edges, in the wing's 2-D coordinates.
 bool inside_wing(const Wing& w, double a, double b, double& margin) {
     if (a < w.bounds[0] || a > w.bounds[1] || b < w.bounds[2] || b > w.bounds[3]) return false;
@@ -354,16 +459,29 @@ bool inside_wing(const Wing& w, double a, double b, double& margin) {
     for (std::size_t i = 0; i < n; ++i) {
         const auto& p = w.outline[i];
         const auto& q = w.outline[(i + 1) % n];
-        if (w.outer_edge[i]) {
-            const double ex = q[0] - p[0], ey = q[1] - p[1];
-            const double len2 = ex * ex + ey * ey;
-            const double s = len2 > 0 ? std::clamp(((a - p[0]) * ex + (b - p[1]) * ey) / len2, 0.0, 1.0) : 0.0;
-            const double dx = a - (p[0] + s * ex), dy = b - (p[1] + s * ey);
-            best = std::min(best, std::sqrt(dx * dx + dy * dy));
-        }
+        if (w.outer_edge[i]) best = std::min(best, segment_distance(a, b, p, q));
     }
     margin = best / w.length;
+    // The forewing's black border is about twice as wide at the apex as near the body.
+    if (w.forewing) {
+        const double f = std::clamp(a / w.length, 0.0, 1.0);
+        margin /= 0.7 + 1.3 * f * f;
+    }
     return true;
+}
+
+/// How much of a vein covers (a, b): 1 within its half-width, falling smoothly to 0 at twice it;
+/// near the root, where the veins converge under the body's hair, they fade out.
+double vein_cover(const Wing& w, double a, double b) {
+    double d = std::numeric_limits<double>::infinity();
+    for (const auto& seg : w.veins) d = std::min(d, segment_distance(a, b, seg[0], seg[1]));
+    const auto smooth = [](double x) {
+        x = std::clamp(x, 0.0, 1.0);
+        return x * x * (3.0 - 2.0 * x);
+    };
+    const double from_root = std::hypot(a - w.veins.front()[0][0], b - w.veins.front()[0][1]);
+    return smooth((2.0 * w.vein_half_width - d) / w.vein_half_width) *
+           smooth((from_root - 0.5 * w.vein_start) / (0.5 * w.vein_start));
 }
 
 }  // namespace
@@ -389,14 +507,18 @@ bool World::intersect(const Ray& ray, double t_min, double t_max, Hit& hit) cons
             found = true;
         }
     }
-    for (std::size_t i = 0; i < m_body.size(); ++i) {
-        if (m_body[i].intersect(ray, t_min, t_max, h)) {
-            t_max = h.t;
-            hit.surface = h;
-            hit.kind = SurfaceKind::body;
-            hit.index = static_cast<int>(i);
-            found = true;
-        }
+    const auto body_hit = [&](const auto& shape) {
+        if (!shape.intersect(ray, t_min, t_max, h)) return;
+        t_max = h.t;
+        hit.surface = h;
+        hit.kind = SurfaceKind::body;
+        found = true;
+    };
+    for (const Sphere& s : m_body) body_hit(s);
+    for (const Ellipsoid& e : m_body_parts) body_hit(e);
+    for (const SphereChain& chain : m_antennae) {
+        if (!chain.bounds.intersect(ray, t_min, t_max)) continue;
+        for (const Sphere& s : chain.spheres) body_hit(s);
     }
     for (std::size_t i = 0; i < m_wings.size(); ++i) {
         const Wing& w = m_wings[i];
@@ -417,6 +539,7 @@ bool World::intersect(const Ray& ray, double t_min, double t_max, Hit& hit) cons
         hit.kind = SurfaceKind::wing;
         hit.index = static_cast<int>(i);
         hit.margin_distance = margin;
+        hit.vein = vein_cover(w, dot(d, w.axis_a), dot(d, w.axis_b));
         found = true;
     }
     if (m_wing_mesh && m_wing_mesh->intersect(ray, t_min, t_max, h)) {
@@ -434,6 +557,13 @@ bool World::sun_blocked(Vec3 p) const noexcept {
     SurfaceHit h;
     for (const Sphere& s : m_body)
         if (s.intersect(r, m_epsilon, far, h)) return true;
+    for (const Ellipsoid& e : m_body_parts)
+        if (e.intersect(r, m_epsilon, far, h)) return true;
+    for (const SphereChain& chain : m_antennae) {
+        if (!chain.bounds.intersect(r, m_epsilon, far)) continue;
+        for (const Sphere& s : chain.spheres)
+            if (s.intersect(r, m_epsilon, far, h)) return true;
+    }
     for (const Wing& w : m_wings) {
         const double denom = dot(r.direction, w.normal);
         if (std::abs(denom) < 1e-12) continue;

@@ -31,6 +31,19 @@ struct Wing {
     std::vector<bool> outer_edge;  // edge i runs from outline[i] to outline[i + 1]
     double length = 1;             // the wing's length, for the margin
     std::array<double, 4> bounds{};  // a_min, a_max, b_min, b_max of the outline
+    /// The forewing's dark margin widens towards its apex (a → length).
+    bool forewing = false;
+    /// Veins: segments in the wing's 2-D coordinates, and their half-width.
+    std::vector<std::array<std::array<double, 2>, 2>> veins;
+    double vein_half_width = 0;
+    /// Distance from the root over which the veins fade in.
+    double vein_start = 0;
+};
+
+/// A group of spheres (an antenna) tested only when a ray meets their bounding box.
+struct SphereChain {
+    std::vector<Sphere> spheres;
+    Aabb bounds;
 };
 
 /// What a ray hit.
@@ -40,8 +53,11 @@ struct Hit {
     SurfaceHit surface;
     SurfaceKind kind = SurfaceKind::none;
     int index = -1;
-    /// For wings: the distance to the outer margin in units of the wing's length.
+    /// For wings: the distance to the outer margin in units of the wing's length (divided, on
+    /// a forewing, by the margin's widening towards the apex).
     double margin_distance = 1;
+    /// For wings: how much of a vein covers the hit, 0 (none) to 1 (its centre line).
+    double vein = 0;
 };
 
 /// The neighbouring pixel's rays of a camera ray, for the footprint of a film's thickness.
@@ -109,6 +125,7 @@ private:
     void build_oil_slick();
     void build_soap_bubbles();
     void build_morpho();
+    void build_morpho_wings(double half);
 
     const Scene& m_scene;
     Camera m_camera;
@@ -120,6 +137,8 @@ private:
     std::optional<Plane> m_ground;
     std::vector<Sphere> m_bubbles;
     std::vector<Sphere> m_body;
+    std::vector<Ellipsoid> m_body_parts;
+    std::vector<SphereChain> m_antennae;
     std::vector<Wing> m_wings;
     std::optional<TriangleMesh> m_wing_mesh;
 

@@ -237,6 +237,54 @@ TEST(Sphere, OutsideHitsTheNearRootOfTheQuadratic) {
     EXPECT_EQ(hits, 1000);
 }
 
+// --- Ellipsoid ------------------------------------------------------------------------------
+
+TEST(Ellipsoid, HitsLieOnTheSurfaceWithTheGradientAsNormal) {
+    const Vec3 c{0.5, -1, 2}, s{2.0, 0.5, 1.0};
+    const Ellipsoid e(c, s);
+    std::mt19937 rng(11);
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3 o = c + random_unit(rng) * 8.0;
+        // A point strictly inside: the ray enters, so the near root is the hit.
+        const Vec3 u = random_unit(rng) * 0.9;
+        const Vec3 target = c + Vec3{u.x * s.x, u.y * s.y, u.z * s.z};
+        const Vec3 d = normalize(target - o);
+        SurfaceHit hit;
+        ASSERT_TRUE(e.intersect({o, d}, 1e-9, 100.0, hit));
+        const Vec3 p = hit.position - c;
+        // On the implicit surface.
+        EXPECT_NEAR(p.x * p.x / (s.x * s.x) + p.y * p.y / (s.y * s.y) + p.z * p.z / (s.z * s.z), 1.0, 1e-10);
+        // The normal is the implicit function's gradient (x/a², y/b², z/c²), unit, facing out.
+        const Vec3 g = normalize(Vec3{p.x / (s.x * s.x), p.y / (s.y * s.y), p.z / (s.z * s.z)});
+        expect_near(hit.normal, g, 1e-12);
+        EXPECT_LT(dot(hit.normal, d), 0.0);
+        // Nothing on the segment before the hit is inside (the near root).
+        const Vec3 q = o + 0.5 * hit.t * d - c;
+        EXPECT_GT(q.x * q.x / (s.x * s.x) + q.y * q.y / (s.y * s.y) + q.z * q.z / (s.z * s.z), 1.0);
+    }
+}
+
+TEST(Ellipsoid, EqualAxesAreTheSphereAndMissesMiss) {
+    const Vec3 c{1, 2, 3};
+    const Ellipsoid e(c, {1.5, 1.5, 1.5});
+    const Sphere sphere(c, 1.5);
+    std::mt19937 rng(12);
+    for (int i = 0; i < 200; ++i) {
+        const Ray r{c + random_unit(rng) * 5.0, random_unit(rng)};
+        SurfaceHit a, b;
+        const bool hit_e = e.intersect(r, 1e-9, 100.0, a);
+        ASSERT_EQ(hit_e, sphere.intersect(r, 1e-9, 100.0, b));
+        if (hit_e) {
+            EXPECT_NEAR(a.t, b.t, 1e-12);
+            expect_near(a.normal, b.normal, 1e-12);
+        }
+    }
+    // A ray passing above the top of a flat ellipsoid misses it.
+    SurfaceHit h;
+    EXPECT_FALSE(Ellipsoid({0, 0, 0}, {2, 0.1, 1}).intersect({{-5, 0.11, 0}, {1, 0, 0}}, 0.0, 100.0, h));
+    EXPECT_THROW(Ellipsoid({0, 0, 0}, {1, 0, 1}), irid::Error);
+}
+
 TEST(Sphere, InsideHitsTheFarRootWithAnOutwardNormal) {
     const Vec3 c{-3, 0.5, 7};
     const Sphere s(c, 1.5);

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -100,6 +101,41 @@ TEST(Render, FlatFilmSeenFromAboveHasTheExactFilmColour) {
             }
         }
     }
+}
+
+/// The mean CIELAB (D65 white) of an XYZ image.
+Lab mean_lab(const io::Image& xyz) {
+    Xyz sum;
+    const auto n = static_cast<double>(xyz.pixel_count());
+    for (std::size_t i = 0; i < xyz.pixel_count(); ++i) {
+        sum.X += xyz.pixels[3 * i] / n;
+        sum.Y += xyz.pixels[3 * i + 1] / n;
+        sum.Z += xyz.pixels[3 * i + 2] / n;
+    }
+    return Colorimeter().lab(sum);
+}
+
+// The Morpho at its defaults (the exact stack) is the saturated structural blue of real wings,
+// turning violet away from the normal: a patch of the right forewing between its veins, seen
+// through a narrow field under a uniform white sky, from straight above and from 35° off.
+TEST(Render, TheMorphoWingIsSaturatedBlueTurningVioletWithAngle) {
+    const auto patch = [](const std::string& eye) {
+        return render_with("morpho", small(8, 8, 1) + std::vector<std::string>{
+                                         "light.sun_intensity=0", "light.sky_zenith=[1,1,1]",
+                                         "light.sky_horizon=[1,1,1]", "light.ground=[1,1,1]",
+                                         "morpho.bump_height=0", "camera.eye=" + eye,
+                                         "camera.look_at=[0.944,0.287,-0.18]", "camera.fov_deg=1"});
+    };
+    // The wing's normal there: tilted by the 18° dihedral about z, (−sin 18°, cos 18°, 0).
+    const Lab above = mean_lab(patch("[-0.601,5.043,-0.18]").xyz);
+    const double hue = std::atan2(above.b, above.a) * 180.0 / std::numbers::pi + 360.0;
+    EXPECT_GT(std::hypot(above.a, above.b), 40.0);  // saturated
+    EXPECT_GT(hue, 260.0);                          // blue: CIELAB hue 260°-300°
+    EXPECT_LT(hue, 300.0);
+    const Lab off = mean_lab(patch("[2.406,5.069,-0.18]").xyz);
+    const double hue_off = std::atan2(off.b, off.a) * 180.0 / std::numbers::pi + 360.0;
+    EXPECT_GT(hue_off, hue + 5.0);  // towards violet
+    EXPECT_GT(std::hypot(off.a, off.b), 20.0);
 }
 
 // An environment image replaces the procedural sky: a uniform white one gives the same

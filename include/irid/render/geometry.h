@@ -245,6 +245,27 @@ private:
     double m_radius;
 };
 
+/// An ellipsoid with its semi-axes along x, y and z: ((x − cx)/a)² + ((y − cy)/b)² +
+/// ((z − cz)/c)² = 1. A ray is intersected in the frame where the ellipsoid is the unit sphere
+/// (the map is affine, so t is the same in both frames); the normal is the gradient of the
+/// implicit function, normalize((p − c) / s²). u, v are the unit sphere's of that frame.
+class Ellipsoid {
+public:
+    /// Requires a finite center and finite semi-axes > 0; else irid::Error.
+    Ellipsoid(Vec3 center, Vec3 semi_axes);
+
+    /// The nearest hit with t in (t_min, t_max); hit is written only when true is returned.
+    bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const noexcept;
+
+    [[nodiscard]] Vec3 center() const noexcept { return m_center; }
+    [[nodiscard]] Vec3 semi_axes() const noexcept { return m_axes; }
+    [[nodiscard]] Aabb bounds() const noexcept { return {m_center - m_axes, m_center + m_axes}; }
+
+private:
+    Vec3 m_center, m_axes;
+    Sphere m_unit{{0, 0, 0}, 1.0};
+};
+
 /// An infinite plane through `point` with unit normal `normal`, and two unit tangent axes u, v
 /// with u × v = normal for its texture coordinates.
 class Plane {
