@@ -136,7 +136,11 @@ std::vector<std::string> renderer_film_model_names() {
 
 // --- sensitivities --------------------------------------------------------------------------
 
-Xyz gaussian_fit_sensitivity_unnormalized(double opd_nm, double shift_rad) noexcept {
+namespace {
+
+/// The fits with a shift per component, as the glTF reference's evalSensitivity(OPD, vec3 shift)
+/// takes them (X with the first, Y the second, Z the third; the extra x̄ lobe with the first).
+Xyz fits(double opd_nm, const std::array<double, 3>& shift) noexcept {
     // Belcour & Barla 2017, supplemental shader evalSensitivity; the same constants are in
     // KHR_materials_iridescence's reference (glTF-Sample-Renderer iridescence.glsl): a Gaussian
     // per function of frequency [1/m] with amplitude val, centre pos and width var, plus a second
@@ -148,19 +152,30 @@ Xyz gaussian_fit_sensitivity_unnormalized(double opd_nm, double shift_rad) noexc
     const double phase = 2.0 * pi * opd_nm * 1e-9;
     double v[3];
     for (int i = 0; i < 3; ++i) {
-        v[i] = val[i] * std::sqrt(2.0 * pi * var[i]) * std::cos(pos[i] * phase + shift_rad) *
+        v[i] = val[i] * std::sqrt(2.0 * pi * var[i]) * std::cos(pos[i] * phase + shift[static_cast<std::size_t>(i)]) *
                std::exp(-phase * phase * var[i]);
     }
-    v[0] += x2_val * std::sqrt(2.0 * pi * x2_var) * std::cos(x2_pos * phase + shift_rad) *
+    v[0] += x2_val * std::sqrt(2.0 * pi * x2_var) * std::cos(x2_pos * phase + shift[0]) *
             std::exp(-x2_var * phase * phase);
     return {v[0], v[1], v[2]};
 }
 
+/// The normalisation of the same shaders: xyz /= 1.0685e-7.
+constexpr double fits_normalization = 1.0685e-7;
+
+Xyz normalized_fits(double opd_nm, const std::array<double, 3>& shift) noexcept {
+    const Xyz u = fits(opd_nm, shift);
+    return {u.X / fits_normalization, u.Y / fits_normalization, u.Z / fits_normalization};
+}
+
+}  // namespace
+
+Xyz gaussian_fit_sensitivity_unnormalized(double opd_nm, double shift_rad) noexcept {
+    return fits(opd_nm, {shift_rad, shift_rad, shift_rad});
+}
+
 Xyz gaussian_fit_sensitivity(double opd_nm, double shift_rad) noexcept {
-    // The normalisation of the same shaders: xyz /= 1.0685e-7.
-    constexpr double normalization = 1.0685e-7;
-    const Xyz u = gaussian_fit_sensitivity_unnormalized(opd_nm, shift_rad);
-    return {u.X / normalization, u.Y / normalization, u.Z / normalization};
+    return normalized_fits(opd_nm, {shift_rad, shift_rad, shift_rad});
 }
 
 Rgb renderer_xyz_to_rec709(const Xyz& c) noexcept {
@@ -265,25 +280,29 @@ Rgb gltf_iridescence(double outside_ior, double film_ior, const Rgb& base_f0, do
     const double phi12 = n1 < outside_ior ? pi : 0.0;
     const double phi21 = pi - phi12;
     const double opd = 2.0 * n1 * thickness_nm * cos_theta2;
-    Rgb out;
-    for (int c = 0; c < 3; ++c) {
-        const double base_ior = gltf_fresnel0_to_ior(std::clamp(channel(base_f0, c), 0.0, 0.9999));
+    std::array<double, 3> phi{}, cm{}, I{};
+    std::array<double, 3> r123{};
+    for (std::size_t c = 0; c < 3; ++c) {
+        const double base_ior = gltf_fresnel0_to_ior(std::clamp(channel(base_f0, static_cast<int>(c)), 0.0, 0.9999));
         const double R23 = schlick(gltf_ior_to_fresnel0(base_ior, n1), cos_theta2);
         const double phi23 = base_ior < n1 ? pi : 0.0;
-        const double phi = phi21 + phi23;
+        phi[c] = phi21 + phi23;
         const double R123 = std::clamp(R12 * R23, 1e-5, 0.9999);
-        const double r123 = std::sqrt(R123);
+        r123[c] = std::sqrt(R123);
         const double Rs = T121 * T121 * R23 / (1.0 - R123);
-        double I = R12 + Rs;  // C0, the DC term, added as it is to every channel
-        double cm = Rs - T121;
-        for (int m = 1; m <= 2; ++m) {
-            cm *= r123;
-            const Rgb sm = renderer_xyz_to_rec709(gaussian_fit_sensitivity(m * opd, m * phi));
-            I += cm * 2.0 * channel(sm, c);
-        }
-        channel(out, c) = std::max(I, 0.0);
+        I[c] = R12 + Rs;  // C0, the DC term, added as it is to every channel
+        cm[c] = Rs - T121;
     }
-    return out;
+    for (int m = 1; m <= 2; ++m) {
+        // evalSensitivity(m OPD, m phi) with phi per channel: each XYZ component takes the shift
+        // of the channel in its position (the reference's vec3 shift), then XYZ → Rec.709.
+        const Rgb sm = renderer_xyz_to_rec709(normalized_fits(m * opd, {m * phi[0], m * phi[1], m * phi[2]}));
+        for (std::size_t c = 0; c < 3; ++c) {
+            cm[c] *= r123[c];
+            I[c] += cm[c] * 2.0 * channel(sm, static_cast<int>(c));
+        }
+    }
+    return {std::max(I[0], 0.0), std::max(I[1], 0.0), std::max(I[2], 0.0)};
 }
 
 Rgb belcour_iridescence(double ambient_ior, double film_ior, const ChannelIndices& base,

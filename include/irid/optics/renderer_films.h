@@ -112,7 +112,10 @@ private:
 
 /// KHR_materials_iridescence's evalIridescence: ambient ("outside") index, film index, the base's
 /// F0 colour (linear Rec.709, as the material's specular colour or metal's base colour), film
-/// thickness [nm] and cos θ in the ambient (in [0, 1]).
+/// thickness [nm] and cos θ in the ambient (in [0, 1]). As in the reference, the m-th term's
+/// sensitivity takes the phase shift of each RGB channel in the XYZ component of the same
+/// position (evalSensitivity's vec3 shift), and the film index blends to the outside index over
+/// 0-0.03 nm of thickness (smoothstep(0.0, 0.03, thinFilmThickness) with nm).
 [[nodiscard]] Rgb gltf_iridescence(double outside_ior, double film_ior, const Rgb& base_f0,
                                    double thickness_nm, double cos_theta) noexcept;
 /// Belcour & Barla 2017; each channel of the result uses that channel's base index (the
