@@ -443,9 +443,26 @@ Rgb renderer_sensitivity_white(RendererFilmModel model) noexcept {
 
 // --- the error study ------------------------------------------------------------------------
 
+void validate_renderer_error_study(const ErrorStudyOptions& options, double films,
+                                   std::string_view thickness_name, std::string_view angles_name,
+                                   std::string_view films_name) {
+    // The options' own checks, on a one-sample grid of the same steps.
+    ErrorStudyOptions one = options;
+    if (std::isfinite(one.max_thickness_nm) && one.max_thickness_nm >= 0.0) one.max_thickness_nm = 0.0;
+    if (std::isfinite(one.max_angle_deg) && one.max_angle_deg >= 0.0 && one.max_angle_deg < 90.0) {
+        one.max_angle_deg = 0.0;
+    }
+    validate_error_study(one);
+    std::vector<WorkFactor> spectra{{std::string(thickness_name), error_study_thickness_count(options)},
+                                    {std::string(angles_name), error_study_angle_count(options)}};
+    if (films != 1.0) spectra.push_back({std::string(films_name), films, "films"});
+    spectra.push_back({"the exact model", 1.0, "spectrum per sample"});
+    check_color_work(spectra);
+}
+
 FilmErrorMap renderer_film_error_map(RendererFilmModel model, const SingleFilm& film,
                                      const ErrorStudyOptions& options) {
-    validate_error_study(options);
+    validate_renderer_error_study(options);
     const RendererFilmInputs inputs = renderer_film_inputs(film);
     return error_map(film, options, [&](double t, double theta, const Colorimeter&) {
         return renderer_film_color(model, inputs, t, theta).xyz;

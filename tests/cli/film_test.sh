@@ -567,7 +567,7 @@ run_bounded film-error --thickness 0:99999:1 --angles 0:89:0.01
 expect_usage_error "--thickness 0:99999:1 (100 000 values)" "--angles 0:89:0.01 (8 901 values)" \
     "asks for 3 560 400 000 spectra" "the limit is 2 123 142"
 run_bounded film-error --model cycles --thickness 0:99999:1 --angles 0:89:0.01
-expect_usage_error "--film grid (16 films)" "the limit is 2 123 142"
+expect_usage_error "--film grid (16 films)" "the exact model (1 spectrum per sample)" "the limit is 2 123 142"
 run_bounded film-error --film soap --thickness 0:99999:1 --angles 0:89:0.01
 expect_usage_error "asks for 1 780 200 000 spectra" "the limit is 2 123 142"
 # 1 000 001 thicknesses x 9 angles = 9 000 009 lines (2.2 GB), against 10^6 lines; no file.

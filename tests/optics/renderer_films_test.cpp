@@ -292,6 +292,20 @@ TEST(RendererFilms, ErrorMapsCoverTheGridAndRefuseWhatTheyCannotModel) {
     EXPECT_THROW((void)thesis_film_error_map({air, Material::constant("f", 1.5), *find_material("gold")}, o), Error);
     o.thickness_step_nm = 0.0;
     EXPECT_THROW((void)renderer_film_error_map(RendererFilmModel::gltf, soap, o), Error);
+    // One exact spectrum per sample: 100 001 thicknesses × 86 angles = 8 600 086 > 2 123 142.
+    ErrorStudyOptions big;
+    big.max_thickness_nm = 1e5;
+    big.thickness_step_nm = 1.0;
+    big.max_angle_deg = 85.0;
+    big.angle_step_deg = 1.0;
+    try {
+        validate_renderer_error_study(big);
+        FAIL() << "no exception";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("8 600 086 spectra"), std::string::npos) << e.what();
+    }
+    big.max_thickness_nm = 2e4;  // 20 001 × 86 = 1 720 086: within the limit
+    EXPECT_NO_THROW(validate_renderer_error_study(big));
 }
 
 TEST(RendererFilms, ModelsGiveFiniteColoursOverTheStudy) {

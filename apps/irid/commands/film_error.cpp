@@ -109,8 +109,9 @@ int run_grid_study(const FilmErrorCommand& c, const std::optional<RendererFilmMo
         throw UsageError(fmt::format("--film '{}' is unknown; valid: {}", c.film, valid));
     }
     try {
-        validate_error_study(options, static_cast<double>(films.size()), "--thickness " + c.thickness,
-                             "--angles " + c.angles, "--film " + c.film);
+        const auto validate = renderer ? validate_renderer_error_study : validate_error_study;
+        validate(options, static_cast<double>(films.size()), "--thickness " + c.thickness,
+                 "--angles " + c.angles, "--film " + c.film);
     } catch (const Error& e) {
         throw UsageError(e.what());
     }

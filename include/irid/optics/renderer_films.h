@@ -23,6 +23,13 @@
 // white (1, 1, 1) is D65), not a spectrum. They take real ambient and film indices and one
 // complex base index per RGB channel (a renderer's "IOR" and a conductor's RGB n and k); glTF
 // takes the base as its F0 colour instead.
+//
+// They are not FilmModel kinds (film.h): FilmModel's contract is a spectrum (spectrum(),
+// at_angle()'s reflectance on the 1 nm grid) and a colour under any Colorimeter, while these
+// models give one colour under fixed sensitivities (CIE 1931, Rec.709, white D65) from inputs a
+// FilmModel does not carry (per-channel base indices, glTF's F0). They have their own entry
+// points instead: `irid film --model`, `irid film-error --model`, the figure renderer-films and
+// Python's renderer_film_color.
 
 #include <irid/optics/film_color.h>
 
@@ -171,8 +178,16 @@ struct FilmErrorMap {
     double thickness_step_nm = 0.0, angle_step_deg = 0.0;
     std::vector<double> delta_e;
 };
-/// A renderer's model against the exact film. Throws irid::Error as validate_error_study, and for
-/// an absorbing ambient or film.
+/// Throws irid::Error unless the options are valid (as validate_error_study) and a study of `films`
+/// films of a renderer's model is within the work limit: each grid point costs one spectrum, the
+/// exact film's (the model's closed form costs under a twentieth of it, docs/PERFORMANCE.md).
+/// The names are the caller's, as validate_error_study's.
+void validate_renderer_error_study(const ErrorStudyOptions& options, double films = 1.0,
+                                   std::string_view thickness_name = "thickness grid",
+                                   std::string_view angles_name = "angle grid",
+                                   std::string_view films_name = "films");
+/// A renderer's model against the exact film. Throws irid::Error as validate_renderer_error_study,
+/// and for an absorbing ambient or film.
 [[nodiscard]] FilmErrorMap renderer_film_error_map(RendererFilmModel model, const SingleFilm& film,
                                                    const ErrorStudyOptions& options);
 /// The thesis' single film (eq. 21/22 with eq. 24, K as options.k or thesis_matched_k) against the
