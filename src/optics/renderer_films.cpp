@@ -307,14 +307,17 @@ Rgb gltf_iridescence(double outside_ior, double film_ior, const Rgb& base_f0, do
 
 Rgb belcour_iridescence(double ambient_ior, double film_ior, const ChannelIndices& base,
                         double thickness_nm, double cos_theta) noexcept {
-    // Belcour & Barla 2017, supplemental shader IridescenceTerm: the film index tends to the
-    // ambient's as the thickness goes to 0 (smoothstep over 0..0.03 µm).
-    const double n1 = mix(ambient_ior, film_ior, smoothstep(0.0, 30.0, thickness_nm));
+    // Belcour & Barla 2017, supplemental shader IridescenceTerm: its film parameter Dinc [µm] is
+    // the optical thickness 2 n1 d (the shader's OPD is Dinc cos θ2), and "eta_2 -> 1.0 when
+    // Dinc -> 0.0" by smoothstep(0.0, 0.03, Dinc): the film index tends to the ambient's over
+    // 2 n1 d in 0..30 nm, cos θ2 from the blended index, OPD from the film's own.
+    const double optical_thickness_nm = 2.0 * film_ior * thickness_nm;
+    const double n1 = mix(ambient_ior, film_ior, smoothstep(0.0, 30.0, optical_thickness_nm));
     const double sin_theta0 = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
     const double snell = ambient_ior * sin_theta0;
     const double cos2_1 = 1.0 - (snell / n1) * (snell / n1);
     if (cos2_1 < 0.0) return {1.0, 1.0, 1.0};
-    const double opd = 2.0 * n1 * thickness_nm * std::sqrt(cos2_1);
+    const double opd = optical_thickness_nm * std::sqrt(cos2_1);
     const Xyz s0 = gaussian_fit_sensitivity(0.0, 0.0);
     const int channels = same(base) ? 1 : 3;
     Rgb out;
