@@ -308,6 +308,33 @@ TEST(RendererFilms, ErrorMapsCoverTheGridAndRefuseWhatTheyCannotModel) {
     EXPECT_NO_THROW(validate_renderer_error_study(big));
 }
 
+TEST(RendererFilms, AtZeroThicknessTheErrorIsTheBaseAndTheFitsWhite) {
+    // Without a film on a constant-index base the exact colour is F times the white, F the
+    // base's Fresnel. Cycles gives F (1, 1, 1): no error at any angle. Belcour & Barla give F times
+    // the fits' white: at normal incidence their error is the ΔE2000 between the two greys,
+    // derived here from Rec.709's matrix.
+    const Material air = *find_material("air");
+    const SingleFilm film{air, Material::constant("film", 1.33), Material::constant("glass", 1.5)};
+    ErrorStudyOptions o;
+    o.max_thickness_nm = 0.0;
+    o.max_angle_deg = 80.0;
+    o.angle_step_deg = 20.0;
+    for (const double d : renderer_film_error_map(RendererFilmModel::cycles, film, o).delta_e) {
+        EXPECT_LT(d, 1e-6);
+    }
+    const double n0 = air.index(renderer_ior_wavelength_nm).real();
+    const double F = std::pow((1.5 - n0) / (1.5 + n0), 2.0);
+    const Rgb w = renderer_sensitivity_white(RendererFilmModel::belcour);
+    const Colorimeter colorimeter;
+    const Xyz& white = colorimeter.white();
+    const Xyz tinted = srgb().to_xyz({F * w.r, F * w.g, F * w.b});
+    const Xyz& rec709 = srgb().white_xyz();
+    const Xyz model{tinted.X * white.X / rec709.X, tinted.Y * white.Y / rec709.Y, tinted.Z * white.Z / rec709.Z};
+    const double expected = delta_e_2000_of(colorimeter, model, {F * white.X, F * white.Y, F * white.Z});
+    EXPECT_GT(expected, 1.0);
+    EXPECT_NEAR(renderer_film_error_map(RendererFilmModel::belcour, film, o).delta_e[0], expected, 1e-6);
+}
+
 TEST(RendererFilms, ModelsGiveFiniteColoursOverTheStudy) {
     for (const StudyFilm& f : renderer_study_films()) {
         const RendererFilmInputs in = renderer_film_inputs(f.film);
