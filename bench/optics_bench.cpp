@@ -19,7 +19,8 @@
 //   BM_WaterIndex       Material::index of the water Sellmeier model: the dispersion every
 //                       unprepared evaluation pays per material and wavelength.
 //   BM_ExactFilmColor / BM_PreparedFilmColor: the colour computed from the spectrum, against
-//                       which the table lookups are compared.
+//                       which the table lookups and the renderers' closed-form film colours
+//                       (BM_RendererFilmRgb) are compared.
 
 #include <irid/color/illuminant.h>
 #include <irid/color/observer.h>
@@ -29,6 +30,7 @@
 #include <irid/optics/fourier_film.h>
 #include <irid/optics/material.h>
 #include <irid/optics/multilayer.h>
+#include <irid/optics/renderer_films.h>
 #include <irid/optics/thesis_models.h>
 
 #include <benchmark/benchmark.h>
@@ -326,6 +328,19 @@ void BM_FourierColorimeterBuild(benchmark::State& state) {
     report(state, 1);
 }
 BENCHMARK(BM_FourierColorimeterBuild)->ArgName("slopes")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// (b') The renderers' closed-form film colours (renderer_films.h), one RGB per item, the same
+// pseudo-random thicknesses and angle, beside (b) as their baseline. Arg model: 0 glTF, 1 Belcour
+// & Barla, 2 Cycles; film: 0 soap film (one base index), 1 a film of 1.5 on gold (three).
+void BM_RendererFilmRgb(benchmark::State& state) {
+    const auto model = static_cast<irid::RendererFilmModel>(state.range(0));
+    irid::SingleFilm f = soap_film();
+    if (state.range(1) == 1) f = {material("air"), irid::Material::constant("film", 1.5), material("gold")};
+    const irid::RendererFilmInputs inputs = irid::renderer_film_inputs(f);
+    (void)irid::cycles_sensitivity_table();  // built once, outside the timed loop
+    run_colors(state, [&](std::size_t, double t) { return irid::renderer_film_rgb(model, inputs, t, angle_rad); });
+}
+BENCHMARK(BM_RendererFilmRgb)->ArgNames({"model", "film"})->ArgsProduct({{0, 1, 2}, {0, 1}});
 
 // (c) The generic path: transfer-matrix spectrum of the one-layer stack, then XYZ.
 void BM_StackSpectrumXyz(benchmark::State& state) {

@@ -14,7 +14,8 @@ The library behind the ``irid`` command (C++20), for Python:
   colours over arrays of thicknesses and angles, :func:`film_reflectance`, :func:`film_color`,
   the thesis' closed forms (eq. 19–29: :func:`thesis_film_reflectance`,
   :func:`thesis_multilayer_reflectance`, :func:`morpho_reflectance`, ...) and colour tables
-  (:meth:`Film.color_table`, :func:`thesis_film_table`);
+  (:meth:`Film.color_table`, :func:`thesis_film_table`); the renderers' thin-film colour models
+  (glTF, Belcour & Barla, Cycles: :func:`renderer_film_color`, :func:`renderer_film_models`);
 * images: :func:`read_image` and :func:`write_image` through OpenImageIO;
 * rendering: :func:`render` of the thesis' scenes (:func:`scenes`), a scene file or a dict.
 
@@ -45,6 +46,7 @@ import numpy as np
 from . import _irid
 from ._optics import (Film, FilmColors, FilmColorTable, FilmColorTable2D, Material,
                       ThesisFilmTable, film_color, film_reflectance, materials,
+                      renderer_film_color, renderer_film_models,
                       morpho_effective_thickness, morpho_reflectance, thesis_effective_thickness,
                       thesis_film_angle, thesis_film_reflectance, thesis_film_table,
                       thesis_matched_k, thesis_multilayer_effective_thickness,
@@ -84,6 +86,8 @@ __all__ = [
     "read_icc_profile",
     "read_image",
     "render",
+    "renderer_film_color",
+    "renderer_film_models",
     "rgb_color_spaces",
     "scenes",
     "simd_target",

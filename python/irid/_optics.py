@@ -283,6 +283,30 @@ def film_color(stack, thickness=None, angle=0.0, illuminant="D65", observer="cie
                                                                  integration)
 
 
+def renderer_film_models():
+    """The renderers' thin-film models: 'gltf' (KHR_materials_iridescence), 'belcour' (Belcour &
+    Barla 2017), 'cycles' (Blender Cycles)."""
+    return _irid.renderer_film_models()
+
+
+def renderer_film_color(model, film, thickness, angle=0.0, ambient="air", substrate="air"):
+    """The colour a renderer's thin-film model gives ambient | film | substrate over arrays of
+    thicknesses [nm] and angles [degrees] broadcast together, as ``irid film --model MODEL``:
+    :class:`FilmColors` (xyz relative to D65, rgb the model's linear Rec.709). The film must be
+    real (k = 0); a metal substrate takes its n + ik per RGB channel."""
+    if not isinstance(model, str):
+        raise ValueError(f"model: {model!r} is not a name")
+    _plain(thickness=thickness)
+    t = np.asarray(thickness, dtype=np.float64)
+    a = _radians(angle)
+    t, a = np.broadcast_arrays(t, a)
+    xyz, rgb = _irid.renderer_film_colors(model, _material(ambient, "ambient"), _material(film, "film"),
+                                          _material(substrate, "substrate"),
+                                          np.ascontiguousarray(t).ravel(), np.ascontiguousarray(a).ravel())
+    shape = t.shape + (3,)
+    return FilmColors(xyz.reshape(shape), rgb.reshape(shape))
+
+
 # --- The thesis' closed forms, element-wise with numpy broadcasting -------------------------
 
 def thesis_phase_change(n_ambient, n_film, n_substrate):

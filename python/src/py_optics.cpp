@@ -9,6 +9,7 @@
 #include <irid/optics/film_color.h>
 #include <irid/optics/fourier_film.h>
 #include <irid/optics/material.h>
+#include <irid/optics/renderer_films.h>
 #include <irid/optics/thesis_models.h>
 
 #include <pybind11/complex.h>
@@ -245,6 +246,36 @@ void add_optics(py::module_& m) {
             py::arg("thickness"), py::arg("angle_rad"), py::arg("illuminant"), py::arg("observer"),
             py::arg("rgb"), py::arg("integration") = "sum")
         .def("effective_thickness", &FilmModel::effective_thickness_nm, py::arg("angle_rad"));
+
+    // --- The renderers' thin-film models (colour only) ------------------------------------
+    m.def("renderer_film_models", &renderer_film_model_names,
+          "The renderers' thin-film models: gltf, belcour, cycles.");
+    m.def(
+        "renderer_film_colors",
+        [](const std::string& model, const Material& ambient, const Material& film, const Material& substrate,
+           const py::handle& thickness, const py::handle& angle_rad) {
+            const RendererFilmModel kind = parse_renderer_film_model(model);
+            const std::vector<double> t = doubles(thickness, "thickness");
+            const std::vector<double> a = doubles(angle_rad, "angle");
+            if (t.size() != a.size()) throw Error("thickness and angle: sizes differ");
+            check_finite(t, "thickness", 0.0, 1e6, false);
+            for (const double v : a) check_incidence_angle(v);
+            const RendererFilmInputs inputs = renderer_film_inputs({ambient, film, substrate});
+            py::array_t<double> xyz = triples(t.size()), out_rgb = triples(t.size());
+            double* xp = xyz.mutable_data();
+            double* rp = out_rgb.mutable_data();
+            {
+                py::gil_scoped_release release;
+                tbb::parallel_for(std::size_t{0}, t.size(), [&](std::size_t i) {
+                    const FilmColor c = renderer_film_color(kind, inputs, t[i], a[i]);
+                    xp[3 * i] = c.xyz.X, xp[3 * i + 1] = c.xyz.Y, xp[3 * i + 2] = c.xyz.Z;
+                    rp[3 * i] = c.rgb_linear.r, rp[3 * i + 1] = c.rgb_linear.g, rp[3 * i + 2] = c.rgb_linear.b;
+                });
+            }
+            return py::make_tuple(xyz, out_rgb);
+        },
+        py::arg("model"), py::arg("ambient"), py::arg("film"), py::arg("substrate"), py::arg("thickness"),
+        py::arg("angle_rad"));
 
     m.def(
         "film_exact",

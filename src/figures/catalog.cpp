@@ -20,6 +20,8 @@ FigureResult draw_clip_claims(const FigureRequest& request);
 FigureResult draw_film_error(const FigureRequest& request);
 FigureResult draw_newton(const FigureRequest& request);
 FigureResult draw_morpho_angle(const FigureRequest& request);
+// films' (fig_renderer_films.cpp).
+FigureResult draw_renderer_films(const FigureRequest& request);
 // gamut-report's (fig_ramps.cpp).
 FigureResult draw_ramps(const FigureRequest& request);
 
@@ -79,6 +81,11 @@ std::span<const CatalogEntry> catalog_entries() {
         {{"film-error", "", "ΔE2000 of the thesis' single-film model against the exact film",
           image_extensions, "film=soap|oil (default soap); k=matched|1 (default matched)"},
          draw_film_error},
+        {{"renderer-films", "",
+          "ΔE2000 of the renderers' thin-film models (glTF, Belcour–Barla, Cycles) and the thesis' "
+          "against the exact film",
+          image_extensions, "metal=gold|silver|none, the second row's base (default gold)"},
+         draw_renderer_films},
         {{"hue-shift", "", "Hue change of the clipped spectrum against wavelength, per clip method",
           image_extensions,
           "hue=oklab|luv|lab (default oklab); methods=LIST of clip methods or all (default: all "

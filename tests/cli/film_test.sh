@@ -415,6 +415,46 @@ expect_stdout_matches '^== oil-on-water'
 run film-error --film nope
 expect_usage_error "--film" "oil-on-water"
 
+# === 7b. The renderers' film models ========================================================
+
+# A film of the ambient's own index leaves the bare base: 1 | 1 | 1.5 reflects
+# ((1.5 - 1) / (1.5 + 1))^2 = 0.04 in every channel (cycles: exact Fresnel, no series terms), and
+# RGB (1, 1, 1) is D65's white, so Y = 0.04 too.
+run film --model cycles --ambient 1 --layer 1:300 --substrate 1.5
+expect_header "X,Y,Z,x,y,L,a,b,R_linear,G_linear,B_linear"
+expect_rows 'w[2] = 0.04; w[9] = 0.04; w[10] = 0.04; w[11] = 0.04' 1e-9 1
+# belcour: the same times the Gaussian fits' white, illuminant E through the Rec.709 matrix (its
+# rows' sums: 3.2404542 - 1.5371385 - 0.4985314 = 1.2047843 ...), to the fits' 0.2 %.
+run film --model belcour --ambient 1 --layer 1:300 --substrate 1.5 --color
+expect_rows 'w[9] = 0.04 * 1.2047843; w[10] = 0.04 * 0.9483008; w[11] = 0.04 * 0.9088427' 3e-4 1
+run film --model gltf --layer 1.33:300 --substrate gold --angle 30
+expect_header "X,Y,Z,x,y,L,a,b,R_linear,G_linear,B_linear"
+run film --model belcour --layer 1.33:300 --wavelengths 400:700:5
+expect_usage_error "--wavelengths" "does not apply"
+run film --model cycles --layer 1.5+0.1i:100
+expect_usage_error "--layer 1" "absorbs"
+run film --model gltf --layer 1.33:100 --rgb rec2020
+expect_usage_error "--rgb" "srgb"
+run film --model gltf --layer 1.33:100 --layer 1.5:100
+expect_usage_error "exactly 1 --layer"
+run film-table --model cycles --layer 1.33
+expect_usage_error "--model cycles" "colour model"
+run film-error --model nope
+expect_usage_error "--model" "cycles"
+run film-error --model cycles --film n1.33-on-air --thickness 0:200:50 --angles 0:60:30
+expect_status 0
+expect_stdout_matches '^samples 15 '
+expect_stdout_matches '^cycles,n1.33-on-air,'
+expect_stdout_matches '^limits: '
+run film-error --model thesis --film n1.33-on-gold --thickness 0:100:50 --angles 0:30:30
+expect_stdout_matches '^thesis,n1.33-on-gold,n/a'
+run film-error --model gltf --K 1
+expect_usage_error "--K"
+run film-error --model gltf --illuminant A
+expect_usage_error "--illuminant"
+run film-error --model gltf --film nope
+expect_usage_error "--film" "n1.33-on-air"
+
 # === 8. Errors =============================================================================
 
 # Exit 2, the option and its valid range on stderr, nothing on stdout.
@@ -561,6 +601,8 @@ run_bounded() {
 run_bounded film-error --thickness 0:99999:1 --angles 0:89:0.01
 expect_usage_error "--thickness 0:99999:1 (100 000 values)" "--angles 0:89:0.01 (8 901 values)" \
     "asks for 3 560 400 000 spectra" "the limit is 2 123 142"
+run_bounded film-error --model cycles --thickness 0:99999:1 --angles 0:89:0.01
+expect_usage_error "--film grid (16 films)" "the exact model (1 spectrum per sample)" "the limit is 2 123 142"
 run_bounded film-error --film soap --thickness 0:99999:1 --angles 0:89:0.01
 expect_usage_error "asks for 1 780 200 000 spectra" "the limit is 2 123 142"
 # 1 000 001 thicknesses x 9 angles = 9 000 009 lines (2.2 GB), against 10^6 lines; no file.

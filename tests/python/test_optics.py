@@ -326,3 +326,38 @@ def test_masked_arrays_refused():
                  lambda: irid.morpho_effective_thickness(np.ma.masked_array([0.0], mask=[1]))):
         with pytest.raises(ValueError, match="masked"):
             call()
+
+
+# --- The renderers' thin-film models -------------------------------------------------------------
+
+def test_renderer_film_models_are_named():
+    assert irid.renderer_film_models() == ["gltf", "belcour", "cycles"]
+    with pytest.raises(KeyError):
+        irid.renderer_film_color("thesis", 1.33, 300.0)
+
+
+def test_renderer_film_without_a_film_is_the_bare_base():
+    # A film of the ambient's index on glass: Cycles gives the exact Fresnel ((1.5-1)/(1.5+1))² in
+    # every channel at normal incidence, the colour of a grey with Y = 0.04 under D65.
+    c = irid.renderer_film_color("cycles", 1.0, [0.0, 300.0, 1000.0], ambient=1.0, substrate=1.5)
+    assert c.rgb.shape == (3, 3)
+    np.testing.assert_allclose(c.rgb, 0.04, atol=1e-12)
+    np.testing.assert_allclose(c.xyz[:, 1], 0.04, atol=1e-12)
+
+
+def test_renderer_film_broadcasts_and_refuses_absorbing_films():
+    c = irid.renderer_film_color("gltf", 1.33, [[100.0], [300.0]], angle=[0.0, 30.0, 60.0], substrate="gold")
+    assert c.xyz.shape == (2, 3, 3) and np.isfinite(c.xyz).all() and (c.rgb >= 0).all()
+    with pytest.raises(ValueError):
+        irid.renderer_film_color("cycles", "1.5+0.1i", 100.0)
+    with pytest.raises(ValueError):
+        irid.renderer_film_color("cycles", 1.33, 100.0, angle=95.0)
+
+
+def test_renderer_film_agrees_with_the_cli(irid_cli):
+    out = subprocess.run([irid_cli, "film", "--model", "belcour", "--layer", "1.33:350", "--substrate", "water",
+                          "--angle", "30"], capture_output=True, text=True, check=True)
+    row = next(csv.DictReader(io.StringIO(out.stdout)))
+    c = irid.renderer_film_color("belcour", 1.33, 350.0, angle=30.0, substrate="water")
+    np.testing.assert_allclose(c.rgb, [float(row[k]) for k in ("R_linear", "G_linear", "B_linear")], rtol=1e-12)
+    np.testing.assert_allclose(c.xyz, [float(row[k]) for k in ("X", "Y", "Z")], rtol=1e-12)

@@ -8,6 +8,8 @@
 //   ... --color [--illuminant D65] [--observer cie1931] [--rgb srgb]            → one colour line
 //   ... --color --integration fourier   the exact single film's colour by the Fourier series
 //                                       (irid/optics/fourier_film.h); sum (the 1 nm sum) default
+//   irid film --model gltf|belcour|cycles --layer 1.33:350 [--ambient air] [--substrate gold]
+//             [--angle 30]                                      → one colour line (--color implied)
 //
 // K defaults to the physical values the renderer uses (the matched |r01| + |r12| for the single
 // film, 2/(l+1)² for eq. 25); --K 1 is the thesis as written. The work of a run (wavelengths ×
@@ -53,7 +55,20 @@ FilmColor film_color(const FilmCommand& c, const Film& film, const Colorimeter& 
     return fourier.color(film.model->thickness_nm(), std::cos(film.angle_rad));
 }
 
+int run_renderer_film(const FilmCommand& c) {
+    // Colour models: --color is implied, and the colour is read as a Rec.709 reflectance.
+    if (c.integration != "sum") {
+        throw UsageError("--integration does not apply to --model " + c.args.model +
+                         " (the model has its own integration)");
+    }
+    const RendererFilmRequest r = parse_renderer_film(c.args);
+    const FilmColor fc = renderer_film_color(r.model, r.inputs, r.thickness_nm, r.angle_rad);
+    write_stdout(color_lines(fc, Colorimeter()));
+    return exit_success;
+}
+
 int run_film(const FilmCommand& c) {
+    if (find_renderer_film_model(c.args.model)) return run_renderer_film(c);
     const Film film = parse_film(c.args, true);
     // Every option is checked, whether or not this run uses it.
     const Colorimeter colorimeter = parse_colorimeter(c.args);
@@ -76,12 +91,7 @@ int run_film(const FilmCommand& c) {
     }
     std::string out;
     if (c.color) {
-        const FilmColor fc = film_color(c, film, colorimeter);
-        const Xy xy = xyz_to_xy(fc.xyz, xyz_to_xy(colorimeter.white()));
-        const Lab lab = colorimeter.lab(fc.xyz);
-        out = "X,Y,Z,x,y,L,a,b,R_linear,G_linear,B_linear\n";
-        append_csv_line(out, std::array{fc.xyz.X, fc.xyz.Y, fc.xyz.Z, xy.x, xy.y, lab.L, lab.a, lab.b,
-                                        fc.rgb_linear.r, fc.rgb_linear.g, fc.rgb_linear.b});
+        out = color_lines(film_color(c, film, colorimeter), colorimeter);
     } else {
         const bool exact = film.model->has_transmittance();
         out = exact ? "wavelength_nm,R,T\n" : "wavelength_nm,R\n";

@@ -2,6 +2,9 @@
 
 #include <irid/color.h>
 
+#include <fmt/core.h>
+
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <numbers>
@@ -60,10 +63,17 @@ LayerArgument parse_layer(const std::string& text, int number, bool thickness_re
 }
 
 FilmModelKind parse_model(const std::string& name) {
+    if (find_renderer_film_model(name)) {
+        throw UsageError("--model " + name +
+                         " is a renderer's colour model: it gives a colour, not a spectrum or a "
+                         "table (use `irid film --model " + name + " --layer ...`)");
+    }
     try {
         return parse_film_model(name);
     } catch (const UnknownNameError&) {
-        throw UsageError("--model '" + name + "' is unknown; valid: exact, thesis, thesis-multilayer, morpho");
+        throw UsageError("--model '" + name +
+                         "' is unknown; valid: exact, thesis, thesis-multilayer, morpho (and, "
+                         "for irid film, the renderers' gltf, belcour, cycles)");
     }
 }
 
@@ -111,7 +121,9 @@ Range parse_range(const std::string& text, const char* option, double minimum, d
 
 void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) {
     a.command = &cmd;
-    cmd.add_option("--model", a.model, "exact, thesis (eq. 21/22), thesis-multilayer (eq. 25/26) or morpho (eq. 29)")
+    cmd.add_option("--model", a.model,
+                   "exact, thesis (eq. 21/22), thesis-multilayer (eq. 25/26), morpho (eq. 29); irid "
+                   "film also: gltf, belcour, cycles (renderers' colour models)")
         ->capture_default_str();
     cmd.add_option("--ambient", a.ambient,
                    "Index of the ambient medium: 1.33, 1.5+0.02i (n+ik) or a material name")
@@ -304,6 +316,71 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
         throw UsageError(e.what());
     }
     return f;
+}
+
+void require_default_colorimeter(const FilmArguments& a, bool rgb, const std::string& what) {
+    const FilmArguments defaults;
+    const auto check = [&](const char* option, const std::string& value, const std::string& standard) {
+        if (value != standard) {
+            throw UsageError(fmt::format("{} '{}' does not apply: {} (only {} {})", option, value,
+                                         what, option, standard));
+        }
+    };
+    check("--illuminant", a.illuminant, defaults.illuminant);
+    check("--observer", a.observer, defaults.observer);
+    if (rgb) check("--rgb", a.rgb, defaults.rgb);
+}
+
+RendererFilmRequest parse_renderer_film(const FilmArguments& a) {
+    RendererFilmRequest r;
+    r.model = parse_renderer_film_model(a.model);
+    const auto given = [&](const char* option) { return a.command && a.command->count(option) > 0; };
+    for (const char* option : {"--polarization", "--phase-change", "--no-phase-change", "--K", "--periods",
+                               "--d1", "--d2", "--n", "--blend", "--blend-vary", "--wavelengths"}) {
+        if (given(option)) {
+            throw UsageError(fmt::format("{} does not apply to --model {} (a colour model: no spectrum, "
+                                         "unpolarised)",
+                                         option, a.model));
+        }
+    }
+    require_default_colorimeter(a, true,
+                                "the renderers' film models have fixed sensitivities (CIE 1931 2°, "
+                                "linear Rec.709, white D65)");
+    const Material ambient = parse_medium(a.ambient, "--ambient");
+    const Material substrate = parse_medium(a.substrate, "--substrate");
+    if (!ambient.is_lossless()) {
+        throw UsageError("--ambient '" + a.ambient + "' absorbs (k > 0); the ambient must have k = 0");
+    }
+    if (a.layers.size() != 1) {
+        throw UsageError(fmt::format("--model {} takes exactly 1 --layer INDEX:THICKNESS, found {}", a.model,
+                                     a.layers.size()));
+    }
+    const LayerArgument layer = parse_layer(a.layers.front(), 1, true);
+    if (!layer.material.is_lossless()) {
+        throw UsageError(fmt::format("--layer 1 '{}': the film absorbs (k > 0); --model {} takes a real "
+                                     "film index (use --model exact)",
+                                     a.layers.front(), a.model));
+    }
+    if (!(a.angle_deg >= 0.0 && a.angle_deg < 90.0)) {
+        throw UsageError("--angle " + format_shortest(a.angle_deg) + " must be in [0, 90) degrees");
+    }
+    try {
+        r.inputs = renderer_film_inputs({ambient, layer.material, substrate});
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+    r.thickness_nm = layer.thickness_nm.value_or(0.0);
+    r.angle_rad = a.angle_deg * degrees_to_radians;
+    return r;
+}
+
+std::string color_lines(const FilmColor& c, const Colorimeter& colorimeter) {
+    const Xy xy = xyz_to_xy(c.xyz, xyz_to_xy(colorimeter.white()));
+    const Lab lab = colorimeter.lab(c.xyz);
+    std::string out = "X,Y,Z,x,y,L,a,b,R_linear,G_linear,B_linear\n";
+    append_csv_line(out, std::array{c.xyz.X, c.xyz.Y, c.xyz.Z, xy.x, xy.y, lab.L, lab.a, lab.b,
+                                    c.rgb_linear.r, c.rgb_linear.g, c.rgb_linear.b});
+    return out;
 }
 
 Colorimeter parse_colorimeter(const FilmArguments& a) {

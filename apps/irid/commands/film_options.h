@@ -7,6 +7,7 @@
 #include "../cli_common.h"
 
 #include <irid/optics/film.h>
+#include <irid/optics/renderer_films.h>
 
 #include <memory>
 #include <optional>
@@ -62,6 +63,24 @@ struct Film {
 
 /// Parses and checks the film options. `thickness_required`: every --layer needs :THICKNESS.
 [[nodiscard]] Film parse_film(const FilmArguments& a, bool thickness_required);
+/// A renderer's film model (`--model gltf|belcour|cycles`): one real film on a base.
+struct RendererFilmRequest {
+    RendererFilmModel model = RendererFilmModel::gltf;
+    RendererFilmInputs inputs;
+    double thickness_nm = 0.0;
+    double angle_rad = 0.0;
+};
+/// Parses and checks the film options for a renderer's model: exactly one --layer INDEX:THICKNESS
+/// of a real film; the options of the other models are refused, and so are --illuminant,
+/// --observer and --rgb other than their defaults (the models' sensitivities are fixed: CIE 1931,
+/// linear Rec.709, white D65).
+[[nodiscard]] RendererFilmRequest parse_renderer_film(const FilmArguments& a);
+/// Throws UsageError unless --illuminant, --observer (and --rgb, when `rgb`) keep their defaults:
+/// `what` says why ("the renderers' film models have fixed sensitivities").
+void require_default_colorimeter(const FilmArguments& a, bool rgb, const std::string& what);
+/// The header and line of a colour: X,Y,Z,x,y,L,a,b,R_linear,G_linear,B_linear.
+[[nodiscard]] std::string color_lines(const FilmColor& c, const Colorimeter& colorimeter);
+
 /// Parses and checks --illuminant, --observer, --rgb.
 [[nodiscard]] Colorimeter parse_colorimeter(const FilmArguments& a);
 /// Parses START:END:STEP for `option`: start >= minimum, end >= start, step > 0, at most
