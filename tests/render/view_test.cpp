@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -25,6 +26,15 @@ RenderResult render_at(const std::string& scene, int w, int h, std::vector<std::
     set.push_back("image.height=" + std::to_string(h));
     set.push_back("image.spp=" + std::to_string(spp));
     return render(load_scene(scene, set));
+}
+
+/// A scene at its defaults at 160×120, 1 sample per pixel, rendered once for the tests that
+/// read it.
+const RenderResult& defaults_at_160(const std::string& scene) {
+    static std::map<std::string, RenderResult> cache;
+    auto it = cache.find(scene);
+    if (it == cache.end()) it = cache.emplace(scene, render_at(scene, 160, 120)).first;
+    return it->second;
 }
 
 /// Flat clipped white: display pixels whose every channel would be stored as 255 in 8 bits
@@ -43,7 +53,7 @@ constexpr double max_white_fraction = 0.0005;  // 0.05 % of the image
 
 TEST(ViewTransform, NoSceneAtItsDefaultsHasAFlatClippedWhiteArea) {
     for (const std::string& name : builtin_scene_names()) {
-        const RenderResult r = render_at(name, 160, 120);
+        const RenderResult& r = defaults_at_160(name);
         const double fraction =
             static_cast<double>(clipped_white_pixels(r.display)) / static_cast<double>(r.display.pixel_count());
         EXPECT_LE(fraction, max_white_fraction) << name;
@@ -67,7 +77,7 @@ double display_luminance(const io::Image& d, std::size_t i) {
 // increasing and the smits clip keeps luminance, so sorting by scene Y sorts the display too.
 TEST(ViewTransform, HighlightsKeepAGradient) {
     for (const std::string& name : builtin_scene_names()) {
-        const RenderResult r = render_at(name, 160, 120);
+        const RenderResult& r = defaults_at_160(name);
         const std::size_t n = r.xyz.pixel_count();
         std::vector<std::size_t> order(n);
         std::iota(order.begin(), order.end(), 0);
