@@ -17,12 +17,15 @@ class Render(collections.namedtuple("Render", ["linear", "display"])):
     ``linear, display = irid.render(...)``, with two more attributes.
 
     linear: the scene-referred image, (height, width, 3) float32: linear RGB of the scene's
-        destination space, exposure applied, before the gamut clip (may leave [0, 1]).
-    display: the displayed image: clipped by the scene's method and encoded with the space's
-        transfer function, float32 in [0, 1] (what ``irid render`` writes to a PNG).
+        destination space, exposure applied, before the view transform and the gamut clip
+        (may leave [0, 1]).
+    display: the displayed image: through the scene's view transform (``render.view``: the
+        highlight roll-off, or ``"thesis"`` for the clip alone), clipped by the scene's method
+        and encoded with the space's transfer function, float32 in [0, 1] (what ``irid render``
+        writes to a PNG).
     xyz: CIE XYZ per pixel (the D65 white at Y = 1, exposure applied).
     stats: a dict: camera_rays, rays, out_of_gamut_pixels, seconds, table_seconds, and the
-        space, clip, width, height, spp and source used.
+        space, clip, view, width, height, spp and source used.
     """
 
     def __new__(cls, linear, display, xyz, stats):

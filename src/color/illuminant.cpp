@@ -88,18 +88,51 @@ Xy daylight_chromaticity(double cct_k) {
     return {x, y};
 }
 
-DenseSpectrum daylight_illuminant(double cct_k) {
-    const Xy c = daylight_chromaticity(cct_k);
-    // CIE 015:2018: M1, M2 from the chromaticity, rounded to three decimals before use.
+namespace {
+
+/// CIE 015:2018 §4: M = 0.0241 + 0.2562 x − 0.7341 y, M1 = (−1.3515 − 1.7703 x + 5.9114 y)/M,
+/// M2 = (0.0300 − 31.4424 x + 30.0717 y)/M.
+DaylightWeights weights_of(Xy c) noexcept {
     const double m = 0.0241 + 0.2562 * c.x - 0.7341 * c.y;
-    const double m1 = std::round((-1.3515 - 1.7703 * c.x + 5.9114 * c.y) / m * 1000.0) / 1000.0;
-    const double m2 = std::round((0.0300 - 31.4424 * c.x + 30.0717 * c.y) / m * 1000.0) / 1000.0;
+    return {(-1.3515 - 1.7703 * c.x + 5.9114 * c.y) / m, (0.0300 - 31.4424 * c.x + 30.0717 * c.y) / m};
+}
+
+DenseSpectrum daylight_of(DaylightWeights w) {
     std::array<double, data::daylight_s0.size()> table{};
     for (std::size_t i = 0; i < table.size(); ++i) {
-        table[i] = data::daylight_s0[i] + m1 * data::daylight_s1[i] + m2 * data::daylight_s2[i];
+        table[i] = data::daylight_s0[i] + w.m1 * data::daylight_s1[i] + w.m2 * data::daylight_s2[i];
     }
     return from_5nm_table(table);
 }
+
+}  // namespace
+
+DenseSpectrum daylight_illuminant(double cct_k) {
+    // CIE 015:2018: M1, M2 from the chromaticity, rounded to three decimals before use.
+    const DaylightWeights w = weights_of(daylight_chromaticity(cct_k));
+    return daylight_of({std::round(w.m1 * 1000.0) / 1000.0, std::round(w.m2 * 1000.0) / 1000.0});
+}
+
+std::array<DenseSpectrum, 3> daylight_basis() {
+    return {from_5nm_table(data::daylight_s0), from_5nm_table(data::daylight_s1),
+            from_5nm_table(data::daylight_s2)};
+}
+
+DaylightWeights daylight_weights(Xy c) {
+    // The denominator is about −0.14 on the daylight locus; far from it the weights blow up.
+    const double m = 0.0241 + 0.2562 * c.x - 0.7341 * c.y;
+    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !(m < -0.01)) {
+        std::string message = "daylight weights: the chromaticity (";
+        message += format_shortest(c.x);
+        message += ", ";
+        message += format_shortest(c.y);
+        message += ") is too far from the daylight locus (0.0241 + 0.2562 x - 0.7341 y must be below -0.01)";
+        throw Error(message);
+    }
+    return weights_of(c);
+}
+
+DenseSpectrum daylight_from_chromaticity(Xy c) { return daylight_of(daylight_weights(c)); }
 
 double planck_radiance(double lambda_nm, double temperature_k) noexcept {
     const double lambda_m = lambda_nm * 1e-9;

@@ -121,6 +121,18 @@ io::Image magnify(const io::Image& in, int k) {
     return out;
 }
 
+/// The w × h pixels of `in` from (x0, y0), moved inside the image where they would leave it.
+io::Image crop(const io::Image& in, int x0, int y0, int w, int h) {
+    w = std::min(w, in.width), h = std::min(h, in.height);
+    x0 = std::clamp(x0, 0, in.width - w), y0 = std::clamp(y0, 0, in.height - h);
+    io::Image out = io::Image::blank(w, h, in.channels);
+    out.color_space = in.color_space;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < in.channels; ++c) out.at(x, y, c) = in.at(x0 + x, y0 + y, c);
+    return out;
+}
+
 std::string format_number(double v, int digits = 2) { return fmt::format("{:.{}f}", v, digits); }
 
 void check_options(const GalleryOptions& o) {
@@ -210,6 +222,60 @@ GalleryResult make_gallery(const GalleryOptions& o) {
                              spectral.stats.seconds / table.stats.seconds, d.mean, d.p99));
     }
     page.add("</table>\n");
+
+    // --- The view transform -----------------------------------------------------------------
+    {
+        say("comparing the view transforms");
+        const int vw = std::max(32, o.width / 2), vh = std::max(24, o.height / 2);
+        page.add(fmt::format(
+            "<h2>From scene light to a display</h2>\n<p>The oil slick at {}×{}, {} samples per "
+            "pixel, under the Preetham–Shirley–Smits daylight sky: with the thesis' path "
+            "(<code>render.view = thesis</code>: the gamut clip alone, so every luminance above "
+            "the display's white becomes white) and with the default view, which first rolls "
+            "the highlights off on luminance (the identity up to the knee, Reinhard et al. 2002's "
+            "L/(1 + L) above it) and then clips the chroma that is left outside the gamut. The "
+            "numbers are the share of pixels stored as 255 in all three channels and the brightest "
+            "scene luminance (white = 1); below each image, the brightest glint at 4× (nearest "
+            "neighbour).</p>\n<div class=\"pair\">\n",
+            vw, vh, o.spp));
+        constexpr int zoom = 4;
+        const int gw = std::max(8, vw / 4), gh = std::max(6, vh / 4);
+        int glint_x = 0, glint_y = 0;
+        for (const char* view : {"thesis", "rolloff"}) {
+            std::vector<std::string> set = size_overrides(vw, vh, o.spp);
+            set.push_back(fmt::format("render.view={}", view));
+            const render::RenderResult r = render::render(render::load_scene("oil-slick", set), ropt);
+            std::size_t white = 0;
+            float brightest = 0;
+            for (std::size_t i = 0; i < r.display.pixel_count(); ++i) {
+                bool all = true;
+                for (int c = 0; c < 3; ++c) all = all && r.display.pixels[3 * i + c] >= 254.5f / 255.0f;
+                white += all ? 1 : 0;
+                if (r.xyz.pixels[3 * i + 1] > brightest) {
+                    brightest = r.xyz.pixels[3 * i + 1];
+                    glint_x = static_cast<int>(i % static_cast<std::size_t>(vw));
+                    glint_y = static_cast<int>(i / static_cast<std::size_t>(vw));
+                }
+            }
+            const std::string file = fmt::format("oil-slick-view-{}.png", view);
+            io::write_image(dir / file, r.display);
+            const std::string title =
+                std::string(view) == "thesis" ? "render.view = thesis (clip only)"
+                                              : "render.view = rolloff (the default)";
+            page.image(file, vw, vh, title, "", title,
+                       fmt::format("<code>irid render oil-slick --set render.view={}</code>", view),
+                       {{"clipped white", format_number(100.0 * static_cast<double>(white) /
+                                                            static_cast<double>(r.display.pixel_count()),
+                                                        3) + " %"},
+                        {"brightest scene Y", format_number(brightest, 3)}});
+            const std::string glint = fmt::format("oil-slick-view-{}-glint.png", view);
+            const io::Image part = crop(r.display, glint_x - gw / 2, glint_y - gh / 2, gw, gh);
+            io::write_image(dir / glint, magnify(part, zoom));
+            page.image(glint, part.width * zoom, part.height * zoom, title + ", the glint", "",
+                       title + ", the glint", "The brightest glint of the image above, 4×.", {});
+        }
+        page.add("</div>\n");
+    }
 
     // --- Thin-film aliasing ----------------------------------------------------------------
     {

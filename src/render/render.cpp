@@ -9,6 +9,7 @@
 #include <irid/error.h>
 #include <irid/gamut/batch.h>
 #include <irid/gamut/clip.h>
+#include <irid/gamut/tone.h>
 #include <irid/render/render.h>
 
 #include <fmt/core.h>
@@ -62,12 +63,13 @@ double fresnel_dielectric(double cos_i, double n) noexcept {
 
 Rgb3 scale(const Rgb3& a, const Rgb3& b) noexcept { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
 
-// --- The two colour paths ----------------------------------------------------------------------
+// --- The three colour paths ----------------------------------------------------------------------
 
 struct TableOps {
     using Carrier = RgbCarrier;
     const World& world;
     [[nodiscard]] Carrier rgb(const Rgb3& c) const noexcept { return {c}; }
+    [[nodiscard]] Carrier environment(Vec3 d) const noexcept { return {world.environment(d)}; }
     [[nodiscard]] Carrier film(const ThicknessSample& t, double cos_theta) const noexcept {
         return {world.film_table().at(t.t_nm, t.footprint_nm, cos_theta)};
     }
@@ -78,23 +80,21 @@ struct TableOps {
 };
 
 /// The table path's RGB products with the film's colour by the Fourier series per hit.
-struct FourierOps {
-    using Carrier = RgbCarrier;
-    const World& world;
-    [[nodiscard]] Carrier rgb(const Rgb3& c) const noexcept { return {c}; }
+struct FourierOps : TableOps {
     [[nodiscard]] Carrier film(const ThicknessSample& t, double cos_theta) const noexcept {
         return {world.film_fourier(t, cos_theta)};
     }
-    [[nodiscard]] Carrier wing(double theta_deg) const noexcept {
-        return {world.wing_table().at(theta_deg)};
-    }
-    [[nodiscard]] Xyz xyz(const Carrier& c) const noexcept { return world.basis().xyz(c); }
 };
 
 struct SpectralOps {
     using Carrier = SpectralCarrier;
     const World& world;
     [[nodiscard]] Carrier rgb(const Rgb3& c) const noexcept { return world.basis().from_rgb(c); }
+    [[nodiscard]] Carrier environment(Vec3 d) const noexcept {
+        Carrier s;
+        world.environment_spectrum(d, s);
+        return s;
+    }
     [[nodiscard]] Carrier film(const ThicknessSample& t, double cos_theta) const {
         Carrier s;
         world.film_spectrum(t, cos_theta, s);
@@ -132,7 +132,7 @@ private:
         --m_budget;
         Hit hit;
         if (!m_world.intersect(ray, m_eps, infinity, hit))
-            return m_ops.rgb(m_world.environment(ray.direction));
+            return m_ops.environment(ray.direction);
         const Vec3 d = ray.direction;
         const Vec3 p = hit.surface.position;
         Vec3 n = hit.surface.normal;
@@ -178,7 +178,7 @@ private:
         if (r.y <= 0) r = reflect(d, n);
         const double cos_theta = std::clamp(-dot(d, nb), 0.0, 1.0);
         ++rays;  // the reflected ray, which meets only the environment above the plane
-        const C env = m_ops.rgb(m_world.environment(r));
+        const C env = m_ops.environment(r);
         const C diffuse = m_ops.rgb(scale(albedo, m_world.diffuse_light(p, nb)));
         const double t = m_world.oil_thickness_nm(p);
         if (t > 0) {
@@ -212,14 +212,14 @@ private:
             reflected = trace(Ray{p + m_eps * n, r}, depth + 1, wr, nullptr);
         } else {
             ++rays;
-            reflected = m_ops.rgb(m_world.environment(r));
+            reflected = m_ops.environment(r);
         }
         // The film is thin: the transmitted ray goes on in the same direction.
         if (depth + 1 < m_scene.render.max_depth && wt > min_path_weight && m_budget > 0) {
             transmitted = trace(Ray{p - m_eps * n, d}, depth + 1, wt, nullptr);
         } else {
             ++rays;
-            transmitted = m_ops.rgb(m_world.environment(d));
+            transmitted = m_ops.environment(d);
         }
         return R * reflected + T * transmitted;
     }
@@ -350,7 +350,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
                     tile_rays[t] = trace_tile(world, SpectralOps{world}, x0, y0, x1, y1, samples);
                     break;
                 case ColorPath::fourier:
-                    tile_rays[t] = trace_tile(world, FourierOps{world}, x0, y0, x1, y1, samples);
+                    tile_rays[t] = trace_tile(world, FourierOps{{world}}, x0, y0, x1, y1, samples);
                     break;
             }
             const int n = ++done;
@@ -413,6 +413,18 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         outside += out ? 1 : 0;
     }
     result.linear.pixels = rgb;
+    // The view transform's roll-off (scene.h ViewTransform): the scene luminance Y through the
+    // curve, the colour scaled with it, so its chromaticity (and hue) stays; what is then
+    // outside the gamut's chroma is the gamut method's.
+    if (scene.render.view == ViewTransform::rolloff) {
+        const HighlightRolloff rolloff(scene.render.rolloff_knee);
+        for (std::size_t i = 0; i < result.xyz.pixel_count(); ++i) {
+            const double y = result.xyz.pixels[3 * i + 1];
+            if (!(y > rolloff.knee())) continue;
+            const double f = rolloff(y) / y;
+            for (int k = 0; k < 3; ++k) rgb[3 * i + k] = static_cast<float>(rgb[3 * i + k] * f);
+        }
+    }
     // The displayed image must fit the display: aces-rgc with its final clip, as irid clip
     // does for images.
     ClipSettings clip_settings;

@@ -2,8 +2,10 @@
 #include <irid/color/rgb.h>
 #include <irid/error.h>
 #include <irid/gamut/clip.h>
+#include <irid/gamut/tone.h>
 #include <irid/optics/material.h>
 #include <irid/render/scene.h>
+#include <irid/render/sky.h>
 #include <irid/text_input.h>
 
 #include "builtin_scenes.h"  // generated from scenes/*.json (cmake/EmbedScenes.cmake)
@@ -216,7 +218,7 @@ namespace {
 void read_render(const Json& j, const std::string& source, RenderParams& p) {
     ObjectReader r(j, "render", source,
                    {"path", "optics", "antialias", "max_depth", "seed", "space", "clip",
-                    "exposure", "filter_radius", "filter_sigma"});
+                    "exposure", "view", "rolloff_knee", "filter_radius", "filter_sigma"});
     r.choice("path", p.path,
              {{"table", ColorPath::table}, {"spectral", ColorPath::spectral}, {"fourier", ColorPath::fourier}});
     r.choice("optics", p.optics, {{"thesis", OpticsModel::thesis}, {"exact", OpticsModel::exact}});
@@ -244,23 +246,35 @@ void read_render(const Json& j, const std::string& source, RenderParams& p) {
         r.fail("render.clip", e.what());
     }
     r.number("exposure", p.exposure, 0.0, 1.0e3);
+    r.choice("view", p.view, {{"rolloff", ViewTransform::rolloff}, {"thesis", ViewTransform::thesis}});
+    r.number("rolloff_knee", p.rolloff_knee, 0.0, HighlightRolloff::max_knee);
     r.number("filter_radius", p.filter_radius, 0.5, 4.0);
     r.number("filter_sigma", p.filter_sigma, 0.1, 4.0);
 }
 
 void read_light(const Json& j, const std::string& source, LightParams& p) {
     ObjectReader r(j, "light", source,
-                   {"sun_direction", "sun_intensity", "sun_radius_deg", "sky_zenith",
-                    "sky_horizon", "ground", "environment_image", "environment_intensity"});
+                   {"sky", "turbidity", "sky_scale", "sun_direction", "sun_intensity", "sun_radius_deg",
+                    "sky_zenith", "sky_horizon", "ground", "ground_albedo", "environment_image",
+                    "environment_intensity"});
+    r.choice("sky", p.sky, {{"gradient", SkyModel::gradient}, {"preetham", SkyModel::preetham}});
+    r.number("turbidity", p.turbidity, PreethamSky::min_turbidity, PreethamSky::max_turbidity);
+    r.positive("sky_scale", p.sky_scale, light_max);
     r.vec3("sun_direction", p.sun_direction, -1.0e3, 1.0e3);
     const auto& d = p.sun_direction;
     if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < 1e-12)
         r.fail("light.sun_direction", "must not be the zero vector");
+    if (p.sky == SkyModel::preetham && !(d[1] > 1e-9 * std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
+        r.fail("light.sun_direction",
+               fmt::format("is [{}, {}, {}]; with light.sky = preetham the sun must be above the "
+                           "horizon (y > 0)",
+                           d[0], d[1], d[2]));
     r.number("sun_intensity", p.sun_intensity, 0.0, light_max);
     r.number("sun_radius_deg", p.sun_radius_deg, 0.1, 20.0);
     r.vec3("sky_zenith", p.sky_zenith, 0.0, light_max);
     r.vec3("sky_horizon", p.sky_horizon, 0.0, light_max);
     r.vec3("ground", p.ground, 0.0, light_max);
+    r.vec3("ground_albedo", p.ground_albedo, 0.0, albedo_max);
     r.text("environment_image", p.environment_image);
     r.number("environment_intensity", p.environment_intensity, 0.0, light_max);
 }

@@ -15,6 +15,7 @@
 #include <irid/render/camera.h>
 #include <irid/render/geometry.h>
 #include <irid/render/scene.h>
+#include <irid/render/sky.h>
 #include <irid/texture/noise.h>
 
 #include <memory>
@@ -87,6 +88,10 @@ public:
     /// The environment's radiance towards -direction (the sky or image, plus the sun's disc), as
     /// linear Rec. 709 RGB relative to D65.
     [[nodiscard]] Rgb3 environment(Vec3 direction) const noexcept;
+    /// The environment as the spectral path carries it: the Preetham sky's CIE daylight
+    /// spectrum (and the Preetham sun's spectrum in the sun's disc), or the RGB environment's
+    /// spectrum (SpectralBasis::from_rgb).
+    void environment_spectrum(Vec3 direction, SpectralCarrier& out) const noexcept;
     /// The diffuse lighting a surface with normal n at p receives, as RGB (the sun with its
     /// shadow, plus the mean sky): albedo × this is the radiance it reflects.
     [[nodiscard]] Rgb3 diffuse_light(Vec3 p, Vec3 n) const noexcept;
@@ -126,6 +131,7 @@ private:
     void build_soap_bubbles();
     void build_morpho();
     void build_morpho_wings(double half);
+    void build_preetham();
 
     const Scene& m_scene;
     Camera m_camera;
@@ -148,6 +154,22 @@ private:
     double m_sun_radiance = 0;
     Rgb3 m_ambient{};
     std::optional<io::Image> m_environment;
+    /// The sun's colour (RGB with Y = 1; white but for the Preetham sun) and, for the spectral
+    /// path, its spectrum relative to D65 with Y = 1.
+    Rgb3 m_sun_rgb{1, 1, 1};
+    SpectralCarrier m_sun_spectrum = SpectralCarrier::constant(1.0);
+    /// The Preetham sky: the model, the daylight basis S0, S1, S2 relative to D65 and their
+    /// XYZ (so both colour paths see the same sky), and the ground's radiance below the horizon.
+    std::optional<PreethamSky> m_sky;
+    std::array<SpectralCarrier, 3> m_daylight{};
+    std::array<Xyz, 3> m_daylight_xyz{};
+    Rgb3 m_ground_radiance{};
+    /// The Preetham sky's weights along a direction: the scale k and M1, M2 of
+    /// k (S0 + M1 S1 + M2 S2) / S_D65.
+    struct SkyWeights {
+        double k = 0, m1 = 0, m2 = 0;
+    };
+    [[nodiscard]] SkyWeights sky_weights(Vec3 d) const noexcept;
 
     // Films.
     std::optional<SingleFilm> m_film;

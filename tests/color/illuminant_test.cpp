@@ -151,3 +151,37 @@ TEST(WhitePoint, NamedWhitesAndCustomChromaticities) {
 
 }  // namespace
 }  // namespace irid
+
+namespace irid {
+namespace {
+
+// Without the rounding of M1 and M2, the daylight of a CCT's chromaticity is the CIE daylight
+// illuminant of that CCT to within what rounding to three decimals changes: |ΔM| <= 0.0005
+// times |S1| + |S2| (at most about 100 in the tables' range), and the basis' combination is
+// what daylight_from_chromaticity gives.
+TEST(Daylight, SpectrumFromChromaticityIsTheBasisWithUnroundedWeights) {
+    const auto basis = daylight_basis();
+    for (const double cct : {4000.0, 5003.0, 6504.0, 9300.0, 20000.0}) {
+        const Xy c = daylight_chromaticity(cct);
+        const DenseSpectrum a = daylight_from_chromaticity(c);
+        const DenseSpectrum b = daylight_illuminant(cct);
+        const DaylightWeights w = daylight_weights(c);
+        for (int i = 0; i < dense_sample_count; ++i) {
+            const double bound = 0.0005 * (std::abs(basis[1][i]) + std::abs(basis[2][i])) + 1e-9;
+            EXPECT_NEAR(a[i], b[i], bound) << cct << " K at " << lambda_min_nm + i << " nm";
+            EXPECT_NEAR(a[i], basis[0][i] + w.m1 * basis[1][i] + w.m2 * basis[2][i], 1e-9);
+        }
+        // And its chromaticity is the one asked for.
+        const Xyz xyz = emission_to_xyz_relative(a);
+        EXPECT_NEAR(xyz.X / (xyz.X + xyz.Y + xyz.Z), c.x, 1e-3) << cct;
+        EXPECT_NEAR(xyz.Y / (xyz.X + xyz.Y + xyz.Z), c.y, 1e-3) << cct;
+    }
+    // S0 is 100 at 560 nm (its normalisation), S1 and S2 near 0 there.
+    EXPECT_NEAR(basis[0][560 - lambda_min_nm], 100.0, 1e-9);
+    // Far from the daylight locus the weights' denominator vanishes: refused.
+    EXPECT_THROW((void)daylight_weights({0.6, 0.2}), Error);
+    EXPECT_THROW((void)daylight_from_chromaticity({std::nan(""), 0.3}), Error);
+}
+
+}  // namespace
+}  // namespace irid

@@ -30,10 +30,58 @@ def test_images_and_stats(oil):
     assert s["clip"] == "smits" and s["space"] == "srgb"
 
 
-def test_display_is_the_clipped_linear(oil):
-    # display = the sRGB encoding of the smits clip of the linear image (render.h's pipeline).
-    expect = irid.convert(irid.clip(oil.linear.astype(np.float64), "smits"), "srgb-linear", "srgb")
+def rolloff(y, knee):
+    """The default view's highlight roll-off (docs/RENDER.md): identity up to the knee,
+    knee + (1 - knee) u / (1 + u) with u = (y - knee) / (1 - knee) above it."""
+    u = np.maximum(y - knee, 0) / (1 - knee)
+    return np.where(y > knee, knee + (1 - knee) * u / (1 + u), y)
+
+
+def test_display_is_the_clipped_linear():
+    # With render.view = "thesis": display = the sRGB encoding of the smits clip of the linear
+    # image (the thesis' path, render.h).
+    r = irid.render("oil-slick", set={"render.view": "thesis"}, **SMALL)
+    assert r.stats["view"] == "thesis"
+    expect = irid.convert(irid.clip(r.linear.astype(np.float64), "smits"), "srgb-linear", "srgb")
+    np.testing.assert_allclose(r.display, expect, atol=2e-6)
+
+
+def test_default_view_rolls_the_highlights_off(oil):
+    # The default view scales each pixel by f(Y)/Y (Y from xyz) before the same clip.
+    assert oil.stats["view"] == "rolloff"
+    y = oil.xyz[..., 1].astype(np.float64)
+    scale = np.where(y > 0.4, rolloff(y, 0.4) / np.maximum(y, 1e-30), 1.0)[..., None]
+    expect = irid.convert(irid.clip(oil.linear.astype(np.float64) * scale, "smits"), "srgb-linear", "srgb")
     np.testing.assert_allclose(oil.display, expect, atol=2e-6)
+
+
+def test_view_and_sky_from_set_and_the_command_line(irid_cli, tmp_path):
+    # Over-exposed 20×, most of the image is above white: its display luminance is the curve's,
+    # below white (smits keeps luminance), not clipped.
+    knee = irid.render("oil-slick", set={"render.rolloff_knee": 0.2, "render.exposure": 18}, **SMALL)
+    y = knee.xyz[..., 1].astype(np.float64)
+    bright = y > 2
+    assert bright.mean() > 0.5
+    assert (knee.display[bright] < 254.5 / 255).any(axis=-1).all()
+    shown = irid.convert(knee.display.astype(np.float64), "srgb", "srgb-linear")
+    lum = shown @ np.array([0.2126, 0.7152, 0.0722])
+    np.testing.assert_allclose(lum[bright], rolloff(y[bright], 0.2), atol=2e-4)
+    gradient = irid.render("oil-slick", set={"light.sky": "gradient"}, **SMALL)
+    hazy = irid.render("oil-slick", set={"light.turbidity": 8, "light.sky_scale": 0.1}, **SMALL)
+    default = irid.render("oil-slick", **SMALL)
+    assert not np.array_equal(gradient.linear, default.linear)
+    assert not np.array_equal(hazy.linear, default.linear)
+    png = tmp_path / "thesis.png"
+    subprocess.run([irid_cli, "render", "oil-slick", "--width", "32", "--height", "24", "--spp", "1",
+                    "--set", "render.view=thesis", "--set", "light.turbidity=8", "-q", "-o", str(png)],
+                   check=True, capture_output=True)
+    stored, _ = irid.read_image(png)
+    same = irid.render("oil-slick", set={"render.view": "thesis", "light.turbidity": 8}, **SMALL)
+    np.testing.assert_array_equal(np.round(stored * 255), np.round(same.display * 255))
+    bad = subprocess.run([irid_cli, "render", "oil-slick", "--width", "8", "--height", "6", "--spp", "1",
+                          "--set", "light.turbidity=12", "-q", "-o", str(tmp_path / "x.png")],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and "'light.turbidity' is 12; allowed: [2, 10]" in bad.stderr
 
 
 def test_same_as_the_command_line(oil, irid_cli, tmp_path):
@@ -65,7 +113,7 @@ def test_set_and_sizes():
     assert r.stats["width"] == 40
     seeded = irid.render("oil-slick", seed=7, **SMALL)
     assert irid.render("oil-slick", seed=7, **SMALL).linear.tobytes() == seeded.linear.tobytes()
-    clipped = irid.render("oil-slick", clip="clamp", **SMALL)
+    clipped = irid.render("oil-slick", clip="clamp", set={"render.view": "thesis"}, **SMALL)
     np.testing.assert_allclose(clipped.display, irid.convert(np.clip(clipped.linear.astype(np.float64), 0, 1),
                                                              "srgb-linear", "srgb"), atol=2e-6)
 
@@ -86,6 +134,9 @@ def test_morpho_renders():
     (dict(scene="oil-slick", set={"oil.k1": "many"}), ValueError),
     (dict(scene="oil-slick", set={"oil.no_such_key": 1}), ValueError),
     (dict(scene="oil-slick", set={"oil.k1": float("nan")}), ValueError),
+    (dict(scene="oil-slick", set={"render.view": "filmic"}), ValueError),
+    (dict(scene="oil-slick", set={"light.sky": "hosek"}), ValueError),
+    (dict(scene="oil-slick", set={"light.sun_direction": [0, -1, 0]}), ValueError),
     (dict(scene={"scene": "oil-slick", "image": {"width": -3}}), ValueError),
     (dict(scene="oil-slick", threads=-1), ValueError),
 ])

@@ -55,7 +55,7 @@ TEST(Render, LosslessBubblesInAUniformWhiteWorldAreInvisible) {
                 "soap-bubbles",
                 small(40, 30, 1) + std::vector<std::string>{
                                        "render.path=" + path, "render.optics=" + optics,
-                                       "light.sun_intensity=0", "light.sky_zenith=[1,1,1]",
+                                       "light.sky=gradient", "light.sun_intensity=0", "light.sky_zenith=[1,1,1]",
                                        "light.sky_horizon=[1,1,1]", "light.ground=[1,1,1]",
                                        "soap.floor_albedo=[1,1,1]", "soap.floor_albedo_alt=[1,1,1]",
                                        "render.max_depth=32"});
@@ -91,7 +91,7 @@ TEST(Render, FlatFilmSeenFromAboveHasTheExactFilmColour) {
                         "oil.k1=0", "oil.min_thickness_nm=0",
                         "oil.max_thickness_nm=" + std::to_string(t), "pavement.bump_height=0",
                         "pavement.fine_height=0", "pavement.albedo=[0,0,0]",
-                        "light.sun_intensity=0", "light.sky_zenith=[1,1,1]",
+                        "light.sky=gradient", "light.sun_intensity=0", "light.sky_zenith=[1,1,1]",
                         "light.sky_horizon=[1,1,1]", "camera.eye=[0,5,0]",
                         "camera.look_at=[0,0,0]", "camera.up=[0,0,-1]", "camera.fov_deg=2"});
             for (std::size_t i = 0; i < r.xyz.pixel_count(); ++i) {
@@ -121,7 +121,7 @@ Lab mean_lab(const io::Image& xyz) {
 TEST(Render, TheMorphoWingIsSaturatedBlueTurningVioletWithAngle) {
     const auto patch = [](const std::string& eye) {
         return render_with("morpho", small(8, 8, 1) + std::vector<std::string>{
-                                         "light.sun_intensity=0", "light.sky_zenith=[1,1,1]",
+                                         "light.sky=gradient", "light.sun_intensity=0", "light.sky_zenith=[1,1,1]",
                                          "light.sky_horizon=[1,1,1]", "light.ground=[1,1,1]",
                                          "morpho.bump_height=0", "camera.eye=" + eye,
                                          "camera.look_at=[0.944,0.287,-0.18]", "camera.fov_deg=1"});

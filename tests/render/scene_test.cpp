@@ -48,6 +48,10 @@ TEST(Scene, BuiltinScenesCarryTheValuesOfTheirFiles) {
         EXPECT_DOUBLE_EQ(s.camera.fov_deg, j["camera"]["fov_deg"].get<double>());
         EXPECT_DOUBLE_EQ(s.light.sun_intensity, j["light"]["sun_intensity"].get<double>());
         EXPECT_EQ(s.render.clip, j["render"]["clip"].get<std::string>());
+        EXPECT_DOUBLE_EQ(s.render.rolloff_knee, j["render"]["rolloff_knee"].get<double>());
+        EXPECT_DOUBLE_EQ(s.light.turbidity, j["light"]["turbidity"].get<double>());
+        EXPECT_EQ(s.light.sky == SkyModel::preetham ? "preetham" : "gradient",
+                  j["light"]["sky"].get<std::string>());
         if (name == "oil-slick") {
             EXPECT_DOUBLE_EQ(s.oil.max_thickness_nm, j["oil"]["max_thickness_nm"].get<double>());
         }
@@ -132,6 +136,29 @@ TEST(Scene, ValuesTheRendererCannotUseAreRefusedWhenTheSceneIsRead) {
                     "is -2; allowed: (0, 10000]");
     EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"image.width=18446744073709551615"}); }),
                     "is 18446744073709551615; allowed: [1, 16384]");
+}
+
+TEST(Scene, ViewAndSkyKeysAreCheckedWhenTheSceneIsRead) {
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("oil-slick", {"render.view=filmic"}); }),
+                    "'render.view' is \"filmic\"; allowed: rolloff, thesis");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("oil-slick", {"render.rolloff_knee=1"}); }),
+                    "'render.rolloff_knee' is 1; allowed: [0, 0.95]");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("oil-slick", {"light.sky=hosek"}); }),
+                    "'light.sky' is \"hosek\"; allowed: gradient, preetham");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("soap-bubbles", {"light.turbidity=1"}); }),
+                    "'light.turbidity' is 1; allowed: [2, 10]");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("soap-bubbles", {"light.sky_scale=0"}); }),
+                    "'light.sky_scale' is 0; allowed: (0, 100]");
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"light.ground_albedo=[0,2,0]"}); }),
+                    "'light.ground_albedo' is [0,2,0]");
+    // The Preetham sky needs the sun above the horizon; the gradient does not.
+    EXPECT_CONTAINS(error_of([] { (void)load_scene("morpho", {"light.sun_direction=[1,-0.2,0]"}); }),
+                    "with light.sky = preetham the sun must be above the horizon");
+    EXPECT_EQ(load_scene("morpho", {"light.sky=gradient", "light.sun_direction=[1,-0.2,0]"}).light.sky,
+              SkyModel::gradient);
+    const Scene s = load_scene("oil-slick", {"render.view=thesis", "light.turbidity=6.5"});
+    EXPECT_EQ(s.render.view, ViewTransform::thesis);
+    EXPECT_EQ(s.light.turbidity, 6.5);
 }
 
 TEST(Scene, SampleCountsBeyondTheBufferLimitAreRefused) {

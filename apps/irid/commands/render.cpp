@@ -5,7 +5,8 @@
 //
 // SCENE is a built-in name (oil-slick, soap-bubbles, morpho) or a JSON file (scenes/*.json show
 // every key). OUT's extension picks PNG, TIFF or EXR (default: SCENE's name + .png); an EXR OUT
-// holds the clipped linear values, --linear the unclipped ones. The files appear only when
+// holds the displayed values decoded to linear (after the view transform and the clip),
+// --linear the scene-referred ones (before both). The files appear only when
 // complete, both or neither; a failed run leaves existing files as they were. Exit 0 on success,
 // 1 for a bad scene file or failed I/O, 2 for bad options (including --set values the scene
 // refuses).
@@ -144,11 +145,12 @@ int run_render(const RenderCliOptions& o) {
     }
     // Every output says its space to other programs: an ICC profile or EXR chromaticities.
     tag_image(image, space, format);
-    image.description = fmt::format("irid render {} ({}×{}, {} spp, {} path, {} optics, clip {})",
+    image.description = fmt::format("irid render {} ({}×{}, {} spp, {} path, {} optics, view {}, clip {})",
                                      scene.source, scene.image.width, scene.image.height,
                                      scene.image.spp,
                                      render::color_path_name(scene.render.path),
                                      scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
+                                     scene.render.view == render::ViewTransform::thesis ? "thesis" : "rolloff",
                                      scene.render.clip);
     // Both files or neither: each is written whole under a temporary name beside its target,
     // and both are renamed into place only when both are complete.

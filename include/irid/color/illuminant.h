@@ -3,6 +3,7 @@
 #include <irid/color/spectrum.h>
 #include <irid/color/types.h>
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,20 @@ inline constexpr double planck_c1l_w_m2_per_sr = 1.191042972e-16;
 /// rounded to three decimals (CIE 015:2018 §4), linear between the 5 nm values.
 /// Throws irid::Error unless 4000 K ≤ cct_k ≤ 25000 K.
 [[nodiscard]] DenseSpectrum daylight_illuminant(double cct_k);
+/// The CIE daylight basis S0, S1, S2 (CIE 015:2018 §4) on the 1 nm grid, linear between
+/// the 5 nm values.
+[[nodiscard]] std::array<DenseSpectrum, 3> daylight_basis();
+/// The weights M1, M2 of the daylight basis for a chromaticity (CIE 015:2018 §4, not rounded).
+/// Meant for chromaticities near the daylight locus (skies). Throws irid::Error for a
+/// non-finite chromaticity or one where the formula's denominator 0.0241 + 0.2562 x − 0.7341 y
+/// is not below −0.01 (far from daylight; about −0.14 on the locus).
+struct DaylightWeights {
+    double m1 = 0, m2 = 0;
+};
+[[nodiscard]] DaylightWeights daylight_weights(Xy chromaticity);
+/// The CIE daylight spectrum S0 + M1 S1 + M2 S2 of a chromaticity (daylight_weights), S0's
+/// scale. Near the daylight locus its chromaticity is the one asked for within about 1e-3.
+[[nodiscard]] DenseSpectrum daylight_from_chromaticity(Xy chromaticity);
 
 /// Spectral radiance of a Planckian radiator [W·sr⁻¹·m⁻²·nm⁻¹] at lambda_nm.
 [[nodiscard]] double planck_radiance(double lambda_nm, double temperature_k) noexcept;

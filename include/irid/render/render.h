@@ -4,7 +4,9 @@
 // stratified samples are traced (camera → surfaces → Fresnel-weighted reflection and
 // transmission to a bounded depth → the environment and the sun), each sample gives XYZ, and a
 // Gaussian reconstruction filter gathers the samples around each pixel. Then
-//   XYZ → linear RGB of the destination space (× exposure) → the gamut clip → encoded output.
+//   XYZ (× exposure) → linear RGB of the destination space → the view transform (render.view:
+//   the highlight roll-off on luminance, or nothing for "thesis") → the gamut clip → encoded
+//   output.
 //
 // Determinism: every random number is a hash of (seed, pixel, sample, dimension), and every
 // pixel is computed from its own samples in a fixed order, so the image is bit-identical for
@@ -30,16 +32,19 @@ struct RenderStats {
     /// Camera rays, and all rays (camera, reflected, transmitted, shadow).
     std::uint64_t camera_rays = 0;
     std::uint64_t rays = 0;
-    /// Pixels whose linear colour was outside the destination gamut before the clip.
+    /// Pixels whose linear colour (RenderResult::linear) was outside the destination gamut.
     std::uint64_t out_of_gamut_pixels = 0;
     double seconds = 0;
     double table_seconds = 0;  // building the colour tables (included in seconds)
 };
 
 struct RenderResult {
-    /// Linear RGB of the destination space, exposure applied, before the clip ("R", "G", "B").
+    /// Linear RGB of the destination space, exposure applied, scene-referred: before the view
+    /// transform and the clip ("R", "G", "B").
     io::Image linear;
-    /// The clipped, encoded image (the destination space's transfer function), in [0, 1].
+    /// The displayed image: `linear` through the view transform (the roll-off, unless
+    /// render.view = thesis) and the clip, encoded with the destination space's transfer
+    /// function, in [0, 1].
     io::Image display;
     /// CIE XYZ per pixel (relative, the D65 white at Y = 1, exposure applied), for comparisons.
     io::Image xyz;

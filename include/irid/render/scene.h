@@ -46,6 +46,19 @@ enum class OpticsModel { thesis, exact };
 /// pixel covers (the footprint from the neighbouring pixels' rays).
 enum class FilmAntialias { none, footprint };
 
+/// From the scene's light to the display (docs/RENDER.md, "From scene light to a display"):
+/// - rolloff: exposure → the highlight roll-off on luminance (irid/gamut/tone.h: the identity
+///   up to `rolloff_knee`, Reinhard et al. 2002's L/(1 + L) above it, tending to white) → the
+///   gamut method `clip` → the encoding;
+/// - thesis: exposure → the gamut method → the encoding, as the thesis does (every luminance
+///   above the display's white is clipped to it).
+enum class ViewTransform { rolloff, thesis };
+
+/// The environment's sky when no environment image is given: the two-colour gradient, or the
+/// Preetham–Shirley–Smits daylight sky (irid/render/sky.h) with the sun's colour from the same
+/// paper.
+enum class SkyModel { gradient, preetham };
+
 struct ImageParams {
     int width = 1024;
     int height = 768;
@@ -70,19 +83,34 @@ struct RenderParams {
     /// The destination RGB space and the gamut clip (names as `irid clip`).
     std::string space = "srgb";
     std::string clip = "smits";
-    /// Exposure: the linear image is scaled by this before the clip.
+    /// Exposure: the linear image is scaled by this before the view transform.
     double exposure = 1.0;
+    /// The view transform and the roll-off's knee (the scene luminance, white = 1, up to which
+    /// the roll-off is the identity).
+    ViewTransform view = ViewTransform::rolloff;
+    double rolloff_knee = 0.4;
     /// Gaussian reconstruction filter: radius in pixels and standard deviation in pixels.
     double filter_radius = 1.5;
     double filter_sigma = 0.5;
 };
 
 /// The light: a sun (a directional light with a visible disc) and an environment, either a
-/// procedural sky over a ground or a latitude–longitude image.
+/// procedural sky over a ground (the gradient or the Preetham sky) or a latitude–longitude image.
 struct LightParams {
+    /// The sky: "gradient" (sky_zenith, sky_horizon and ground below) or "preetham" (the
+    /// analytic daylight sky of the sun's elevation and `turbidity`, its luminance in kcd/m²
+    /// times sky_scale and environment_intensity as Y, the D65 white's luminance being 1; the
+    /// sun's colour from the same model; below the horizon a diffuse ground of albedo
+    /// `ground_albedo` lit by the sun and the sky).
+    SkyModel sky = SkyModel::gradient;
+    /// The Preetham sky's turbidity (2 very clear, 10 hazy) and its scale [1 / (kcd/m²)].
+    double turbidity = 3.0;
+    double sky_scale = 0.1;
+    RgbParam ground_albedo{0.2, 0.2, 0.2};
     /// Direction towards the sun, any non-zero length (the renderer normalises it).
     Vec3Param sun_direction{-0.4, 0.8, 0.5};
-    /// Irradiance of the sun on a surface facing it, as a multiple of the D65 white.
+    /// Irradiance of the sun on a surface facing it, as a multiple of the D65 white (of its
+    /// luminance, for the Preetham sun's colour).
     double sun_intensity = 2.5;
     /// Angular radius of the sun's disc seen in reflections [deg].
     double sun_radius_deg = 1.5;
