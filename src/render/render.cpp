@@ -69,7 +69,14 @@ struct TableOps {
     using Carrier = RgbCarrier;
     const World& world;
     [[nodiscard]] Carrier rgb(const Rgb3& c) const noexcept { return {c}; }
-    [[nodiscard]] Carrier environment(Vec3 d) const noexcept { return {world.environment(d)}; }
+    [[nodiscard]] Carrier environment(Vec3 d, bool with_sun = true) const noexcept {
+        return {world.environment(d, with_sun)};
+    }
+    [[nodiscard]] Carrier sun_glint(Vec3 r, double sigma) const noexcept {
+        const double w = world.sun_lobe(r, sigma);
+        const Rgb3 c = world.sun_rgb();
+        return {{c[0] * w, c[1] * w, c[2] * w}};
+    }
     [[nodiscard]] Carrier film(const ThicknessSample& t, double cos_theta) const noexcept {
         return {world.film_table().at(t.t_nm, t.footprint_nm, cos_theta)};
     }
@@ -90,9 +97,14 @@ struct SpectralOps {
     using Carrier = SpectralCarrier;
     const World& world;
     [[nodiscard]] Carrier rgb(const Rgb3& c) const noexcept { return world.basis().from_rgb(c); }
-    [[nodiscard]] Carrier environment(Vec3 d) const noexcept {
+    [[nodiscard]] Carrier environment(Vec3 d, bool with_sun = true) const noexcept {
         Carrier s;
-        world.environment_spectrum(d, s);
+        world.environment_spectrum(d, s, with_sun);
+        return s;
+    }
+    [[nodiscard]] Carrier sun_glint(Vec3 r, double sigma) const noexcept {
+        Carrier s;
+        world.sun_glint_spectrum(r, sigma, s);
         return s;
     }
     [[nodiscard]] Carrier film(const ThicknessSample& t, double cos_theta) const {
@@ -178,7 +190,10 @@ private:
         if (r.y <= 0) r = reflect(d, n);
         const double cos_theta = std::clamp(-dot(d, nb), 0.0, 1.0);
         ++rays;  // the reflected ray, which meets only the environment above the plane
-        const C env = m_ops.environment(r);
+        // A rough wet surface spreads the sun's disc into a lobe about the mirror direction.
+        const double roughness = m_scene.pavement.roughness_deg * std::numbers::pi / 180.0;
+        const C env = roughness > 0.0 ? m_ops.environment(r, false) + m_ops.sun_glint(r, roughness)
+                                      : m_ops.environment(r);
         const C diffuse = m_ops.rgb(scale(albedo, m_world.diffuse_light(p, nb)));
         const double t = m_world.oil_thickness_nm(p);
         if (t > 0) {

@@ -298,13 +298,14 @@ void read_oil(const Json& j, const std::string& source, OilParams& p) {
 void read_pavement(const Json& j, const std::string& source, PavementParams& p) {
     ObjectReader r(j, "pavement", source,
                    {"albedo", "bump_frequency", "bump_height", "fine_frequency", "fine_height",
-                    "albedo_variation"});
+                    "albedo_variation", "roughness_deg"});
     r.vec3("albedo", p.albedo, 0.0, albedo_max);
     r.number("bump_frequency", p.bump_frequency, 0.0, 1.0e4);
     r.number("bump_height", p.bump_height, 0.0, 1.0);
     r.number("fine_frequency", p.fine_frequency, 0.0, 1.0e5);
     r.number("fine_height", p.fine_height, 0.0, 1.0);
     r.number("albedo_variation", p.albedo_variation, 0.0, 1.0);
+    r.number("roughness_deg", p.roughness_deg, 0.0, 20.0);
 }
 
 void read_bubble(const Json& j, const std::string& path, const std::string& source,

@@ -155,9 +155,9 @@ World::SkyWeights World::sky_weights(Vec3 d) const noexcept {
     return {y > 0 ? target / y : 0.0, w.m1, w.m2};
 }
 
-void World::environment_spectrum(Vec3 d, SpectralCarrier& out) const noexcept {
+void World::environment_spectrum(Vec3 d, SpectralCarrier& out, bool with_sun) const noexcept {
     if (!m_sky) {
-        out = m_basis->from_rgb(environment(d));
+        out = m_basis->from_rgb(environment(d, with_sun));
         return;
     }
     if (d.y >= 0) {
@@ -167,7 +167,22 @@ void World::environment_spectrum(Vec3 d, SpectralCarrier& out) const noexcept {
     } else {
         out = m_basis->from_rgb(m_ground_radiance);
     }
-    if (dot(d, m_sun) >= m_cos_sun_radius) out += m_sun_spectrum * m_sun_radiance;
+    if (with_sun && dot(d, m_sun) >= m_cos_sun_radius) out += m_sun_spectrum * m_sun_radiance;
+}
+
+double World::sun_lobe(Vec3 r, double sigma) const noexcept {
+    const double s = std::acos(std::clamp(m_cos_sun_radius, -1.0, 1.0));
+    const double var = sigma * sigma + 0.25 * s * s;
+    // The angle from the sun by atan2 of |r × sun| and r · sun: accurate near 0.
+    const double delta = std::atan2(length(cross(r, m_sun)), dot(r, m_sun));
+    const double solid_angle = 2.0 * pi * (1.0 - m_cos_sun_radius);
+    return m_sun_radiance * solid_angle * std::exp(-0.5 * delta * delta / var) / (2.0 * pi * var);
+}
+
+void World::sun_glint_spectrum(Vec3 r, double sigma, SpectralCarrier& out) const noexcept {
+    const double w = sun_lobe(r, sigma);
+    if (m_sky) out = m_sun_spectrum * w;
+    else out = m_basis->from_rgb({m_sun_rgb[0] * w, m_sun_rgb[1] * w, m_sun_rgb[2] * w});
 }
 
 void World::build_oil_slick() {
@@ -638,7 +653,7 @@ bool World::sun_blocked(Vec3 p) const noexcept {
 
 // --- Light -----------------------------------------------------------------------------------
 
-Rgb3 World::environment(Vec3 d) const noexcept {
+Rgb3 World::environment(Vec3 d, bool with_sun) const noexcept {
     const LightParams& l = m_scene.light;
     Rgb3 e;
     if (m_sky) {
@@ -675,7 +690,7 @@ Rgb3 World::environment(Vec3 d) const noexcept {
     }
     if (!m_sky)
         for (double& v : e) v *= l.environment_intensity;
-    if (dot(d, m_sun) >= m_cos_sun_radius)
+    if (with_sun && dot(d, m_sun) >= m_cos_sun_radius)
         for (int c = 0; c < 3; ++c) e[c] += m_sun_radiance * m_sun_rgb[c];
     return e;
 }

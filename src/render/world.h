@@ -87,11 +87,20 @@ public:
 
     /// The environment's radiance towards -direction (the sky or image, plus the sun's disc), as
     /// linear Rec. 709 RGB relative to D65.
-    [[nodiscard]] Rgb3 environment(Vec3 direction) const noexcept;
+    [[nodiscard]] Rgb3 environment(Vec3 direction, bool with_sun = true) const noexcept;
+    /// The sun reflected by a rough mirror whose mirror direction is r: the disc convolved with
+    /// a normalised Gaussian lobe of angular deviation sigma [rad] (the disc taken as a Gaussian
+    /// of the same variance, s²/4 per axis, so the total s_eff² = sigma² + s²/4): the sun's
+    /// radiance × its solid angle × exp(−δ²/2s_eff²) / (2π s_eff²), δ the angle between r and
+    /// the sun. The glint's colour is sun_rgb() (or the sun's spectrum) times this.
+    [[nodiscard]] double sun_lobe(Vec3 r, double sigma) const noexcept;
+    [[nodiscard]] Rgb3 sun_rgb() const noexcept { return m_sun_rgb; }
     /// The environment as the spectral path carries it: the Preetham sky's CIE daylight
     /// spectrum (and the Preetham sun's spectrum in the sun's disc), or the RGB environment's
     /// spectrum (SpectralBasis::from_rgb).
-    void environment_spectrum(Vec3 direction, SpectralCarrier& out) const noexcept;
+    void environment_spectrum(Vec3 direction, SpectralCarrier& out, bool with_sun = true) const noexcept;
+    /// sun_lobe × the sun's spectrum (the spectral path's glint).
+    void sun_glint_spectrum(Vec3 r, double sigma, SpectralCarrier& out) const noexcept;
     /// The diffuse lighting a surface with normal n at p receives, as RGB (the sun with its
     /// shadow, plus the mean sky): albedo × this is the radiance it reflects.
     [[nodiscard]] Rgb3 diffuse_light(Vec3 p, Vec3 n) const noexcept;
