@@ -49,7 +49,7 @@ const SceneInfo scene_infos[] = {
      "55 nm, n = 1.56, between air gaps blended over 100–140 nm, by the transfer matrix), indexed "
      "by the viewing angle, over a melanin base, with dark margins and veins, on slightly bumpy "
      "wings. Seen from above: the saturated structural blue of real wings."},
-    {"morpho", "Figure 9", "The Morpho, seen 45° off its wings",
+    {"morpho", "Figure 9", "The Morpho from a low camera",
      "The same butterfly from a low camera: the wings now reflect at larger angles and their blue "
      "shifts towards violet, and at grazing angles to a pale lilac, as the multilayer's "
      "reflectance peak moves to shorter wavelengths.",
