@@ -30,9 +30,16 @@ FigureResult draw_renderer_films(const FigureRequest& request) {
         rows.push_back({"1.5 on " + metal,
                         {air, Material::constant("film", 1.5), *find_material(metal)}});
     }
-    const std::vector<std::optional<RendererFilmModel>> models{
-        std::nullopt, RendererFilmModel::gltf, RendererFilmModel::belcour, RendererFilmModel::cycles};
-    const std::vector<std::string> titles{"thesis", "glTF", "Belcour–Barla", "Cycles"};
+    // The columns: the thesis' model, the three renderers', and irid's Fourier film colour.
+    enum class Column { thesis, gltf, belcour, cycles, fourier };
+    const std::vector<Column> models{Column::thesis, Column::gltf, Column::belcour, Column::cycles,
+                                     Column::fourier};
+    const std::vector<std::string> titles{"thesis", "glTF", "Belcour–Barla", "Cycles", "irid Fourier"};
+    const auto renderer_of = [](Column c) {
+        return c == Column::gltf ? RendererFilmModel::gltf
+                                 : (c == Column::belcour ? RendererFilmModel::belcour : RendererFilmModel::cycles);
+    };
+    const std::vector<std::string> keys{"thesis", "gltf", "belcour", "cycles", "fourier"};
 
     ErrorStudyOptions grid;
     grid.max_thickness_nm = 2000.0;
@@ -58,17 +65,18 @@ FigureResult draw_renderer_films(const FigureRequest& request) {
             const Rect area{page.x + cell_w * static_cast<double>(m), page.y + cell_h * static_cast<double>(r),
                             cell_w, cell_h};
             Axis x{.min = 0.0, .max = grid.max_thickness_nm, .title = "thickness (nm)"};
-            Axis y{.min = 0.0, .max = grid.max_angle_deg, .title = m == 0 ? "angle (degrees)" : ""};
+            // The film names its row on the first column's axis; the model titles each map.
+            Axis y{.min = 0.0, .max = grid.max_angle_deg, .title = m == 0 ? rows[r].label + ": angle (degrees)" : ""};
             x.grid = false;
             y.grid = false;
             x.max_ticks = 4;
             y.max_ticks = 5;
-            Plot plot(canvas, area, x, y, titles[m] + " · " + rows[r].label, plot_options);
-            std::string key = std::string(models[m] ? renderer_film_model_name(*models[m]) : "thesis");
+            Plot plot(canvas, area, x, y, titles[m], plot_options);
+            std::string key = keys[m];
             key += ", ";
             key += rows[r].label;
             const bool metal_row = !rows[r].film.substrate.is_lossless();
-            if (!models[m] && metal_row) {
+            if (models[m] == Column::thesis && metal_row) {
                 plot.text({0.5 * grid.max_thickness_nm, 0.5 * grid.max_angle_deg},
                           "n/a (the metal absorbs)",
                           {.size = 9.0 * s, .halign = HAlign::center, .valign = VAlign::middle});
@@ -76,14 +84,22 @@ FigureResult draw_renderer_films(const FigureRequest& request) {
                 result.measurements.push_back({key, "n/a"});
                 continue;
             }
-            const FilmErrorMap map = models[m] ? renderer_film_error_map(*models[m], rows[r].film, grid)
-                                               : thesis_film_error_map(rows[r].film, grid);
+            const FilmErrorMap map =
+                models[m] == Column::thesis    ? thesis_film_error_map(rows[r].film, grid)
+                : models[m] == Column::fourier ? fourier_film_error_map(rows[r].film, grid)
+                                               : renderer_film_error_map(renderer_of(models[m]), rows[r].film, grid);
             std::vector<Color> cells;
             cells.reserve(map.delta_e.size());
             for (const double d : map.delta_e) cells.push_back(sequential_color(std::min(d / top, 1.0)));
             plot.raster(-0.5 * grid.thickness_step_nm, grid.max_thickness_nm + 0.5 * grid.thickness_step_nm,
                         -0.5 * grid.angle_step_deg, grid.max_angle_deg + 0.5 * grid.angle_step_deg,
                         static_cast<int>(map.thickness_count), static_cast<int>(map.angle_count), cells);
+            if (models[m] == Column::fourier && metal_row) {
+                // FourierFilm::uses_sum: the metal's tabulated index is summed at 1 nm.
+                plot.text({0.5 * grid.max_thickness_nm, 0.5 * grid.max_angle_deg}, "summed at 1 nm (metal table)",
+                          {.size = 8.0 * s, .color = Color{0.85, 0.85, 0.85}, .halign = HAlign::center,
+                           .valign = VAlign::middle});
+            }
             plot.finish(LegendPosition::none);
             last_frame = plot.frame();
             const FilmErrorRegions e = summarize_film_error(key, map);
@@ -105,7 +121,9 @@ FigureResult draw_renderer_films(const FigureRequest& request) {
         "incidence. glTF: Schlick faces, phases 0/π, m ≤ 2, Gaussian CMF fits. Belcour & Barla: "
         "exact Fresnel, m ≤ 3, the same fits. Cycles: exact Fresnel, m ≤ 3, the FFT table of the "
         "CIE 1931 functions. Metals take one n + ik per RGB channel (at the Rec.709 primaries' "
-        "dominant wavelengths); glTF takes the metal's exact F0 colour. Options: metal=" + metal + ".";
+        "dominant wavelengths); glTF takes the metal's exact F0 colour. irid Fourier: the exact Airy "
+        "series summed to convergence against the transform of the tabulated CIE functions "
+        "(irid/optics/fourier_film.h; a metal's table is summed at 1 nm). Options: metal=" + metal + ".";
     return result;
 }
 

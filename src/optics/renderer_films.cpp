@@ -2,6 +2,7 @@
 #include <irid/color/observer.h>
 #include <irid/color/rgb.h>
 #include <irid/error.h>
+#include <irid/optics/fourier_film.h>
 #include <irid/optics/renderer_films.h>
 
 #include <algorithm>
@@ -480,6 +481,14 @@ FilmErrorMap thesis_film_error_map(const SingleFilm& film, const ErrorStudyOptio
         return colorimeter.xyz_of([&](double lambda) {
             return thesis_single_film_reflectance(film, t, lambda, theta, k, std::nullopt);
         });
+    });
+}
+
+FilmErrorMap fourier_film_error_map(const SingleFilm& film, const ErrorStudyOptions& options) {
+    validate_renderer_error_study(options);
+    const FourierFilm fourier(film, fourier_colorimeter_for(film, Colorimeter()));
+    return error_map(film, options, [&](double t, double theta, const Colorimeter&) {
+        return fourier.xyz(t, std::cos(theta));
     });
 }
 

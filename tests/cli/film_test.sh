@@ -330,6 +330,14 @@ run film --layer 1.33:380 --substrate 1.5 --angle 35 --color
 IFS=, read -r SUM_X SUM_Y SUM_Z _ < <(sed -n 2p "$TMP/out")
 run film --layer 1.33:380 --substrate 1.5 --angle 35 --color --integration fourier
 expect_rows "w[1] = $SUM_X; w[2] = $SUM_Y; w[3] = $SUM_Z" 1e-4 1
+# irid film-error --model fourier: the series against the 1 nm sum on one of the grid's films
+# (a constant-index film on Sellmeier water), its summary line's max within ΔE2000 0.1.
+run film-error --model fourier --film n1.2-on-water --thickness 0:2000:50 --angles 0:85:17
+RAN="$RAN (summary)"
+max=$(awk -F, '$1 == "fourier" && $2 == "n1.2-on-water" { print $6 }' "$TMP/out")
+if [[ $STATUS -eq 0 && -n $max ]] && awk -v m="$max" 'BEGIN { exit !(m < 0.1) }'; then pass; else fail "status 0, a summary max < 0.1" "$(outcome)"; fi
+run film-error --model fourier --K 2
+expect_usage_error "--K" "fourier"
 # What the series does not cover is refused, naming the option.
 run film --layer 1.33:380 --integration fourier
 expect_usage_error "--integration" "--color"

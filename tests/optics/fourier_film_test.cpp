@@ -5,9 +5,11 @@
 #include <irid/error.h>
 #include <irid/optics/fourier_film.h>
 #include <irid/optics/multilayer.h>
+#include <irid/optics/renderer_films.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -219,6 +221,22 @@ TEST(FourierFilm, PastTheFilmsCriticalAngleFallsBackToTheSum) {
         EXPECT_NEAR(a.Y, b.Y, 1e-12);
         EXPECT_NEAR(a.Z, b.Z, 1e-12);
     }
+}
+
+TEST(FourierFilm, TheErrorMapOfTheRenderersStudy) {
+    // The grid study's map (as `irid film-error --model fourier` prints it) over a coarse grid of
+    // one of its films: a constant-index film on dispersive water.
+    ErrorStudyOptions grid;
+    grid.max_thickness_nm = 2000.0;
+    grid.thickness_step_nm = 50.0;
+    grid.max_angle_deg = 85.0;
+    grid.angle_step_deg = 17.0;
+    const SingleFilm film{*find_material("air"), Material::constant("film", 1.2), *find_material("water")};
+    const FilmErrorMap map = fourier_film_error_map(film, grid);
+    ASSERT_EQ(map.delta_e.size(), 41u * 6u);
+    EXPECT_LT(*std::max_element(map.delta_e.begin(), map.delta_e.end()), 0.1);
+    const SingleFilm absorbing{*find_material("air"), Material::constant("dye", 1.5, 0.2), *find_material("water")};
+    EXPECT_THROW((void)fourier_film_error_map(absorbing, grid), Error);
 }
 
 TEST(FourierFilm, RefusesAbsorbingFilmsAndModelsItDoesNotCover) {

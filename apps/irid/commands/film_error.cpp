@@ -92,7 +92,7 @@ std::string region_report(const std::string& model, const FilmErrorRegions& f) {
 /// The grid study (or one of its films, or soap / oil-on-water) for any model, with the regions
 /// where it fails and a summary table at the end.
 int run_grid_study(const FilmErrorCommand& c, const std::optional<RendererFilmModel>& renderer,
-                   const ErrorStudyOptions& options) {
+                   bool fourier, const ErrorStudyOptions& options) {
     std::vector<StudyFilm> films;
     for (StudyFilm& f : renderer_study_films()) {
         if (c.film == "grid" || c.film == f.name) films.push_back(std::move(f));
@@ -109,7 +109,7 @@ int run_grid_study(const FilmErrorCommand& c, const std::optional<RendererFilmMo
         throw UsageError(fmt::format("--film '{}' is unknown; valid: {}", c.film, valid));
     }
     try {
-        const auto validate = renderer ? validate_renderer_error_study : validate_error_study;
+        const auto validate = renderer || fourier ? validate_renderer_error_study : validate_error_study;
         validate(options, static_cast<double>(films.size()), "--thickness " + c.thickness,
                  "--angles " + c.angles, "--film " + c.film);
     } catch (const Error& e) {
@@ -128,15 +128,16 @@ int run_grid_study(const FilmErrorCommand& c, const std::optional<RendererFilmMo
     }
     std::string table = "model,film,mean,median,p95,max,worst_thickness_nm,worst_angle_deg,percent_above_2,percent_above_5\n";
     for (const StudyFilm& f : films) {
-        if (!renderer && f.metal) {
+        if (!renderer && !fourier && f.metal) {
             out += fmt::format("== thesis: {} ==\nn/a: the thesis' closed forms take real indices and "
                                "gold absorbs\n\n",
                                f.name);
             table += fmt::format("thesis,{},n/a,n/a,n/a,n/a,n/a,n/a,n/a,n/a\n", f.name);
             continue;
         }
-        const FilmErrorMap map = renderer ? renderer_film_error_map(*renderer, f.film, options)
-                                          : thesis_film_error_map(f.film, options);
+        const FilmErrorMap map = renderer  ? renderer_film_error_map(*renderer, f.film, options)
+                                 : fourier ? fourier_film_error_map(f.film, options)
+                                           : thesis_film_error_map(f.film, options);
         const FilmErrorRegions regions = summarize_film_error(f.name, map);
         out += region_report(c.model, regions) + "\n";
         const ErrorStudyResult& r = regions.summary;
@@ -154,24 +155,27 @@ int run_film_error(const FilmErrorCommand& c) {
         return c.colour.command && c.colour.command->count(option) > 0;
     };
     std::optional<RendererFilmModel> renderer;
-    if (c.model != "thesis") {
+    const bool fourier = c.model == "fourier";
+    if (c.model != "thesis" && !fourier) {
         renderer = find_renderer_film_model(c.model);
         if (!renderer) {
-            throw UsageError("--model '" + c.model + "' is unknown; valid: thesis, gltf, belcour, cycles");
+            throw UsageError("--model '" + c.model +
+                             "' is unknown; valid: thesis, gltf, belcour, cycles, fourier");
         }
     }
-    const bool grid = renderer || (c.film != "soap" && c.film != "oil-on-water" && c.film != "all");
+    const bool other = renderer || fourier;
+    const bool grid = other || (c.film != "soap" && c.film != "oil-on-water" && c.film != "all");
     if (grid) {
-        if (renderer && given("--K")) throw UsageError("--K does not apply to --model " + c.model);
+        if (other && given("--K")) throw UsageError("--K does not apply to --model " + c.model);
         require_default_colorimeter(c.colour, false,
                                     "the grid study compares under D65 and CIE 1931 2° (the "
                                     "renderers' fixed sensitivities)");
         FilmErrorCommand g = c;
-        if (!given("--film") && renderer) g.film = "grid";
+        if (!given("--film") && other) g.film = "grid";
         if (!given("--thickness")) g.thickness = "0:2000:5";
         if (!given("--angles")) g.angles = "0:85:5";
         ErrorStudyOptions options = parse_options(g);
-        return run_grid_study(g, renderer, options);
+        return run_grid_study(g, renderer, fourier, options);
     }
     const Colorimeter colorimeter = parse_colorimeter(c.colour);
     ErrorStudyOptions options = parse_options(c);
@@ -213,12 +217,13 @@ void add_film_error_command(CLI::App& app, Runner& runner) {
     command->colour.command = cmd;
     cmd->add_option("--model", command->model,
                     "thesis (eq. 21/22), gltf (KHR_materials_iridescence), belcour (Belcour & Barla "
-                    "2017) or cycles (Blender Cycles)")
+                    "2017), cycles (Blender Cycles) or fourier (irid's exact Fourier film colour, "
+                    "--integration fourier)")
         ->capture_default_str();
     cmd->add_option("--film", command->film,
                     "soap, oil-on-water, all (the two), grid (film indices 1.2, 1.33, 1.5, 2 on air, "
-                    "water, glass, gold; the default for gltf, belcour, cycles) or one of the grid's "
-                    "films, e.g. n1.33-on-air")
+                    "water, glass, gold; the default for gltf, belcour, cycles, fourier) or one of the "
+                    "grid's films, e.g. n1.33-on-air")
         ->capture_default_str();
     cmd->add_option("--thickness", command->thickness, "0:END:STEP [nm] (the grid's default: 0:2000:5)")
         ->capture_default_str();

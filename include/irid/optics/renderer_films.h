@@ -193,6 +193,10 @@ void validate_renderer_error_study(const ErrorStudyOptions& options, double film
 /// The thesis' single film (eq. 21/22 with eq. 24, K as options.k or thesis_matched_k) against the
 /// exact film. Throws irid::Error as validate_error_study and check_thesis_single_film.
 [[nodiscard]] FilmErrorMap thesis_film_error_map(const SingleFilm& film, const ErrorStudyOptions& options);
+/// irid's Fourier film colour (irid/optics/fourier_film.h, its default transforms for the film)
+/// against the exact film. Throws irid::Error as validate_renderer_error_study, and for an
+/// absorbing ambient or film.
+[[nodiscard]] FilmErrorMap fourier_film_error_map(const SingleFilm& film, const ErrorStudyOptions& options);
 
 /// A map's statistics (mean, median, p95, max, where the max is, by angle and by 100 nm band)
 /// and where the model fails: the fraction of samples above ΔE2000 2 and 5, overall, per angle
