@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <tuple>
 #include <utility>
@@ -91,7 +92,6 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
     } else {
         const double spacing = (nu_high - nu_low) / (bands - 1);
         const double sigma = band_sigma_per_spacing * spacing;
-        m_slope_step = 0.5 * spacing;
         for (int i = 0; i < dense_sample_count; ++i) {
             double total = 0.0;
             for (int b = 0; b < bands; ++b) {
@@ -103,7 +103,7 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
             for (int b = 0; b < bands; ++b) share[b][i] /= total;
         }
     }
-    if (slopes && bands == 1) m_slope_step = 0.5 * (nu_high - nu_low);
+    const double half_spacing = bands == 1 ? 0.5 * (nu_high - nu_low) : 0.5 * (nu_high - nu_low) / (bands - 1);
     const DenseSpectrum* weights[3] = {&colorimeter.weight_x(), &colorimeter.weight_y(),
                                        &colorimeter.weight_z()};
     const double quiet_level = cut_tolerance * colorimeter.white().Y;
@@ -120,6 +120,9 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
             nu_y += std::abs(c[1][i]) * nu[i];
         }
         band.nu_c = y_sum > 0.0 ? nu_y / y_sum : 0.5 * (nu_low + nu_high);
+        if (slopes) {
+            band.delta = std::min({half_spacing, band.nu_c - 1.0 / lambda_max_nm, 1.0 / lambda_min_nm - band.nu_c});
+        }
         for (int i = 0; i < dense_sample_count; ++i) {
             band.white.X += c[0][i];
             band.white.Y += c[1][i];
@@ -127,6 +130,9 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
         }
         std::vector<std::array<double, 6>> v, v1, v2;
         std::tie(v, band.bound) = tabulate(nu, band.nu_c, c, step_nm, quiet_level, run_nodes, max_nodes);
+        for (std::size_t j = v.size() > run_nodes ? v.size() - run_nodes : 0; j < v.size(); ++j) {
+            for (int ch = 0; ch < 3; ++ch) band.floor = std::max(band.floor, std::hypot(v[j][2 * ch], v[j][2 * ch + 1]));
+        }
         const auto store = [&] {
             band.nodes = v.size();
             band.table.assign(band.nodes * stride(), 0.0);
@@ -149,12 +155,12 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
         }
         // The moments' values are about δ and δ² times smaller: so are their quiet levels.
         std::tie(v1, band.moment_bound) =
-            tabulate(nu, band.nu_c, c, step_nm, quiet_level * m_slope_step, run_nodes, max_nodes);
+            tabulate(nu, band.nu_c, c, step_nm, quiet_level * band.delta, run_nodes, max_nodes);
         for (int i = 0; i < dense_sample_count; ++i) {
             for (int ch = 0; ch < 3; ++ch) c[ch][i] *= nu[i] - band.nu_c;
         }
         std::tie(v2, band.second_moment_bound) = tabulate(
-            nu, band.nu_c, c, step_nm, quiet_level * m_slope_step * m_slope_step, run_nodes, max_nodes);
+            nu, band.nu_c, c, step_nm, quiet_level * band.delta * band.delta, run_nodes, max_nodes);
         store();
     }
 }
@@ -224,7 +230,6 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
     // differences over ±0.5 nm (the materials are smooth on that scale: fits, or tables linear
     // between samples at least 5 nm apart).
     const int bands = m_colorimeter->bands();
-    const double delta = m_colorimeter->slope_step();
     m_media.resize(bands);
     for (int b = 0; b < bands; ++b) {
         BandMedia& m = m_media[b];
@@ -235,6 +240,7 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
         m.dn0 = hi.n0 - lo.n0;
         m.dn1 = hi.n1 - lo.n1;
         if (m_colorimeter->slopes()) {
+            const double delta = m_colorimeter->slope_step(b);
             m.below = media_at(1.0 / (nu_c - delta));
             m.above = media_at(1.0 / (nu_c + delta));
         }
@@ -304,12 +310,17 @@ bool series_of(double n0, double n1, std::complex<double> n2, double cos_theta, 
 }  // namespace
 
 Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
+    // Outside the preconditions (a thickness that is not finite and >= 0, cos θ outside [0, 1]):
+    // NaN, never a colour that looks valid.
+    if (!(std::isfinite(thickness_nm) && thickness_nm >= 0.0 && cos_theta >= 0.0 && cos_theta <= 1.0)) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        return {nan, nan, nan};
+    }
     if (m_sum_only) return exact_sum(thickness_nm, cos_theta);
     const FourierColorimeter& fc = *m_colorimeter;
     const double d = thickness_nm;
     const double sin2 = std::max(0.0, 1.0 - cos_theta * cos_theta);
     const bool slopes = fc.slopes();
-    const double inv_2delta = slopes ? 0.5 / fc.slope_step() : 0.0;
     Xyz out;
     const auto add = [&out](double k, const Xyz& c) {
         out.X += k * c.X;
@@ -329,6 +340,20 @@ Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
                        !series_of(m.above.n0, m.above.n1, m.above.n2, cos_theta, sin2, max_ratio, set[2], q1_above))) {
             return exact_sum(thickness_nm, cos_theta);
         }
+        const double inv_2delta = slopes ? 0.5 / fc.slope_step(b) : 0.0;
+        // The band's model holds only while the media change little through it: near the film's
+        // critical angle q1 = n1 cos θ1 changes fast with the indices' dispersion (and the
+        // coefficients with it), so where q1 varies by more than max_q1_variation across the
+        // band, or the coefficients bend (their second difference above max_bend), the 1 nm sum
+        // is used.
+        if (slopes) {
+            const double dc_below = set[1][0].dc + set[1][1].dc, dc_c = set[0][0].dc + set[0][1].dc;
+            const double dc_above = set[2][0].dc + set[2][1].dc;
+            if (std::abs(q1_above - q1_below) > max_q1_variation * q1 ||
+                std::abs(dc_above - 2.0 * dc_c + dc_below) > max_bend) {
+                return exact_sum(thickness_nm, cos_theta);
+            }
+        }
         add(set[0][0].dc + set[0][1].dc, fc.band_white(b));
         if (slopes) add((set[2][0].dc + set[2][1].dc - set[1][0].dc - set[1][1].dc) * inv_2delta, fc.band_moment(b));
         // The phase about the band's centre, φ = 4π d f(ν), f = ν q1: φ(ν) ≈ φ_c + 2π τ1 (ν − ν_c)
@@ -338,14 +363,18 @@ Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
         const double nu_c = 1.0 / m.lambda_c;
         double f1 = 0.0, psi2 = 0.0;
         if (slopes) {
-            const double delta = fc.slope_step();
+            const double delta = fc.slope_step(b);
             const double f_below = (nu_c - delta) * q1_below, f_c = nu_c * q1, f_above = (nu_c + delta) * q1_above;
             f1 = (f_above - f_below) / (2.0 * delta);
             psi2 = 2.0 * pi * d * (f_above - 2.0 * f_c + f_below) / (delta * delta);
+            // The quadratic term enters to first order: past max_quadratic_phase at the band's
+            // edges (thick films of strongly dispersive media) the expansion fails.
+            if (std::abs(psi2) * delta * delta > max_quadratic_phase) return exact_sum(thickness_nm, cos_theta);
         } else {
             const double dq1 = (m.centre.n1 * m.dn1 - m.centre.n0 * m.dn0 * sin2) / q1;
             f1 = q1 - m.lambda_c * dq1;
         }
+        if (!(f1 > 0.0)) return exact_sum(thickness_nm, cos_theta);
         const double tau1 = 2.0 * d * f1;
         const std::complex<double> u = std::polar(1.0, 4.0 * pi * d * q1 * nu_c);
         // term[s][p] = G q^{k-1} u^k for set s, polarisation p, at the k-th step of the loop.
@@ -374,7 +403,23 @@ Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
         const double max_tau = fc.max_opd_nm(b);
         for (int k = 1; k <= terms; ++k) {
             const double tau = k * tau1;
-            if (tau >= max_tau) break;
+            if (tau >= max_tau) {
+                // The terms past the table's end are dropped. What they can add is bounded by the
+                // transform's level at the table's end: where that matters for a film whose first
+                // terms are in the table (grazing incidence, |q| → 1), the 1 nm sum is used
+                // instead. A film whose first term is already past the table (OPD >= 20 µm) is
+                // the incoherent sum of its faces, within 2 |G| × the floor.
+                double tail = 0.0;
+                for (int s = 0; s < sets; ++s) {
+                    for (int p = 0; p < 2; ++p) {
+                        tail += std::sqrt(std::norm(term[s][p])) / (1.0 - std::sqrt(std::norm(set[s][p].q)));
+                    }
+                }
+                if (k > 1 && 2.0 * tail * fc.band_floor(b) > max_dropped_tail) {
+                    return exact_sum(thickness_nm, cos_theta);
+                }
+                break;
+            }
             const std::complex<double> t = term[0][0] + term[0][1];
             if (slopes) {
                 const auto v = fc.transforms(b, tau);

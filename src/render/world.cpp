@@ -172,11 +172,15 @@ void World::environment_spectrum(Vec3 d, SpectralCarrier& out, bool with_sun) co
 
 double World::sun_lobe(Vec3 r, double sigma) const noexcept {
     const double s = std::acos(std::clamp(m_cos_sun_radius, -1.0, 1.0));
-    const double var = sigma * sigma + 0.25 * s * s;
-    // The angle from the sun by atan2 of |r × sun| and r · sun: accurate near 0.
-    const double delta = std::atan2(length(cross(r, m_sun)), dot(r, m_sun));
+    // The von Mises–Fisher density on the sphere, κ/(2π (1 − e^{−2κ})) e^{κ (cos δ − 1)}: the
+    // spherical Gaussian of angular variance 1/κ, normalised over the whole sphere.
+    const double kappa = 1.0 / (sigma * sigma + 0.25 * s * s);
+    // 1 − cos δ as |r − sun|²/2 for unit vectors: accurate near the sun.
+    const Vec3 e = r - m_sun;
+    const double one_minus_cos = 0.5 * dot(e, e);
     const double solid_angle = 2.0 * pi * (1.0 - m_cos_sun_radius);
-    return m_sun_radiance * solid_angle * std::exp(-0.5 * delta * delta / var) / (2.0 * pi * var);
+    return m_sun_radiance * solid_angle * kappa / (2.0 * pi * -std::expm1(-2.0 * kappa)) *
+           std::exp(-kappa * one_minus_cos);
 }
 
 void World::sun_glint_spectrum(Vec3 r, double sigma, SpectralCarrier& out) const noexcept {

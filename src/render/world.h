@@ -88,11 +88,13 @@ public:
     /// The environment's radiance towards -direction (the sky or image, plus the sun's disc), as
     /// linear Rec. 709 RGB relative to D65.
     [[nodiscard]] Rgb3 environment(Vec3 direction, bool with_sun = true) const noexcept;
-    /// The sun reflected by a rough mirror whose mirror direction is r: the disc convolved with
-    /// a normalised Gaussian lobe of angular deviation sigma [rad] (the disc taken as a Gaussian
-    /// of the same variance, s²/4 per axis, so the total s_eff² = sigma² + s²/4): the sun's
-    /// radiance × its solid angle × exp(−δ²/2s_eff²) / (2π s_eff²), δ the angle between r and
-    /// the sun. The glint's colour is sun_rgb() (or the sun's spectrum) times this.
+    /// The sun reflected by a rough mirror whose mirror direction is r (unit): the disc
+    /// convolved with a lobe of angular deviation sigma [rad], the disc taken as a lobe of its
+    /// own variance (s²/4 per axis), so the total is 1/κ = sigma² + s²/4; the lobe is the von
+    /// Mises–Fisher density on the sphere, κ/(2π(1 − e^{−2κ})) e^{κ(cos δ − 1)}, δ the angle
+    /// between r and the sun: the sun's radiance × its solid angle × that density, which
+    /// integrates over the sphere to the disc's radiance × solid angle exactly. The glint's
+    /// colour is sun_rgb() (or the sun's spectrum) times this.
     [[nodiscard]] double sun_lobe(Vec3 r, double sigma) const noexcept;
     [[nodiscard]] Rgb3 sun_rgb() const noexcept { return m_sun_rgb; }
     /// The environment as the spectral path carries it: the Preetham sky's CIE daylight

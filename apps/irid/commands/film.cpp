@@ -123,7 +123,8 @@ void add_film_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--integration", command->integration,
                     "With --color: sum (the CIE 1 nm sum) or fourier (the exact single film's Airy "
                     "series against the transformed matching functions: one lossless layer, "
-                    "unpolarised; within ΔE2000 0.05 of the sum for constant indices, see "
+                    "unpolarised; within ΔE2000 0.025 of the sum over 0-2000 nm x 0-85 degrees for constant "
+                    "indices, the sum itself where the series' model fails; see "
                     "docs/OPTICS.md)")
         ->capture_default_str();
     cmd->callback([command, &runner] { runner = [command] { return run_film(*command); }; });

@@ -83,9 +83,13 @@ public:
     };
     [[nodiscard]] int bands() const noexcept { return static_cast<int>(m_bands.size()); }
     [[nodiscard]] bool slopes() const noexcept { return m_slopes; }
-    /// The half-width δ [1/nm] of the wavenumber interval over which the coefficients' slope is
-    /// taken: half the spacing of the band centres (0 for one band).
-    [[nodiscard]] double slope_step() const noexcept { return m_slope_step; }
+    /// The half-width δ [1/nm] of the wavenumber interval over which band b's slopes are taken:
+    /// half the spacing of the band centres (half the range 380–780 nm for one band), shrunk so
+    /// that ν_c ± δ stay within 360–830 nm, where materials are validated (0 without slopes).
+    [[nodiscard]] double slope_step(int b) const noexcept { return m_bands[b].delta; }
+    /// max |V_b| over the last cut_run_nm of the band's table: the estimate of the transform past
+    /// the table's end that FourierFilm bounds the terms it drops with.
+    [[nodiscard]] double band_floor(int b) const noexcept { return m_bands[b].floor; }
     /// The band's centre: the wavenumber [1/nm] at which its amplitudes and phase are taken (the
     /// Y-weighted mean wavenumber of the band).
     [[nodiscard]] double band_wavenumber(int b) const noexcept { return m_bands[b].nu_c; }
@@ -117,6 +121,7 @@ private:
         double nu_c = 0.0;
         Xyz white, moment;
         double bound = 0.0, moment_bound = 0.0, second_moment_bound = 0.0;
+        double delta = 0.0, floor = 0.0;
         /// Per node of τ: V (x, y, z as real and imaginary parts), then with slopes V1 and V2,
         /// side by side so that one lookup reads adjacent memory; the moments are 0 past their
         /// own quiet ends.
@@ -126,7 +131,6 @@ private:
     [[nodiscard]] std::size_t stride() const noexcept { return m_slopes ? 18 : 6; }
     Colorimeter m_colorimeter;
     bool m_slopes = false;
-    double m_slope_step = 0.0;
     std::vector<Band> m_bands;
 };
 
@@ -147,16 +151,31 @@ public:
     FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierColorimeter> colorimeter);
 
     /// XYZ (white Y = 1) at a thickness [nm, finite, >= 0] and the cosine of the angle of
-    /// incidence in the ambient (in (0, 1]). Where the series does not apply — the film at or
-    /// past its own critical angle, |q| > max_ratio at grazing incidence, where it converges
-    /// too slowly, or a dispersive absorbing substrate (a metal's table: its reflectance turns
-    /// too sharply for one band, ΔE2000 up to 18 for gold, docs/OPTICS.md) — the 1 nm sum
-    /// (PreparedFilm's Airy sum per wavelength) is evaluated instead.
+    /// incidence in the ambient (in [0, 1]); NaN outside those. Where the series does not apply
+    /// the 1 nm sum (PreparedFilm's Airy sum per wavelength) is evaluated instead: the film at
+    /// or past its own critical angle; |q| > max_ratio at grazing incidence, where it converges
+    /// too slowly; dispersive media changing too fast through the band (near the film's
+    /// critical angle under a dispersive ambient, max_q1_variation, max_bend); terms dropped past
+    /// the table's end that would matter (max_dropped_tail: thick films near grazing incidence);
+    /// a dispersive absorbing substrate (a metal's table: its reflectance turns too sharply for
+    /// one band, ΔE2000 up to 18 for gold, docs/OPTICS.md).
     [[nodiscard]] Xyz xyz(double thickness_nm, double cos_theta) const noexcept;
     [[nodiscard]] FilmColor color(double thickness_nm, double cos_theta) const noexcept;
 
     /// |q| above which the 1 nm sum is used (about 900 terms for 1e-7 near this ratio).
     static constexpr double max_ratio = 0.98;
+    /// With slopes: the largest change of q1 = n1 cos θ1 across a band, relative to its value
+    /// at the centre, and the largest second difference of A0 across it, for which the band's
+    /// linear and quadratic model is used (beyond: the 1 nm sum).
+    static constexpr double max_q1_variation = 0.05;
+    static constexpr double max_bend = 1e-3;
+    /// With slopes: the largest quadratic phase ψ at the band's edges ν_c ± δ [rad] for which
+    /// its first-order expansion e^{imψ} ≈ 1 + imψ is used.
+    static constexpr double max_quadratic_phase = 0.15;
+    /// The most that the terms dropped past the table's end may add to Y, for a film with terms
+    /// in the table (beyond: the 1 nm sum; a film whose first term is past the table is the
+    /// incoherent sum of its faces).
+    static constexpr double max_dropped_tail = 2e-4;
     /// The truncation bound on the remaining terms, in Y (white = 1).
     static constexpr double series_tolerance = 1e-7;
 

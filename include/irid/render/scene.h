@@ -159,8 +159,9 @@ struct PavementParams {
     /// Albedo variation from noise (0 = uniform).
     double albedo_variation = 0.35;
     /// The wet surface's micro-roughness, as the angular standard deviation of its specular lobe
-    /// [degrees]: the sun's reflection is the disc spread by a normalised Gaussian lobe about the
-    /// mirror direction (0 = a perfect mirror, the disc's hard edge).
+    /// [degrees, 0–20]: the sun's reflection is the disc spread by a normalised spherical
+    /// Gaussian (von Mises–Fisher) lobe about the mirror direction (0 = a perfect mirror, the
+    /// disc's hard edge).
     double roughness_deg = 0.0;
 };
 
