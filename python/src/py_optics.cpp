@@ -82,11 +82,9 @@ void film_colors(const FilmModel& film, const Colorimeter& colorimeter, const st
     });
 }
 
-/// The same colours by the Fourier series (irid/optics/fourier_film.h): the exact single film
-/// only (fourier_single_film throws for anything else).
-void fourier_film_colors(const FilmModel& film, const Colorimeter& colorimeter, const std::vector<double>& t,
+/// The same colours by the Fourier series (irid/optics/fourier_film.h) of an exact single film.
+void fourier_film_colors(const SingleFilm& single, const Colorimeter& colorimeter, const std::vector<double>& t,
                          const std::vector<double>& angle_rad, double* xyz, double* rgb) {
-    const SingleFilm single = fourier_single_film(film);
     const FourierFilm fourier(single, fourier_colorimeter_for(single, colorimeter));
     tbb::parallel_for(std::size_t{0}, t.size(), [&](std::size_t i) {
         const FilmColor c = fourier.color(t[i], std::cos(angle_rad[i]));
@@ -217,10 +215,12 @@ void add_optics(py::module_& m) {
             [](const FilmModel& f, const py::handle& thickness, const py::handle& angle_rad,
                const std::string& illuminant, const std::string& observer, const std::string& rgb,
                const std::string& integration) {
-                const FilmIntegration how = parse_film_integration(integration);
-                if (how == FilmIntegration::fourier) {
+                // The film the Fourier series needs, checked before any work: the exact single
+                // film only.
+                std::optional<SingleFilm> single;
+                if (parse_film_integration(integration) == FilmIntegration::fourier) {
                     try {
-                        (void)fourier_single_film(f);
+                        single = fourier_single_film(f);
                     } catch (const Error& e) {
                         throw Error(std::string("integration 'fourier': ") + e.what() + "; use 'sum'");
                     }
@@ -238,7 +238,7 @@ void add_optics(py::module_& m) {
                 double* rp = out_rgb.mutable_data();
                 {
                     py::gil_scoped_release release;
-                    if (how == FilmIntegration::fourier) fourier_film_colors(f, c, t, a, xp, rp);
+                    if (single) fourier_film_colors(*single, c, t, a, xp, rp);
                     else film_colors(f, c, t, a, xp, rp);
                 }
                 return py::make_tuple(xyz, out_rgb);

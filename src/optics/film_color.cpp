@@ -5,6 +5,8 @@
 #include <irid/optics/film_color.h>
 #include <irid/optics/thesis_models.h>
 
+#include "statistics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -40,13 +42,6 @@ std::string format_count(double count) {
         grouped += digits[i];
     }
     return grouped;
-}
-
-double percentile(std::vector<double> values, double p) {
-    if (values.empty()) return 0.0;
-    const auto k = static_cast<std::size_t>(std::round(p * static_cast<double>(values.size() - 1)));
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-    return values[k];
 }
 
 }  // namespace
@@ -512,8 +507,8 @@ ErrorStudyResult thesis_error_study(const std::string& name, const SingleFilm& f
     double total = 0.0;
     for (const double d : all) total += d;
     r.mean = total / static_cast<double>(all.size());
-    r.median = percentile(all, 0.5);
-    r.p95 = percentile(all, 0.95);
+    r.median = detail::percentile(all, 0.5);
+    r.p95 = detail::percentile(all, 0.95);
     return r;
 }
 

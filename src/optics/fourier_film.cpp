@@ -248,17 +248,12 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
 }
 
 Xyz FourierFilm::exact_sum(double thickness_nm, double cos_theta) const noexcept {
-    const Colorimeter& c = m_colorimeter->colorimeter();
-    bool degenerate = false;
-    int i = 0;
-    return c.xyz_of([&](double lambda) {
-        const PreparedFilm::Sample s = PreparedFilm::prepare(m_film, cos_theta, i++, degenerate);
-        if (!degenerate) return PreparedFilm::airy_reflectance(s, thickness_nm);
-        // The film exactly at its own critical angle: the transfer matrix has the limit.
-        const double t = std::isfinite(thickness_nm) ? std::max(thickness_nm, 0.0) : 0.0;
-        const FilmStack stack(m_film.ambient, {Layer{m_film.film, t}}, m_film.substrate);
-        return stack.evaluate(lambda, std::acos(std::clamp(cos_theta, 0.0, 1.0)), Polarization::unpolarized).R;
-    });
+    // The 1 nm sum (exact_film_color: the Airy sum per wavelength, the transfer matrix where the
+    // film is exactly at its own critical angle). Its arguments are valid here: the ambient was
+    // checked lossless at construction, and the angle stays just below π/2 (cos θ = 0 carries no
+    // light into the film; the colour there is the limit).
+    const double angle = std::min(std::acos(std::clamp(cos_theta, 0.0, 1.0)), std::nextafter(pi / 2.0, 0.0));
+    return exact_film_color(m_film, thickness_nm, angle, m_colorimeter->colorimeter()).xyz;
 }
 
 namespace {

@@ -5,6 +5,8 @@
 #include <irid/optics/fourier_film.h>
 #include <irid/optics/renderer_films.h>
 
+#include "statistics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -80,13 +82,6 @@ std::array<Faces, 2> exact_faces(double n0, double n1, Complex n2, double snell)
 }
 
 bool same(const ChannelIndices& base) noexcept { return base[0] == base[1] && base[1] == base[2]; }
-
-double percentile(std::vector<double> values, double p) {
-    if (values.empty()) return 0.0;
-    const auto k = static_cast<std::size_t>(std::round(p * static_cast<double>(values.size() - 1)));
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-    return values[k];
-}
 
 template <class ModelXyz>
 FilmErrorMap error_map(const SingleFilm& film, const ErrorStudyOptions& o, ModelXyz&& model_xyz) {
@@ -542,8 +537,8 @@ FilmErrorRegions summarize_film_error(const std::string& name, const FilmErrorMa
     }
     const auto count = static_cast<double>(r.samples);
     r.mean = total / count;
-    r.median = percentile(map.delta_e, 0.5);
-    r.p95 = percentile(map.delta_e, 0.95);
+    r.median = detail::percentile(map.delta_e, 0.5);
+    r.p95 = detail::percentile(map.delta_e, 0.95);
     out.above_2 /= count;
     out.above_5 /= count;
     return out;
