@@ -65,6 +65,7 @@ __all__ = [
     "bake_lut",
     "blackbody",
     "clip",
+    "clip_branches",
     "clip_image",
     "clip_methods",
     "clip_parameters",
@@ -367,6 +368,24 @@ def clip(rgb, method, source="srgb-linear", target=None, max=1.0, white="D65",
 
 
 _recent = {}
+
+
+def clip_branches(rgb, method, source="srgb-linear", target=None, max=1.0, white="D65",
+                  adaptation="bradford", inverse=False, threads=0, **params):
+    """Which branches of its definition the method takes for each colour, as uint64 numbers.
+
+    Arguments as for :func:`clip`; the colours are taken in float64. Two colours with the same
+    number go through the same branches, and the method's output is continuous between them;
+    where the number changes, the definition itself may jump (css's binary search, css-raytrace's
+    passes, the pieces of the Oklab methods' lines, oklab-cusp's cusp, luv-hue's local minima
+    and CIELUV's undefined chromaticity; docs/GAMUT.md, "Where a method may jump"). 0 for
+    colours inside the gamut and for the methods without such branches.
+
+    Returns uint64 of the input's shape without its last axis.
+    """
+    p = _clip_pipeline(method, source, target, max, white, adaptation, inverse, params)
+    threads = _whole(threads, "threads", 0, 1 << 20)
+    return p.branches(np.asarray(rgb, dtype=np.float64), threads)
 
 
 def _clip_pipeline(method, source, target, max, white, adaptation, inverse, params,

@@ -29,6 +29,9 @@ def clip(rgb: _Array, method: str, source: str = "srgb-linear", target: str | No
          max: float = 1.0, white: _White = "D65", adaptation: str = "bradford",
          threads: int = 0, inverse: bool = False, out: np.ndarray | None = None,
          **params: float | bool) -> np.ndarray: ...
+def clip_branches(rgb: _Array, method: str, source: str = "srgb-linear", target: str | None = None,
+                  max: float = 1.0, white: _White = "D65", adaptation: str = "bradford",
+                  inverse: bool = False, threads: int = 0, **params: float | bool) -> np.ndarray: ...
 class Lut:
     size: int
     shaper: str

@@ -196,6 +196,21 @@ void add_gamut(py::module_& m) {
                 return run_pipeline<double>(p, numbers, threads, out);
             },
             py::arg("a"), py::arg("threads"), py::arg("out"))
+        .def(
+            "branches",
+            [](const ClipPipeline& p, const py::handle& a, int threads) {
+                if (threads < 0) throw py::value_error("threads: " + std::to_string(threads) + " must be >= 0 (0: all)");
+                Rows<double> in = rows_of<double>(a, 3, "colours");
+                std::vector<py::ssize_t> shape(in.shape.begin(), in.shape.end() - 1);
+                py::array_t<std::uint64_t> result(shape);
+                std::span<std::uint64_t> dst(result.mutable_data(), static_cast<std::size_t>(result.size()));
+                {
+                    py::gil_scoped_release release;
+                    p.branch_signatures(in.values(), dst, threads);
+                }
+                return result;
+            },
+            py::arg("a"), py::arg("threads"))
         .def_property_readonly("method",
                                [](const ClipPipeline& p) { return std::string(clip_method_name(p.clipper().method())); })
         .def_property_readonly("parameters",

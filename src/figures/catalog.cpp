@@ -52,7 +52,7 @@ std::span<const CatalogEntry> catalog_entries() {
           "A constant-luminance slice of the RGB gamut and where the clip methods land",
           image_extensions,
           "method=NAME|all (clamp, smits, smits-xyz, luv-lightness-hue, luv-hue, css, oklab, "
-          "smits-corrected, css-raytrace, oklab-adaptive, oklab-cusp, smits-soft, aces-rgc "
+          "css-raytrace, oklab-adaptive, oklab-cusp, smits-soft, aces-rgc "
           "(clipped); default smits); color=x,y,Y (default: 520 nm at Y = 0.25); "
           "space=NAME (default srgb)"},
          draw_clip_geometry},

@@ -106,11 +106,6 @@ void clip_range(const GamutClipper& clipper, const detail::BatchFloatParams& p, 
             // they no longer cover float's rounding (at max 100, 2e-4 × max off; at 16, under
             // 2e-6).
             const bool css_range = clipper.method() != ClipMethod::css || clipper.gamut().max() <= 16.0;
-            // smits-corrected's bound on its float step is tuned at a peak of 1: below it the
-            // step's error grows relative to the cube (1.3e-5 × max at 0.1, 1.9e-5 at 0.001;
-            // fuzz finding clip-10), so smaller peaks run the double reference.
-            const bool corrected_range =
-                clipper.method() != ClipMethod::smits_corrected || clipper.gamut().max() >= 1.0;
             // css-raytrace at a peak of 0.1 put a colour 1e-3 below the white's lightness near
             // white where the reference gives cyan (0.99 × max off; found by a sweep of small
             // peaks at the end of issue 12's first session, cause not yet found): below a peak
@@ -118,7 +113,7 @@ void clip_range(const GamutClipper& clipper, const detail::BatchFloatParams& p, 
             const bool raytrace_range =
                 clipper.method() != ClipMethod::css_raytrace || clipper.gamut().max() >= 0.5;
             const detail::ClipKernel kernel = simd && float_range && real_primaries && css_range &&
-                                                      corrected_range && raytrace_range
+                                                      raytrace_range
                                                   ? detail::simd_kernel(clipper.method())
                                                   : nullptr;
             const std::size_t done = kernel ? kernel(clipper, in, out, colours) : 0;
@@ -136,7 +131,6 @@ ClipKernel simd_kernel(ClipMethod method) noexcept {
     switch (method) {
         case ClipMethod::smits_xyz: return clip_smits_xyz_simd;
         case ClipMethod::luv_lightness_hue: return clip_luv_lightness_hue_simd;
-        case ClipMethod::smits_corrected: return clip_smits_corrected_simd;
         case ClipMethod::smits_soft: return clip_smits_soft_simd;
         case ClipMethod::aces_rgc: return clip_aces_rgc_simd;
         case ClipMethod::css: return clip_css_simd;

@@ -113,12 +113,11 @@ constexpr float grazing_gain = 16.0f;
 /// path.
 constexpr float diverging_ratio = 2.0f;
 /// css-raytrace: a lane whose anchor the float bounds (1e-6) keep where the double reference's
-/// (1e-12) would move it goes to the double path when that changes its passes by more than
-/// rounding: a dark colour (brightest channel below dark_channel × max), or a colour with a
-/// channel of its own between rounding_channel × max and the float bound (near 0 or near max;
-/// fuzz finding clip-9: on SMPTE-C at max 100, a channel of 4.8e-5 left the anchor in place in
-/// float and the result 3e-5 max away).
-constexpr float dark_channel = 1e-3f;
+/// (1e-12) would move it, or where float cannot tell (a restored point within 1e-6 max of a
+/// face), goes to the double path; so does a colour with a channel of its own between
+/// rounding_channel × max and the float bound (near 0 or near max; fuzz finding clip-9: on
+/// SMPTE-C at max 100, a channel of 4.8e-5 left the anchor in place in float and the result
+/// 3e-5 max away).
 constexpr float rounding_channel = 2e-7f;
 
 /// A double 3×3 matrix (row-major) as float pairs, m = hi + lo to about 2^-48 |m|.
@@ -591,7 +590,6 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         const Mf near_cube = InCube(r, g, b, hn::Neg(tol), hn::Add(p.max, tol));
         Mf active = hn::Not(hn::Or(hn::Or(inside, near_cube), hn::Or(white, black)));
         Mf wild = hn::Lt(zero, zero), grazing = wild, bounds_path = wild, diverging = wild;
-        const Vf dark = hn::Mul(hn::Set(d, dark_channel), p.max);
         const Vf rounding = hn::Mul(hn::Set(d, rounding_channel), p.max);
         // A channel of the colour itself between the two bounds, by more than rounding.
         const auto between = [&](Vf v) {
@@ -649,14 +647,19 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
                     hn::And(hn::And(hn::Lt(low_d, c_r), hn::Lt(c_r, high_d)),
                             hn::And(hn::Lt(low_d, c_g), hn::Lt(c_g, high_d))),
                     hn::And(hn::Lt(low_d, c_b), hn::Lt(c_b, high_d)));
-                // That matters for a dark colour (channels near 1e-6 max themselves); for a
-                // lighter one the points' channels between the two bounds are a face point's
-                // rounding, which moves the double path by rounding only (the colour's own
-                // channels between them are flagged before the loop).
-                const Vf brightest = hn::Max(hn::Max(c_r, c_g), c_b);
+                // Flagged where the two bounds disagree, and wherever a restored point has a channel within the float bound of a face
+                // (|c| <= 1e-6 max from 0 or max): float cannot tell whether the double bound
+                // (1e-12) moves the anchor there, and when it does the anchor may sit a rounding
+                // error from the next restored point, whose ray then goes anywhere (the
+                // definition's own jump: the continuity walk found sRGB (0.0048756, -0.029423,
+                // 1.1251) ending on g = 0 in double after an anchor 1e-10 from its target, and
+                // on r = 0 in float).
+                const auto unresolved = [&](Vf v) {
+                    return hn::Or(hn::Le(hn::Abs(v), low), hn::Le(hn::Abs(hn::Sub(p.max, v)), low));
+                };
+                const Mf undecided = hn::Or(hn::Or(unresolved(c_r), unresolved(c_g)), unresolved(c_b));
                 bounds_path = hn::Or(bounds_path,
-                                     hn::And(hn::AndNot(below, hn::And(active, below_double)),
-                                             hn::Lt(brightest, dark)));
+                                     hn::And(active, hn::Or(hn::AndNot(below, below_double), undecided)));
                 a0 = hn::IfThenElse(move, c_r, a0);
                 a1 = hn::IfThenElse(move, c_g, a1);
                 a2 = hn::IfThenElse(move, c_b, a2);

@@ -483,8 +483,11 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
         V L, A, B;
         simd::ToOklab(d, s.mat, r, g, b, L, A, B);
         const V C = hn::Sqrt(hn::MulAdd(A, A, hn::Mul(B, B)));
-        const M black = hn::Not(hn::Gt(L, zero));
-        const M white = hn::Not(hn::Lt(L, s.white_l));
+        // Only the constant-lightness projection has a black and a white rule (L <= 0, L at or
+        // above the white's); Ottosson's projections move every lightness toward their L0.
+        const bool lightness_rule = kind == Projection::constant_l;
+        const M black = lightness_rule ? hn::Not(hn::Gt(L, zero)) : hn::FirstN(d, 0);
+        const M white = lightness_rule ? hn::Not(hn::Lt(L, s.white_l)) : hn::FirstN(d, 0);
         // Hard lanes, sent to the double reference.
         const M within_tol = hn::And(
             hn::And(hn::And(hn::Ge(r, neg_tol), hn::Ge(g, neg_tol)), hn::Ge(b, neg_tol)),
@@ -516,6 +519,9 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
                 const V au = hn::IfThenElse(grey, one, hn::Mul(A, inv_c));
                 const V bu = hn::IfThenZeroElse(grey, hn::Mul(B, inv_c));
                 centre = CuspLightness(s, au, bu, C, hard, cusp_s, cusp_zero);
+                // Within [0.01, 0.99] × the white's L, as the reference (oklab_projection.cpp).
+                centre = hn::Min(hn::Max(centre, hn::Mul(hn::Set(d, 0.01f), s.white_l)),
+                                 hn::Mul(hn::Set(d, 0.99f), s.white_l));
             }
             L0 = AdaptiveL0(s, L, C, centre);
         }

@@ -1,5 +1,4 @@
-// The float SIMD kernels of smits-xyz, luv-lightness-hue, smits-corrected and smits-soft (Google
-// Highway, dynamic dispatch as in batch_simd.cpp; contract in kernels.h).
+// The float SIMD kernels of smits-xyz, luv-lightness-hue and smits-soft (Google Highway, dynamic dispatch as in batch_simd.cpp; contract in kernels.h).
 //
 // Each kernel computes its method in float, lane by lane, following the double reference in
 // clip.cpp / smits_soft.cpp step by step (FMA allowed: the contract is 1e-5 of the cube's size,
@@ -10,8 +9,7 @@
 // would no longer be far below the tolerance, and luminance near 0 can be a cancellation of
 // large terms). Per kernel, the few cases the comment of each kernel names. On the benchmark's
 // input (2^20 colours uniform in [-0.5, 1.5]^3, redrawn until out of sRGB) the hard lanes are:
-// smits-xyz 0, luv-lightness-hue 0.8 %, smits-corrected 6 % (measured before its step bound went
-// from 0.1 to 0.2, which sends more lanes to the double path), smits-soft 0 (forward and inverse).
+// smits-xyz 0, luv-lightness-hue 0.8 %, smits-soft 0 (forward and inverse).
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE __BASE_FILE__
@@ -294,146 +292,6 @@ std::size_t ClipLuvLightnessHue(const GamutClipper& clipper, const float* in, fl
     });
 }
 
-// --- smits-corrected -------------------------------------------------------------------------
-
-/// GamutClipper::smits_corrected: smits, then one Newton step on the Oklab hue along the face
-/// the point lies on, at constant luminance, no longer than smits' own move; kept if it lowers
-/// the hue error. The hue derivative along the face is analytic here (chain rule through M1,
-/// the cube roots and M2) where the reference takes a central difference in double. Hue
-/// differences are atan2 of the cross and dot products of the (a, b) vectors.
-///
-/// Float Oklab carries an absolute error of about 3e-7 in a and b (the sums of M2 cancel terms
-/// near 2), so a hue to about 3e-7/C rad, and the step τ = Δh/slope errs by that over the
-/// slope: where the hue turns slowly along the face the step is ill-conditioned in float.
-/// Hard (sent to the double reference): a smits point with a second channel within 1e-4 max of
-/// a face (an edge: the reference may step along two faces); an Oklab chroma below 0.005 at the
-/// input or at the smits point; a cone response (LMS) of the input, the smits point or the
-/// stepped point below 0.003 max in magnitude (the cube root is steep there: an input with S
-/// at -2.7e-7 has its a off by 5e-5 in float); C · |slope| below 0.1 |d| (C the smaller chroma,
-/// the slope in rad per unit of τ, d the direction: the estimated error of the step above about
-/// 3e-6); a step whose hue error is within 2e-5 rad of the smits point's. On the benchmark's
-/// input (uniform in [-0.5, 1.5]^3, out of sRGB) 6 % of the lanes are hard, and the largest
-/// difference to the reference on 200 000 such colours is 5.6e-6.
-std::size_t ClipSmitsCorrected(const GamutClipper& clipper, const float* in, float* out,
-                               std::size_t colours) {
-    const Df d;
-    const simd::OklabMatrices M = simd::LoadOklabMatrices(d, clipper);
-    const SmitsParams P = LoadSmits(d, clipper.gamut());
-    const Vec3& lum = clipper.gamut().luminance_row();
-    // The direction along face k that keeps the face and the luminance, d = e_k × (A, B, C),
-    // and its length.
-    std::array<std::array<float, 3>, 3> dir{};
-    std::array<float, 3> norm{};
-    for (int k = 0; k < 3; ++k) {
-        const int i = (k + 1) % 3, j = (k + 2) % 3;
-        dir[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)] = static_cast<float>(lum[j]);
-        dir[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)] = static_cast<float>(-lum[i]);
-        norm[static_cast<std::size_t>(k)] = static_cast<float>(std::hypot(lum[i], lum[j]));
-    }
-    const Vf zero = hn::Zero(d), max = P.max;
-    const Vf huge = hn::Mul(max, hn::Set(d, 16.0f));
-    const Vf edge = hn::Mul(max, hn::Set(d, 1e-4f));
-    const Vf min_chroma2 = hn::Set(d, 0.005f * 0.005f);
-    const Vf min_lms_bound = hn::Mul(max, hn::Set(d, 0.003f));
-    const Vf third = hn::Set(d, 1.0f / 3.0f);
-    const Vf tie = hn::Set(d, 2e-5f);
-    const Vf slow = hn::Set(d, 0.2f);
-    return RunKernel(clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& rr, Vf& gg, Vf& bb) {
-        const Mf outside = Outside(r, g, b, zero, max);
-        Vf p[3];
-        Smits(P, r, g, b, p[0], p[1], p[2]);
-        // Which channels of p are on a face (exactly: smits sets its face channel so), and
-        // which are near one.
-        Mf on[3];
-        Vf near_count = zero;
-        for (int k = 0; k < 3; ++k) {
-            on[k] = hn::Or(hn::Eq(p[k], zero), hn::Eq(p[k], max));
-            const Mf near = hn::Or(hn::Le(p[k], edge), hn::Ge(p[k], hn::Sub(max, edge)));
-            near_count = hn::Add(near_count, hn::IfThenElseZero(near, hn::Set(d, 1.0f)));
-        }
-        const Mf black =
-            hn::And(hn::Eq(p[0], zero), hn::And(hn::Eq(p[1], zero), hn::Eq(p[2], zero)));
-        const Mf white = hn::And(hn::Eq(p[0], max), hn::And(hn::Eq(p[1], max), hn::Eq(p[2], max)));
-        const Mf grey = hn::Or(black, white);
-        // Oklab of the target (the input) and of p, and the hue error of p.
-        Vf tl, ta, tb, pl, pa, pb;
-        Vf cl, cm, cs;
-        simd::Mul3(M.to_lms, r, g, b, cl, cm, cs);
-        simd::Mul3(M.m2, simd::Cbrt(d, cl), simd::Cbrt(d, cm), simd::Cbrt(d, cs), tl, ta, tb);
-        Vf l, mm, s;
-        simd::Mul3(M.to_lms, p[0], p[1], p[2], l, mm, s);
-        const Vf rl = simd::Cbrt(d, l), rm = simd::Cbrt(d, mm), rs = simd::Cbrt(d, s);
-        simd::Mul3(M.m2, rl, rm, rs, pl, pa, pb);
-        const Vf t_c2 = hn::MulAdd(ta, ta, hn::Mul(tb, tb));
-        const Vf p_c2 = hn::MulAdd(pa, pa, hn::Mul(pb, pb));
-        const Vf dh =
-            Atan2(d, hn::NegMulAdd(pb, ta, hn::Mul(pa, tb)), hn::MulAdd(pa, ta, hn::Mul(pb, tb)));
-        const Vf best_error = hn::Abs(dh);
-        // The face and its direction.
-        Vf dvec[3] = {zero, zero, zero};
-        Vf nrm = hn::Set(d, 1.0f);
-        for (int k = 0; k < 3; ++k) {
-            for (int j = 0; j < 3; ++j) {
-                dvec[j] = hn::IfThenElse(
-                    on[k],
-                    hn::Set(d, dir[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)]),
-                    dvec[j]);
-            }
-            nrm = hn::IfThenElse(on[k], hn::Set(d, norm[static_cast<std::size_t>(k)]), nrm);
-        }
-        // d(hue)/dτ at p along dvec: LMS' = M1 dvec, (cube root)' = LMS'/(3 root²), then M2.
-        Vf dl, dm, ds;
-        simd::Mul3(M.to_lms, dvec[0], dvec[1], dvec[2], dl, dm, ds);
-        const Vf ql = hn::Div(hn::Mul(dl, third), hn::Mul(rl, rl));
-        const Vf qm = hn::Div(hn::Mul(dm, third), hn::Mul(rm, rm));
-        const Vf qs = hn::Div(hn::Mul(ds, third), hn::Mul(rs, rs));
-        Vf dL, da, db;
-        simd::Mul3(M.m2, ql, qm, qs, dL, da, db);
-        const Vf slope = hn::Div(hn::NegMulAdd(pb, da, hn::Mul(pa, db)), p_c2);  // rad per unit τ
-        // The step, no longer than smits' own move.
-        const Vf e0 = hn::Sub(r, p[0]), e1 = hn::Sub(g, p[1]), e2 = hn::Sub(b, p[2]);
-        const Vf reach = hn::Sqrt(hn::MulAdd(e0, e0, hn::MulAdd(e1, e1, hn::Mul(e2, e2))));
-        const Vf longest = hn::Div(reach, nrm);
-        const Vf tau = hn::Min(hn::Max(hn::Div(dh, slope), hn::Neg(longest)), longest);
-        Vf mv[3];
-        for (int j = 0; j < 3; ++j) mv[j] = hn::MulAdd(tau, dvec[j], p[j]);
-        // Leaving the face's edge: back along constant luminance.
-        Vf sm[3];
-        Smits(P, mv[0], mv[1], mv[2], sm[0], sm[1], sm[2]);
-        Vf ml, ma, mb, nl, nm, ns;
-        simd::Mul3(M.to_lms, sm[0], sm[1], sm[2], nl, nm, ns);
-        simd::Mul3(M.m2, simd::Cbrt(d, nl), simd::Cbrt(d, nm), simd::Cbrt(d, ns), ml, ma, mb);
-        // The smallest cone response of the three points: the cube root is steep near 0.
-        const Vf min_lms = hn::Min(
-            hn::Min(hn::Min(MinAbs3(cl, cm, cs), MinAbs3(l, mm, s)), MinAbs3(nl, nm, ns)), huge);
-        const Vf moved_error = hn::Abs(
-            Atan2(d, hn::NegMulAdd(mb, ta, hn::Mul(ma, tb)), hn::MulAdd(ma, ta, hn::Mul(mb, tb))));
-        const Mf better = hn::Lt(moved_error, best_error);
-        const Mf plain = hn::Or(grey, hn::Or(hn::Lt(t_c2, min_chroma2), hn::Lt(p_c2, min_chroma2)));
-        Vf o[3];
-        for (int j = 0; j < 3; ++j) {
-            o[j] = hn::IfThenElse(hn::AndNot(plain, better), sm[j], p[j]);
-        }
-        rr = hn::IfThenElse(outside, Clamp(o[0], zero, max), r);
-        gg = hn::IfThenElse(outside, Clamp(o[1], zero, max), g);
-        bb = hn::IfThenElse(outside, Clamp(o[2], zero, max), b);
-        // The step's float error, about 3e-7/C rad of hue over the slope along d, times |d|:
-        // C · |slope| >= 0.2 |d| keeps it small. (At 0.1, and still at 0.14, 2 million colours
-        // on SMPTE-C found 9.96e-6 max, at the contract's edge; at 0.2 the largest of 2 million
-        // on sRGB, SMPTE-C, Display P3 is 4.3e-6. The price: 4.1 M colours/s on one thread
-        // instead of 18.4 M, more lanes taking the double path.)
-        const Vf chroma = hn::Sqrt(hn::Min(t_c2, p_c2));
-        const Mf ill =
-            hn::Or(hn::Or(hn::Lt(t_c2, min_chroma2), hn::Lt(p_c2, min_chroma2)),
-                   hn::Or(hn::Lt(min_lms, min_lms_bound),
-                          hn::Or(hn::Lt(hn::Mul(chroma, hn::Abs(slope)), hn::Mul(nrm, slow)),
-                                 hn::Lt(hn::Abs(hn::Sub(moved_error, best_error)), tie))));
-        const Mf hard = hn::Or(Huge(r, g, b, huge),
-                               hn::AndNot(grey, hn::Or(hn::Gt(near_count, hn::Set(d, 1.0f)), ill)));
-        return hn::And(outside, hard);
-    });
-}
-
 // --- smits-soft ------------------------------------------------------------------------------
 
 /// GamutClipper::smits_soft (smits_soft.cpp), forward or inverse, with m_derived's threshold,
@@ -512,7 +370,6 @@ namespace irid {
 
 HWY_EXPORT(ClipSmitsXyz);
 HWY_EXPORT(ClipLuvLightnessHue);
-HWY_EXPORT(ClipSmitsCorrected);
 HWY_EXPORT(ClipSmitsSoft);
 
 namespace detail {
@@ -525,11 +382,6 @@ std::size_t clip_smits_xyz_simd(const GamutClipper& clipper, const float* in, fl
 std::size_t clip_luv_lightness_hue_simd(const GamutClipper& clipper, const float* in, float* out,
                                         std::size_t colours) noexcept {
     return HWY_DYNAMIC_DISPATCH(ClipLuvLightnessHue)(clipper, in, out, colours);
-}
-
-std::size_t clip_smits_corrected_simd(const GamutClipper& clipper, const float* in, float* out,
-                                      std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipSmitsCorrected)(clipper, in, out, colours);
 }
 
 std::size_t clip_smits_soft_simd(const GamutClipper& clipper, const float* in, float* out,

@@ -19,12 +19,20 @@
 namespace irid {
 namespace {
 
-constexpr std::array<ClipMethod, 13> all_methods{
-    ClipMethod::clamp,          ClipMethod::smits,      ClipMethod::smits_xyz,
-    ClipMethod::luv_lightness_hue, ClipMethod::luv_hue, ClipMethod::css,
-    ClipMethod::oklab,          ClipMethod::smits_corrected, ClipMethod::css_raytrace,
-    ClipMethod::oklab_adaptive, ClipMethod::oklab_cusp, ClipMethod::smits_soft,
-    ClipMethod::aces_rgc};
+constexpr std::array<ClipMethod, 12> all_methods{
+    ClipMethod::clamp,          ClipMethod::smits,        ClipMethod::smits_xyz,
+    ClipMethod::luv_lightness_hue, ClipMethod::luv_hue,   ClipMethod::css,
+    ClipMethod::oklab,          ClipMethod::css_raytrace, ClipMethod::oklab_adaptive,
+    ClipMethod::oklab_cusp,     ClipMethod::smits_soft,   ClipMethod::aces_rgc};
+
+/// Methods irid had and retired, with the reason (GAMUT.md), so that an old script or scene
+/// learns why its method is gone rather than only that it is unknown.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 1> retired_methods{{
+    {"smits-corrected",
+     "smits-corrected was retired: its hue correction along one face of the cube jumped (by up "
+     "to ΔE2000 37) where smits' landing point moves from a face to an edge; use oklab (keeps "
+     "Oklab lightness and hue exactly) or smits"},
+}};
 
 // The parameters of each method. Ranges are closed; consistency between parameters is checked
 // by GamutClipper::check_parameters.
@@ -66,60 +74,6 @@ Rgb rgb(const Vec3& v) noexcept { return {v[0], v[1], v[2]}; }
 constexpr double css_jnd = 0.02;
 constexpr double css_epsilon = 0.0001;
 
-/// The signed difference b − a of two hue angles in degrees, in (−180, 180].
-double hue_difference(double a, double b) noexcept {
-    double d = std::fmod(b - a, 360.0);
-    if (d > 180.0) d -= 360.0;
-    if (d <= -180.0) d += 360.0;
-    return d;
-}
-
-/// The roots in [0, 1] of c0 + c1 s + c2 s² + c3 s³ where it changes sign, in increasing order
-/// (at most three; returns how many were written to `roots`): [0, 1] is cut at the derivative's
-/// roots into monotonic pieces, and every piece whose ends have opposite signs is bisected to the
-/// resolution of a double (the root is exact to rounding). A root where the cubic only touches 0
-/// without crossing it changes nothing about which side of a face a point is on and is skipped.
-int sign_changes_in_unit_interval(const std::array<double, 4>& c,
-                                  std::array<double, 3>& roots) noexcept {
-    const auto f = [&](double s) { return c[0] + s * (c[1] + s * (c[2] + s * c[3])); };
-    std::array<double, 4> cuts{0.0, 1.0, 1.0, 1.0};
-    int n = 1;
-    // f'(s) = c1 + 2 c2 s + 3 c3 s².
-    const double a = 3.0 * c[3], b = 2.0 * c[2], cc = c[1];
-    const auto add_cut = [&](double s) {
-        if (s > 0.0 && s < 1.0) cuts[n++] = s;
-    };
-    if (std::abs(a) > 1e-300) {
-        const double disc = b * b - 4.0 * a * cc;
-        if (disc >= 0.0) {
-            const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-            if (q != 0.0) add_cut(cc / q);
-            add_cut(q / a);
-        }
-    } else if (std::abs(b) > 1e-300) {
-        add_cut(-cc / b);
-    }
-    if (n == 3 && cuts[2] < cuts[1]) std::swap(cuts[1], cuts[2]);  // at most two interior cuts
-    cuts[n] = 1.0;
-    int found = 0;
-    for (int k = 0; k < n; ++k) {
-        double lo = cuts[k], hi = cuts[k + 1];
-        const bool negative_at_lo = f(lo) < 0.0;
-        if (negative_at_lo == (f(hi) < 0.0)) continue;
-        for (int it = 0; it < 200; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            if ((f(mid) < 0.0) == negative_at_lo) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        roots[static_cast<std::size_t>(found++)] = hi;
-    }
-    return found;
-}
-
 }  // namespace
 
 std::span<const ClipMethod> clip_methods() noexcept { return all_methods; }
@@ -133,7 +87,6 @@ std::string_view clip_method_name(ClipMethod method) noexcept {
         case ClipMethod::luv_hue: return "luv-hue";
         case ClipMethod::css: return "css";
         case ClipMethod::oklab: return "oklab";
-        case ClipMethod::smits_corrected: return "smits-corrected";
         case ClipMethod::css_raytrace: return "css-raytrace";
         case ClipMethod::oklab_adaptive: return "oklab-adaptive";
         case ClipMethod::oklab_cusp: return "oklab-cusp";
@@ -200,6 +153,9 @@ ClipMethod parse_clip_method(std::string_view name) {
         if (clip_method_name(m) == name) return m;
         names += (names.empty() ? "" : ", ") + std::string(clip_method_name(m));
         valid.emplace_back(clip_method_name(m));
+    }
+    for (const auto& [retired, why] : retired_methods) {
+        if (name == retired) throw UnknownNameError(std::string(why) + "; valid: " + names, std::move(valid));
     }
     throw UnknownNameError("unknown clip method " + quote_untrusted(name) + "; valid: " + names,
                            std::move(valid));
@@ -343,6 +299,22 @@ Xyz GamutClipper::clip_xyz(const Xyz& xyz) const noexcept {
     return {v[0], v[1], v[2]};
 }
 
+std::uint64_t GamutClipper::branch_signature(const Rgb& linear) const noexcept {
+    const Rgb c{finite_or_default(linear.r), finite_or_default(linear.g), finite_or_default(linear.b)};
+    if (m_gamut.contains(c)) return 0;
+    Branches b;
+    switch (m_method) {
+        case ClipMethod::luv_hue: (void)luv_hue(c, &b); break;
+        case ClipMethod::css: (void)css(c, &b); break;
+        case ClipMethod::oklab: (void)oklab(c, &b); break;
+        case ClipMethod::css_raytrace: (void)css_raytrace(c, &b); break;
+        case ClipMethod::oklab_adaptive: (void)oklab_projection(c, false, &b); break;
+        case ClipMethod::oklab_cusp: (void)oklab_projection(c, true, &b); break;
+        default: break;
+    }
+    return b.value;
+}
+
 Rgb GamutClipper::clip_finite(const Rgb& c) const noexcept {
     switch (m_method) {
         case ClipMethod::clamp: return clamp(c);
@@ -356,10 +328,9 @@ Rgb GamutClipper::clip_finite(const Rgb& c) const noexcept {
         case ClipMethod::luv_hue: return luv_hue(c);
         case ClipMethod::css: return css(c);
         case ClipMethod::oklab: return oklab(c);
-        case ClipMethod::smits_corrected: return smits_corrected(c);
         case ClipMethod::css_raytrace: return css_raytrace(c);
-        case ClipMethod::oklab_adaptive: return oklab_adaptive(c);
-        case ClipMethod::oklab_cusp: return oklab_cusp(c);
+        case ClipMethod::oklab_adaptive: return oklab_projection(c, false);
+        case ClipMethod::oklab_cusp: return oklab_projection(c, true);
         case ClipMethod::smits_soft: return smits_soft(c);
         case ClipMethod::aces_rgc: return aces_rgc(c);
     }
@@ -449,63 +420,90 @@ Rgb GamutClipper::luv_lightness_hue(const Rgb& c) const noexcept {
     return rgb(m_xyz_to_rgb * out);
 }
 
-Rgb GamutClipper::luv_hue(const Rgb& c) const noexcept {
+Rgb GamutClipper::luv_hue(const Rgb& c, Branches* branches) const noexcept {
+    // The nearest in-gamut colour in ΔE*uv within the colour's CIELUV hue plane, at every
+    // lightness: no black or white rule (the method moves lightness, so a colour brighter than
+    // the white lands on the hue's upper boundary, and one of negative luminance, whose L* and
+    // (u*, v*) are negative, near black).
     const Vec3 x = m_rgb_to_xyz * v3(c);
-    // The rule of every method: no luminance is black, the white's or more is white.
-    if (!(x[1] > 0.0)) return {0.0, 0.0, 0.0};
-    if (!(x[1] < m_white.Y)) return {m_gamut.max(), m_gamut.max(), m_gamut.max()};
-    // X + 15Y + 3Z <= 0 (far outside the spectral locus) has no chromaticity and so no hue.
-    if (!(x[0] + 15.0 * x[1] + 3.0 * x[2] > 0.0)) return luv_lightness_hue(c);
+    // X + 15Y + 3Z <= 0 (far outside the spectral locus) has no chromaticity and so no hue:
+    // the method is undefined there and falls back to luv-lightness-hue (GAMUT.md: the one place
+    // where luv-hue jumps, since u' and v' go to infinity as the plane is approached).
+    if (!(x[0] + 15.0 * x[1] + 3.0 * x[2] > 0.0)) {
+        take(branches, 1);
+        return luv_lightness_hue(c);
+    }
     const Luv luv = xyz_to_luv({x[0], x[1], x[2]}, m_white);
     const double c0 = std::hypot(luv.u, luv.v);
     const double l_max = 100.0;  // L* of the white (max, max, max), the reference
-    if (!(c0 > 1e-12)) return luv_lightness_hue(c);  // no hue: the grey, or black / white
+    if (!(c0 > 1e-12)) {
+        take(branches, 2);
+        // No hue: a grey (or nearly), whose nearest in-gamut colour is the grey of its L* clamped
+        // to [0, 100].
+        const double L = std::clamp(luv.L, 0.0, l_max);
+        const double g = m_gamut.max() * cie_lightness_to_relative_luminance(L);
+        return {g, g, g};
+    }
+    // The hue's unit direction in (u*, v*). For L* > 0 the chromaticity offset (u' − u'n,
+    // v' − v'n) points the same way; (u*, v*) = 13 L* times it.
     const double du = luv.u / c0, dv = luv.v / c0;
-    // The largest in-gamut chroma at lightness L along this hue: s of the chromaticity line
-    // scaled back to chroma, C = 13 L s / |(Δu', Δv')| with (Δu', Δv') = (du, dv) / (13 L).
+    // The largest in-gamut chroma at lightness L along this hue: luv_chroma_limit gives the
+    // largest fraction of a chromaticity offset inside the gamut at luminance y; the offset of
+    // chroma c0 at lightness L is (du, dv) c0 / (13 L).
     const auto c_max = [&](double L) {
         if (!(L > 0.0) || !(L < l_max)) return 0.0;
         const double y = m_white.Y * cie_lightness_to_relative_luminance(L);
-        const double scale = 1.0 / (13.0 * L);  // chroma 1 → chromaticity offset
-        // luv_chroma_limit works on s ∈ [0, 1] of a given offset: use the offset of chroma c0.
-        return c0 * luv_chroma_limit(y, du * c0 * scale, dv * c0 * scale);
+        const double scale = c0 / (13.0 * L);
+        return c0 * luv_chroma_limit(y, du * scale, dv * scale);
     };
     const auto distance2 = [&](double L) {
         const double cm = std::min(c0, c_max(L));
         return (L - luv.L) * (L - luv.L) + (c0 - cm) * (c0 - cm);
     };
-    // Dense search over L in [0, 100], then golden-section refinement around the best sample.
-    constexpr int samples = 200;
+    // A 1-D minimisation over L in [0, 100]: the distance is continuous but need not be
+    // unimodal (the slice of the cube is not convex), so every local minimum of a grid of
+    // 256 intervals is refined by golden section within its two neighbouring intervals, and the
+    // best of them is kept (tests/gamut/luv_hue_test.cpp checks it against a dense search).
+    constexpr int samples = 256;
+    std::array<double, samples + 1> f{};
+    for (int k = 0; k <= samples; ++k) f[static_cast<std::size_t>(k)] = distance2(l_max * k / samples);
     double best_l = 0.0, best = std::numeric_limits<double>::infinity();
-    for (int k = 0; k <= samples; ++k) {
-        const double L = l_max * k / samples;
-        const double d2 = distance2(L);
-        if (d2 < best) {
-            best = d2;
-            best_l = L;
-        }
-    }
-    double lo = std::max(0.0, best_l - l_max / samples), hi = std::min(l_max, best_l + l_max / samples);
+    int best_k = 0;
     constexpr double golden = 0.6180339887498949;
-    double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
-    double fa = distance2(a), fb = distance2(b);
-    for (int it = 0; it < 60; ++it) {
-        if (fa < fb) {
-            hi = b;
-            b = a;
-            fb = fa;
-            a = hi - golden * (hi - lo);
-            fa = distance2(a);
-        } else {
-            lo = a;
-            a = b;
-            fa = fb;
-            b = lo + golden * (hi - lo);
-            fb = distance2(b);
+    for (int k = 0; k <= samples; ++k) {
+        const std::size_t i = static_cast<std::size_t>(k);
+        if ((k > 0 && f[i - 1] < f[i]) || (k < samples && f[i + 1] < f[i])) continue;
+        double lo = l_max * std::max(0, k - 1) / samples, hi = l_max * std::min(samples, k + 1) / samples;
+        double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+        double fa = distance2(a), fb = distance2(b);
+        for (int it = 0; it < 80 && hi - lo > 1e-13 * l_max; ++it) {
+            if (fa < fb) {
+                hi = b;
+                b = a;
+                fb = fa;
+                a = hi - golden * (hi - lo);
+                fa = distance2(a);
+            } else {
+                lo = a;
+                a = b;
+                fa = fb;
+                b = lo + golden * (hi - lo);
+                fb = distance2(b);
+            }
+        }
+        for (const auto& [L, value] : {std::pair{l_max * k / samples, f[i]}, {0.5 * (lo + hi), distance2(0.5 * (lo + hi))}}) {
+            if (value < best) {
+                best = value;
+                best_l = L;
+                best_k = k;
+            }
         }
     }
-    const double L = distance2(0.5 * (lo + hi)) < best ? 0.5 * (lo + hi) : best_l;
+    take(branches, 3 + static_cast<std::uint64_t>(best_k));  // which local minimum
+    const double L = best_l;
     const double C = std::min(c0, c_max(L));
+    if (!(L > 0.0)) return {0.0, 0.0, 0.0};
+    if (!(L < l_max)) return {m_gamut.max(), m_gamut.max(), m_gamut.max()};
     return rgb(m_xyz_to_rgb * [&] {
         const Xyz out = luv_to_xyz({L, C * du, C * dv}, m_white);
         return Vec3{out.X, out.Y, out.Z};
@@ -514,13 +512,13 @@ Rgb GamutClipper::luv_hue(const Rgb& c) const noexcept {
 
 // --- Oklab methods ---------------------------------------------------------------------------
 
-Rgb GamutClipper::css(const Rgb& origin) const noexcept {
+Rgb GamutClipper::css(const Rgb& origin, Branches* branches) const noexcept {
     // CSS Color Module Level 4, §13.2.2 "Binary Search Gamut Mapping with Local MINDE", steps
     // as the specification writes them; "white" and "black" are the gamut's extremes.
     const double max = m_gamut.max();
     const Oklab lab = to_oklab(origin);
-    if (lab.L >= m_white_oklab_l) return {max, max, max};
-    if (lab.L <= 0.0) return {0.0, 0.0, 0.0};
+    if (lab.L >= m_white_oklab_l) { take(branches, 1); return Rgb{max, max, max}; }
+    if (lab.L <= 0.0) { take(branches, 2); return Rgb{0.0, 0.0, 0.0}; }
     if (m_gamut.contains(origin)) return origin;
     const Oklch origin_lch = oklab_to_oklch(lab);
     Oklch current = origin_lch;
@@ -529,7 +527,7 @@ Rgb GamutClipper::css(const Rgb& origin) const noexcept {
     };
     Rgb clipped = clamp(from_oklab(oklch_to_oklab(current)));
     double e = delta(clipped, current);
-    if (e < css_jnd) return clipped;
+    if (e < css_jnd) { take(branches, 3); return clipped; }
     double lo = 0.0, hi = origin_lch.C;
     bool lo_in_gamut = true;
     while (hi - lo > css_epsilon) {
@@ -537,23 +535,26 @@ Rgb GamutClipper::css(const Rgb& origin) const noexcept {
         current.C = chroma;
         const Rgb candidate = from_oklab(oklch_to_oklab(current));
         if (lo_in_gamut && m_gamut.contains(candidate)) {
+            take(branches, 4);
             lo = chroma;
             continue;
         }
         clipped = clamp(candidate);
         e = delta(clipped, current);
         if (e < css_jnd) {
-            if (css_jnd - e < css_epsilon) return clipped;
+            if (css_jnd - e < css_epsilon) { take(branches, 5); return clipped; }
+            take(branches, 6);
             lo_in_gamut = false;
             lo = chroma;
         } else {
+            take(branches, 7);
             hi = chroma;
         }
     }
     return clipped;
 }
 
-Rgb GamutClipper::oklab(const Rgb& c) const noexcept {
+Rgb GamutClipper::oklab(const Rgb& c, Branches* branches) const noexcept {
     const double max = m_gamut.max();
     // Within rounding of the cube, the colour is on it (clip.h): the line of its lightness and
     // hue may meet the cube only at the colour itself (sRGB blue's leaves through r = 0 at 85 %
@@ -564,120 +565,16 @@ Rgb GamutClipper::oklab(const Rgb& c) const noexcept {
     const double tol = oklab_rounding_tolerance * max;
     if (c.r >= -tol && c.g >= -tol && c.b >= -tol && c.r <= max + tol && c.g <= max + tol &&
         c.b <= max + tol) {
+        take(branches, 1);
         return clamp(c);
     }
     const Oklab lab = to_oklab(c);
-    if (!(lab.L > 0.0)) return {0.0, 0.0, 0.0};
-    if (!(lab.L < m_white_oklab_l)) return {max, max, max};
-    // Along (L, s a, s b) the cube roots of LMS are linear in s, so each channel is a cubic in s:
-    // channel_i(s) = Σ_j M_ij (p_j + s q_j)³.
-    const Vec3 p = oklab_m2_inverse * Vec3{lab.L, 0.0, 0.0};
-    const Vec3 q = oklab_m2_inverse * Vec3{0.0, lab.a, lab.b};
-    std::array<std::array<double, 4>, 3> channel{};
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            const double m = m_lms_to_rgb[i][j];
-            channel[i][0] += m * p[j] * p[j] * p[j];
-            channel[i][1] += m * 3.0 * p[j] * p[j] * q[j];
-            channel[i][2] += m * 3.0 * p[j] * q[j] * q[j];
-            channel[i][3] += m * q[j] * q[j] * q[j];
-        }
-    }
-    // How far the point at s is outside the cube (0 inside): the largest excess of a channel.
-    const auto outside = [&](double s) {
-        double e = 0.0;
-        for (const auto& k : channel) {
-            const double v = k[0] + s * (k[1] + s * (k[2] + s * k[3]));
-            e = std::max({e, -v, v - max});
-        }
-        return e;
-    };
-    // The line enters or leaves the cube only where a channel crosses 0 or max: between two
-    // consecutive such s (and 0, 1) it is inside throughout or outside throughout. It may start
-    // outside (just below the white's lightness, see below), and leave and come back (the cube
-    // is not convex in Oklab), so the boundary nearest the colour is the upper end of the last
-    // piece inside, not the first crossing from the grey.
-    std::array<double, 20> cuts{};  // 0, 1 and up to 3 crossings of 0 and of max per channel
-    std::size_t n = 0;
-    cuts[n++] = 0.0;
-    cuts[n++] = 1.0;
-    for (const auto& k : channel) {
-        for (const double bound : {0.0, max}) {
-            std::array<double, 3> roots{};
-            const int found =
-                sign_changes_in_unit_interval({k[0] - bound, k[1], k[2], k[3]}, roots);
-            for (int r = 0; r < found; ++r) cuts[n++] = roots[static_cast<std::size_t>(r)];
-        }
-    }
-    std::sort(cuts.begin(), cuts.begin() + static_cast<std::ptrdiff_t>(n));
-    double s = -1.0;
-    for (std::size_t k = n - 1; k >= 1 && s < 0.0; --k) {
-        if (cuts[k] > cuts[k - 1] && outside(0.5 * (cuts[k - 1] + cuts[k])) == 0.0) s = cuts[k];
-    }
-    if (s < 0.0) {
-        // No chroma of this lightness and hue is inside: only within about 1.4e-4 of the white's
-        // lightness, where Oklab's neutral axis itself leaves the cube (the published matrices
-        // give the white a chroma of about 1e-4). The crossing (or end) nearest the cube, which
-        // clip clamps: L moves by a third of at most the neutral's 4.2e-4 excess (the first
-        // crossing of a bound, taken before, moved L by up to 0.32).
-        double nearest = std::numeric_limits<double>::infinity();
-        for (std::size_t k = 0; k < n; ++k) {
-            const double e = outside(cuts[k]);
-            if (e < nearest) {
-                nearest = e;
-                s = cuts[k];
-            }
-        }
-    }
+    if (!(lab.L > 0.0)) { take(branches, 2); return Rgb{0.0, 0.0, 0.0}; }
+    if (!(lab.L < m_white_oklab_l)) { take(branches, 3); return Rgb{max, max, max}; }
+    // The chroma line (L, s a, s b), s in [0, 1], is the segment of Ottosson's projections with
+    // L0 = L: its exit, the upper end of the last piece inside the cube (oklab_projection.cpp).
+    const double s = oklab_segment_exit(lab.L, lab, branches);
     return from_oklab({lab.L, s * lab.a, s * lab.b});
-}
-
-Rgb GamutClipper::smits_corrected(const Rgb& c) const noexcept {
-    const Rgb p = smits(c);
-    // Black and white (no luminance, or the white's or more) are the rule of every method: no
-    // hue to correct (the white's Oklab chroma of about 1e-4 is the published matrices' rounding).
-    if (p.r == p.g && p.g == p.b) return p;
-    const Oklch target = oklab_to_oklch(to_oklab(c));
-    const Oklch now = oklab_to_oklch(to_oklab(p));
-    if (target.C < 1e-9 || now.C < 1e-9) return p;
-    const double max = m_gamut.max();
-    const Vec3& lum = m_gamut.luminance_row();
-    const std::array<double, 3> v{p.r, p.g, p.b};
-    const double tol = 1e-12 * max;
-    Rgb best = p;
-    double best_error = std::abs(hue_difference(now.h, target.h));
-    // The step is no longer than smits' own move (clip.h): the hue error it corrects came from
-    // that move, and where the face runs nearly along the hue the linear step would be far longer
-    // (a colour 1e-9 outside sRGB moved by 6e-5).
-    const double reach = std::hypot(c.r - p.r, c.g - p.g, c.b - p.b);
-    // On each face the point lies on, the direction that keeps both the face (its channel) and
-    // the luminance: d = e_k × (A, B, C). One Newton step on the Oklab hue along it.
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(v[k]) <= tol || std::abs(v[k] - max) <= tol)) continue;
-        Vec3 d{};
-        const int i = (k + 1) % 3, j = (k + 2) % 3;
-        d[i] = lum[j];
-        d[j] = -lum[i];
-        const double norm = std::hypot(d[i], d[j]);
-        if (!(norm > 0.0)) continue;
-        const double h = 1e-6 * max / norm;
-        const Rgb forward{p.r + h * d[0], p.g + h * d[1], p.b + h * d[2]};
-        const Rgb backward{p.r - h * d[0], p.g - h * d[1], p.b - h * d[2]};
-        const double slope = hue_difference(oklab_to_oklch(to_oklab(backward)).h,
-                                            oklab_to_oklch(to_oklab(forward)).h) / (2.0 * h);
-        if (!(std::abs(slope) > 0.0) || !std::isfinite(slope)) continue;
-        const double longest = reach / norm;
-        const double tau = std::clamp(hue_difference(now.h, target.h) / slope, -longest, longest);
-        Rgb moved{p.r + tau * d[0], p.g + tau * d[1], p.b + tau * d[2]};
-        // Leaving the face's edge: bring it back along constant luminance (the thesis' clip).
-        if (!m_gamut.contains(moved)) moved = smits(moved);
-        const double error = std::abs(hue_difference(oklab_to_oklch(to_oklab(moved)).h, target.h));
-        if (error < best_error) {
-            best_error = error;
-            best = moved;
-        }
-    }
-    return best;
 }
 
 // --- Table 1 ---------------------------------------------------------------------------------

@@ -31,6 +31,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -73,15 +75,22 @@ std::optional<std::array<double, 3>> cast_ray(const std::array<double, 3>& start
 
 }  // namespace
 
-Rgb GamutClipper::css_raytrace(const Rgb& origin) const noexcept {
+Rgb GamutClipper::css_raytrace(const Rgb& origin, Branches* branches) const noexcept {
     const double max = m_gamut.max();
     // Steps 2–4: OkLCh of the origin; the lightness range maps to white or black.
     const Oklch origin_lch = oklab_to_oklch(to_oklab(origin));
-    if (origin_lch.L >= m_white_oklab_l) return {max, max, max};
-    if (origin_lch.L <= 0.0) return {0.0, 0.0, 0.0};
+    if (origin_lch.L >= m_white_oklab_l) {
+        take(branches, 1);
+        return {max, max, max};
+    }
+    if (origin_lch.L <= 0.0) {
+        take(branches, 2);
+        return {0.0, 0.0, 0.0};
+    }
     const double tol = oklab_rounding_tolerance * max;
     if (origin.r >= -tol && origin.g >= -tol && origin.b >= -tol && origin.r <= max + tol &&
         origin.g <= max + tol && origin.b <= max + tol) {
+        take(branches, 3);
         return clamp(origin);
     }
     const double l_origin = origin_lch.L;
@@ -108,13 +117,28 @@ Rgb GamutClipper::css_raytrace(const Rgb& origin) const noexcept {
             const std::optional<std::array<double, 3>> intersection =
                 cast_ray(anchor, origin_rgb, max);
             if (!intersection) {
+                take(branches, 4);
                 origin_rgb = last;  // footnote 5
                 break;
             }
             if (i > 0 && low < origin_rgb[0] && origin_rgb[0] < high && low < origin_rgb[1] &&
                 origin_rgb[1] < high && low < origin_rgb[2] && origin_rgb[2] < high) {
+                take(branches, 5);
                 anchor = origin_rgb;  // footnote 4: below the surface, a closer anchor
             }
+            // The face the ray reached: the channel nearest a bound, and which bound.
+            std::uint64_t face = 0;
+            double nearest = std::numeric_limits<double>::infinity();
+            for (std::size_t k = 0; k < 3; ++k) {
+                for (const double bound : {0.0, max}) {
+                    const double d = std::abs((*intersection)[k] - bound);
+                    if (d < nearest) {
+                        nearest = d;
+                        face = 2 * k + (bound > 0.0 ? 1 : 0);
+                    }
+                }
+            }
+            take(branches, 6 + face);
             origin_rgb = *intersection;
             last = *intersection;
         }

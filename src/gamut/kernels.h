@@ -10,8 +10,7 @@
 // double reference (tests/gamut/*_test.cpp) and does not depend on the thread count (each colour
 // is computed alone).
 //
-// Files: batch_simd_smits.cpp (smits-xyz, luv-lightness-hue, smits-corrected,
-// smits-soft), batch_simd_aces.cpp (aces-rgc), batch_simd_css.cpp (css, css-raytrace),
+// Files: batch_simd_smits.cpp (smits-xyz, luv-lightness-hue, smits-soft), batch_simd_aces.cpp (aces-rgc), batch_simd_css.cpp (css, css-raytrace),
 // batch_simd_oklab.cpp (oklab, oklab-adaptive, oklab-cusp).
 
 #include <irid/color/matrix.h>
@@ -44,8 +43,6 @@ using ClipKernel = std::size_t (*)(const GamutClipper& clipper, const float* in,
 std::size_t clip_smits_xyz_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;
 std::size_t clip_luv_lightness_hue_simd(const GamutClipper&, const float*, float*,
                                         std::size_t) noexcept;
-std::size_t clip_smits_corrected_simd(const GamutClipper&, const float*, float*,
-                                      std::size_t) noexcept;
 std::size_t clip_smits_soft_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;
 std::size_t clip_aces_rgc_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;
 std::size_t clip_css_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;

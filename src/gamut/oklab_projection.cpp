@@ -26,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 
 namespace irid {
@@ -125,6 +126,10 @@ Cubic rescaled(const Cubic& c, double scale) noexcept {
 /// most saturated colours have S below 3, ACES2065-1's imaginary blue included).
 constexpr double saturation_search_limit = 64.0;
 
+/// oklab-cusp's centre is kept within [cusp_centre_low, cusp_centre_high] × the white's L.
+constexpr double cusp_centre_low = 0.01;
+constexpr double cusp_centre_high = 0.99;
+
 /// Ottosson's adaptive L0 for a colour of lightness l and chroma c, around l_cusp.
 double oklab_adaptive_l0(double l, double c, double l_cusp, double l_white,
                          double alpha) noexcept {
@@ -132,16 +137,22 @@ double oklab_adaptive_l0(double l, double c, double l_cusp, double l_white,
     // (Ottosson's white has L = 1): with l_cusp = 1/2 it is gamut_clip_adaptive_L0_0_5.
     const double lr = l / l_white, cr = c / l_white, lc = l_cusp / l_white;
     const double ld = lr - lc;
+    // Every lightness takes the formula, below 0 and above the white's too: its L0 stays inside
+    // (0, l_cusp) below the cusp and (l_cusp, 1) above it, so a colour brighter than the white
+    // moves toward a point inside the gamut, as Ottosson's code does (it has no white rule).
     const double k = 2.0 * (ld > 0.0 ? 1.0 - lc : lc);
     const double e1 = 0.5 * k + std::abs(ld) + alpha * cr / k;
     const double root = std::sqrt(std::max(0.0, e1 * e1 - 2.0 * k * std::abs(ld)));
     const double sign = ld > 0.0 ? 1.0 : (ld < 0.0 ? -1.0 : 0.0);
-    return l_white * (lc + 0.5 * sign * (e1 - root));
+    // e1 − root, written without the cancellation of two large numbers (HDR and far colours).
+    const double step = 2.0 * k * std::abs(ld) / (e1 + root);
+    return l_white * (lc + 0.5 * sign * step);
 }
 
 }  // namespace
 
-GamutClipper::OklabCusp GamutClipper::oklab_cusp_of_hue(double a_unit, double b_unit) const noexcept {
+GamutClipper::OklabCusp GamutClipper::oklab_cusp_of_hue(double a_unit, double b_unit,
+                                                        Branches* branches) const noexcept {
     const double max = m_gamut.max();
     const std::array<Cubic, 3> k =
         channel_cubics(m_lms_to_rgb, {1.0, 0.0, 0.0}, {0.0, a_unit, b_unit});
@@ -175,16 +186,25 @@ GamutClipper::OklabCusp GamutClipper::oklab_cusp_of_hue(double a_unit, double b_
     // Candidates for the largest S³ / m(S) on the inside pieces: their ends, and the stationary
     // points and switches of the largest channel within them.
     std::array<double, 64> candidates{};
+    std::array<std::uint64_t, 64> kinds{};  // which kind of candidate (for branch_signature)
     std::size_t n = 0;
     for (std::size_t piece = 0; piece + 1 < n_cuts; ++piece) {
         const double lo = cuts[piece], hi = cuts[piece + 1];
         if (!(hi > lo) || !in_octant(0.5 * (lo + hi))) continue;
+        kinds[n] = 1;
         candidates[n++] = lo;
+        kinds[n] = 2;
         candidates[n++] = hi;
+        std::uint64_t kind = 0;
         const auto add = [&](double s) {
-            if (s > lo && s < hi && n < candidates.size()) candidates[n++] = s;
+            if (s > lo && s < hi && n < candidates.size()) {
+                kinds[n] = kind;
+                candidates[n++] = s;
+            }
         };
+        kind = 3;
         for (const Cubic& c : k) {
+            ++kind;  // a stationary point of channel 0, 1, 2: kinds 4, 5, 6
             // S p' − 3 p = −(3 c0 + 2 c1 S + c2 S²): zero where S³ / p is stationary.
             const double qa = c[2], qb = 2.0 * c[1], qc = 3.0 * c[0];
             if (std::abs(qa) > 1e-300) {
@@ -210,11 +230,13 @@ GamutClipper::OklabCusp GamutClipper::oklab_cusp_of_hue(double a_unit, double b_
                                     diff[2] + 3.0 * lo * diff[3], diff[3]};
                 std::array<double, 3> roots{};
                 const int found = sign_changes(rescaled(shifted, w), roots);
+                kind = 7 + static_cast<std::uint64_t>(i + j);  // channels i and j switch
                 for (int r = 0; r < found; ++r) add(lo + roots[static_cast<std::size_t>(r)] * w);
             }
         }
     }
     OklabCusp best{0.0, 0.0, s_max, s_max, zero_channel};
+    std::uint64_t best_kind = 0;
     for (std::size_t c = 0; c < n; ++c) {
         const double s = candidates[c];
         const double m = largest_channel(s);
@@ -224,12 +246,15 @@ GamutClipper::OklabCusp GamutClipper::oklab_cusp_of_hue(double a_unit, double b_
             best.L = l;
             best.C = s * l;
             best.S = s;
+            best_kind = kinds[c];
         }
     }
+    take(branches, best_kind);
     return best;
 }
 
-double GamutClipper::oklab_segment_exit(double l0, const Oklab& lab) const noexcept {
+double GamutClipper::oklab_segment_exit(double l0, const Oklab& lab,
+                                        Branches* branches) const noexcept {
     const double max = m_gamut.max();
     const std::array<Cubic, 3> channel =
         channel_cubics(m_lms_to_rgb, {l0, 0.0, 0.0}, {lab.L - l0, lab.a, lab.b});
@@ -258,14 +283,24 @@ double GamutClipper::oklab_segment_exit(double l0, const Oklab& lab) const noexc
         }
     }
     std::sort(cuts.begin(), cuts.begin() + static_cast<std::ptrdiff_t>(n));
+    // The pieces inside, counted from the colour's end: the result is the first of them.
     double t = -1.0;
-    for (std::size_t k = n - 1; k >= 1 && t < 0.0; --k) {
-        if (cuts[k] > cuts[k - 1] && outside(0.5 * (cuts[k - 1] + cuts[k])) == 0.0) t = cuts[k];
+    std::uint64_t pieces = 0;
+    bool after_inside = false;  // the interval above (toward the colour) was inside
+    for (std::size_t k = n - 1; k >= 1; --k) {
+        if (!(cuts[k] > cuts[k - 1])) continue;  // two crossings at one t: no interval
+        const bool inside = outside(0.5 * (cuts[k - 1] + cuts[k])) == 0.0;
+        if (inside && t < 0.0) t = cuts[k];
+        if (inside && !after_inside) ++pieces;
+        after_inside = inside;
     }
+    take(branches, pieces);
     if (t < 0.0) {
-        // No point of the segment is inside: only when L0 is within about 1.4e-4 of the white's
-        // L, where Oklab's neutral axis leaves the cube (clip.h). The crossing (or end) nearest
-        // the cube, which clip clamps.
+        // No point of the segment is inside: the grey (L0, 0, 0) is inside the cube for every L0
+        // in [0, the white's L] (clip.h: CSS Color 4's Oklab), so only through rounding at the
+        // ends of that range, or for a grey beyond it (ACES2065-1, whose cube holds colours of
+        // Oklab L below 0 and above the white's). The crossing (or end) nearest the cube, which
+        // clip clamps.
         double nearest = std::numeric_limits<double>::infinity();
         for (std::size_t k = 0; k < n; ++k) {
             const double e = outside(cuts[k]);
@@ -278,7 +313,7 @@ double GamutClipper::oklab_segment_exit(double l0, const Oklab& lab) const noexc
     return t;
 }
 
-Rgb GamutClipper::oklab_projection(const Rgb& c, bool around_cusp) const noexcept {
+Rgb GamutClipper::oklab_projection(const Rgb& c, bool around_cusp, Branches* branches) const noexcept {
     const double max = m_gamut.max();
     // Within rounding of the cube, the colour is on it (clip.h's rule, as for oklab), tested
     // first: inside ACES2065-1's cube (imaginary blue) Oklab L goes below 0 and above the
@@ -286,22 +321,25 @@ Rgb GamutClipper::oklab_projection(const Rgb& c, bool around_cusp) const noexcep
     const double tol = oklab_rounding_tolerance * max;
     if (c.r >= -tol && c.g >= -tol && c.b >= -tol && c.r <= max + tol && c.g <= max + tol &&
         c.b <= max + tol) {
+        take(branches, 1);
         return clamp(c);
     }
     const Oklab lab = to_oklab(c);
-    if (!(lab.L > 0.0)) return {0.0, 0.0, 0.0};
-    if (!(lab.L < m_white_oklab_l)) return {max, max, max};
     const double chroma = std::hypot(lab.a, lab.b);
     double l_centre = 0.5 * m_white_oklab_l;
     if (around_cusp) {
         // A grey has no hue; its segment is along L whatever the cusp, take hue a' = 1.
         const double au = chroma > 0.0 ? lab.a / chroma : 1.0;
         const double bu = chroma > 0.0 ? lab.b / chroma : 0.0;
-        l_centre = oklab_cusp_of_hue(au, bu).L;
+        // Ottosson's L0 needs its centre inside the neutral range (0, the white's L): a gamut
+        // with imaginary primaries (ACES2065-1) has hues whose cusp lies above the white's
+        // lightness; there the centre is the nearest end of [0.01, 0.99] × the white's L.
+        l_centre = std::clamp(oklab_cusp_of_hue(au, bu, branches).L, cusp_centre_low * m_white_oklab_l,
+                              cusp_centre_high * m_white_oklab_l);
     }
     const double alpha = m_parameters[0].second;
     const double l0 = oklab_adaptive_l0(lab.L, chroma, l_centre, m_white_oklab_l, alpha);
-    const double t = oklab_segment_exit(l0, lab);
+    const double t = oklab_segment_exit(l0, lab, branches);
     Rgb out = from_oklab({l0 + t * (lab.L - l0), t * lab.a, t * lab.b});
     // The point is on a face to within rounding (a few ulps): put the channel nearest its bound
     // exactly on it.
@@ -381,7 +419,5 @@ void GamutClipper::prepare_oklab_projection() {
     m_derived[15] = structured ? 1.0 : 0.0;
 }
 
-Rgb GamutClipper::oklab_adaptive(const Rgb& c) const noexcept { return oklab_projection(c, false); }
-Rgb GamutClipper::oklab_cusp(const Rgb& c) const noexcept { return oklab_projection(c, true); }
 
 }  // namespace irid

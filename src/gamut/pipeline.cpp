@@ -163,6 +163,20 @@ void ClipPipeline::clip(std::span<const double> in, std::span<double> out, int t
     });
 }
 
+void ClipPipeline::branch_signatures(std::span<const double> in, std::span<std::uint64_t> out,
+                                     int threads) const {
+    if (in.size() % 3 != 0 || out.size() != in.size() / 3) {
+        throw Error("branch_signatures: " + std::to_string(in.size()) + " values in and " +
+                    std::to_string(out.size()) + " out; must be whole triples and one value per triple");
+    }
+    check_xyy(in);
+    for_colours(in.size() / 3, threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            out[i] = m_clipper.branch_signature(to_linear(Vec3{in[3 * i], in[3 * i + 1], in[3 * i + 2]}));
+        }
+    });
+}
+
 void ClipPipeline::to_linear(std::span<const float> in, std::span<float> out, int threads) const {
     check(in.size(), out.size(), in.data(), out.data(), sizeof(float));
     check_xyy(in);

@@ -75,8 +75,8 @@ read -r LR LG LB < <(awk 'BEGIN {
 mapfile -t METHODS < <("$IRID" clip --help | sed -n 's/.*--method TEXT *Clipping method: //p' |
     tr -d ' ' | tr ',' '\n')
 # The methods that keep in-gamut colours and whose output is always inside the cube.
-HARD_METHODS=(clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected
-    css-raytrace oklab-adaptive oklab-cusp)
+HARD_METHODS=(clamp smits smits-xyz luv-lightness-hue luv-hue css oklab css-raytrace
+    oklab-adaptive oklab-cusp)
 
 # === 1. CSV: the contract's defaults and shape ============================================
 
@@ -138,20 +138,25 @@ W=$(awk -v LR="$LR" -v LG="$LG" -v LB="$LB" 'BEGIN { y = LR * 1.5 - LG * 0.2 + L
 run $'1.5,-0.2,0.3\n' clip --method smits
 expect_close "$W" 1e-12
 
-# Y <= 0 gives black, Y at or above the white's gives white, for every method but clamp (which
-# works per channel).
-for m in smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected css-raytrace \
-    oklab-adaptive oklab-cusp smits-soft; do
+# The methods that keep a lightness: Y (or Oklab L) <= 0 gives black, at or above the white's
+# gives white. clamp works per channel.
+for m in smits smits-xyz luv-lightness-hue css oklab css-raytrace smits-soft; do
     run $'-0.1,-0.1,-0.2\n-1,0.1,0.2\n0,0,-1e-3\n' clip --method "$m"
     expect_output $'R,G,B\n0,0,0\n0,0,0\n0,0,0\n'
     run $'2,1.5,1.2\n' clip --method "$m"
     expect_rows_where 1 'abs($1 - 1) < 1e-9 && abs($2 - 1) < 1e-9 && abs($3 - 1) < 1e-9' "white (1, 1, 1)"
 done
+# The methods that move lightness have no such rule (GAMUT.md): a colour brighter than the white
+# keeps a hue, red stays red, and lands on the cube's surface, not on white.
+for m in luv-hue oklab-adaptive oklab-cusp; do
+    run $'2,1.5,1.2\n10,0,0\n' clip --method "$m"
+    expect_rows_where 2 '$1 == 1 && $2 < 0.999 && $3 < 0.999 && $2 >= 0 && $3 >= 0' "a colour of red's hue on the face r = 1, not white"
+done
 
 # Every method accepts every name and returns colours inside the cube.
 RAN="the method list read from irid clip --help"
-if [[ ${#METHODS[@]} -eq 13 && " ${METHODS[*]} " == *" aces-rgc "* ]]; then pass; else
-    fail "13 methods incl. aces-rgc" "${METHODS[*]}"; fi
+if [[ ${#METHODS[@]} -eq 12 && " ${METHODS[*]} " == *" aces-rgc "* ]]; then pass; else
+    fail "12 methods incl. aces-rgc" "${METHODS[*]}"; fi
 # (aces-rgc confines its output only with clip=true; section 9 checks it without.)
 for m in "${METHODS[@]}"; do
     extra=()
@@ -224,7 +229,9 @@ fi
 # === 5. Errors ============================================================================
 
 run $'1,1,1\n' clip --method no-such-method
-expect_usage_error "smits-corrected"
+expect_usage_error "css-raytrace"
+run $'1,1,1\n' clip --method smits-corrected
+expect_usage_error "retired"
 run $'1,1,1\n' clip
 expect_usage_error "luv-lightness-hue"
 run $'1,1,1\n' clip --method smits --to lab
@@ -499,14 +506,14 @@ expect_pixels "$EDGE/blue-clipped.exr" 4 'abs($1) < 1e-6 && abs($2) < 1e-6 && ab
 # maximum of 5.83, from colours a rounding error outside the cube after the conversions.
 run '' clip-report --set rec2020 --to rec2020
 expect_stdout_has "729 colours, 0 out of the rec2020 gamut"
-for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab css-raytrace; do
     expect_stdout_has "| $method | 0.00 | 0.00 | 0.00 |"
 done
 # The second table: every colour is inside, so in-gamut ΔE2000 is that of the whole set (0 for
 # the methods that leave in-gamut colours alone), and the set has no ramps ("–").
 expect_stdout_has "ΔE00 of the 729 colours inside the gamut"
 expect_stdout_has "| method | in-gamut ΔE00 mean / max | banding mean / max | collapse | collapse ½ step |"
-for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab css-raytrace; do
     expect_stdout_has "| $method | 0.00 / 0.00 | – | – | – |"
 done
 
@@ -517,7 +524,7 @@ expect_status 0
 expect_stdout_has "Set ramps: 36864 colours, "
 expect_stdout_has " out of the display-p3 gamut."
 expect_stdout_has "over 144 ramps; the input ramps' own banding is 1.0"
-for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected \
+for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab \
               css-raytrace oklab-adaptive oklab-cusp smits-soft aces-rgc; do
     rows=$(grep -c "^| $method | " "$TMP/out")
     RAN="irid clip-report --set ramps --to display-p3: rows of $method"
@@ -525,7 +532,7 @@ for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-co
 done
 # The hard clips that leave in-gamut colours alone move none of them; smits sends every ramp's
 # tail to one point of the boundary, so each of its out-of-gamut steps collapses.
-for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab smits-corrected; do
+for method in clamp smits smits-xyz luv-lightness-hue luv-hue css oklab css-raytrace; do
     expect_stdout_has "| $method | 0.00 / 0.00 | "
 done
 RAN="irid clip-report --set ramps --to display-p3: smits' collapse"

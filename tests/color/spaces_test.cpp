@@ -130,6 +130,27 @@ TEST(Oklab, ReproducesOttossonsPublishedTable) {
     }
 }
 
+TEST(Oklab, TheRefittedMatricesPutTheD65WhiteOnTheNeutralAxis) {
+    // CSS Color 4's matrices: the D65 white (0.3127, 0.3290) is Oklab (1, 0, 0) to rounding;
+    // Ottosson's published ones give it a chroma of about 1.2e-4, and differ from the refitted
+    // ones by under 3.1e-4 in every element.
+    const Xyz white = xy_to_xyz({0.3127, 0.3290});
+    const Oklab lab = xyz_to_oklab(white);
+    EXPECT_NEAR(lab.L, 1.0, 1e-15);
+    EXPECT_NEAR(lab.a, 0.0, 1e-15);
+    EXPECT_NEAR(lab.b, 0.0, 1e-15);
+    const Vec3 lms = ottosson_published_oklab_m1 * Vec3{white.X, white.Y, white.Z};
+    const Vec3 published = ottosson_published_oklab_m2 * Vec3{std::cbrt(lms[0]), std::cbrt(lms[1]), std::cbrt(lms[2])};
+    EXPECT_GT(std::hypot(published[1], published[2]), 1e-4);
+    EXPECT_LT(std::hypot(published[1], published[2]), 1.3e-4);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            EXPECT_NEAR(oklab_m1[i][j], ottosson_published_oklab_m1[i][j], 3.1e-4);
+            EXPECT_NEAR(oklab_m2[i][j], ottosson_published_oklab_m2[i][j], 3.1e-4);
+        }
+    }
+}
+
 TEST(Hue, IsInDegreesInZeroTo360) {
     EXPECT_EQ(hue_degrees(0.0, 0.0), 0.0);
     EXPECT_DOUBLE_EQ(hue_degrees(1.0, 1.0), 45.0);

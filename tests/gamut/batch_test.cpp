@@ -399,7 +399,7 @@ TEST(ClipBatch, BadSpansAndThreadCountsThrow) {
 }
 
 }  // namespace
-// --- the float kernels of smits-xyz, luv-lightness-hue, smits-corrected, smits-soft -------------
+// --- the float kernels of smits-xyz, luv-lightness-hue, smits-soft ------------------------------
 
 /// The inputs of the kernel tests: uniform in [-1, 2 max]^3 (in and out of gamut), in-gamut
 /// colours, negative ones, channels of ±1e30 and ±1e20 beside ordinary ones, NaN and ±Inf, the
@@ -450,9 +450,8 @@ struct KernelCase {
     bool inverse;
 };
 constexpr KernelCase smits_family_kernels[] = {
-    {ClipMethod::smits_xyz, false},       {ClipMethod::luv_lightness_hue, false},
-    {ClipMethod::smits_corrected, false}, {ClipMethod::smits_soft, false},
-    {ClipMethod::smits_soft, true},
+    {ClipMethod::smits_xyz, false},  {ClipMethod::luv_lightness_hue, false},
+    {ClipMethod::smits_soft, false}, {ClipMethod::smits_soft, true},
 };
 
 TEST(SmitsFamilyKernels, FloatSimdIsWithin1e5OfTheDoubleReferenceOnEveryGamut) {

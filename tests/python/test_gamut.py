@@ -19,7 +19,7 @@ def sample(n, seed=3, lo=-0.5, hi=1.5):
 def test_every_method_is_listed_with_its_parameters():
     methods = irid.clip_methods()
     assert methods[:3] == ["clamp", "smits", "smits-xyz"]
-    assert len(methods) == 13
+    assert len(methods) == 12
     names = [p["name"] for p in irid.clip_parameters("aces-rgc")]
     assert names == ["limit-cyan", "limit-magenta", "limit-yellow", "threshold-cyan",
                      "threshold-magenta", "threshold-yellow", "power", "clip"]

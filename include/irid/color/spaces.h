@@ -47,20 +47,34 @@ inline constexpr double cie_kappa = 24389.0 / 27.0;
 /// CIELUV saturation s_uv = 13 [(u' − u'n)² + (v' − v'n)²]^½ = C*uv / L* (CIE 015:2018 §8.2.2).
 [[nodiscard]] double saturation_uv(const Xyz& c, const Xyz& white) noexcept;
 
-/// Oklab's M1 (XYZ with D65 white at Y = 1 → LMS), Ottosson 2020, "A perceptual color space
-/// for image processing", published matrix.
-inline constexpr Mat3 oklab_m1{{{{0.8189330101, 0.3618667424, -0.1288597137},
-                                 {0.0329845436, 0.9293118715, 0.0361456387},
-                                 {0.0482003018, 0.2643662691, 0.6338517070}}}};
-/// Oklab's M2 (cube-rooted LMS → Lab), Ottosson 2020, published matrix.
-inline constexpr Mat3 oklab_m2{{{{0.2104542553, 0.7936177850, -0.0040720468},
-                                 {1.9779984951, -2.4285922050, 0.4505937099},
-                                 {0.0259040371, 0.7827717662, -0.8086757660}}}};
+/// Oklab (Ottosson 2020, "A perceptual color space for image processing") with its matrices as
+/// CSS Color Module Level 4 defines them (§9.2 and its sample code conversions.js, "recalculated
+/// for consistent reference white", csswg-drafts issue 6642), as colorjs.io and the browsers
+/// use them: Ottosson's, refitted so that the D65 white (x, y) = (0.3127, 0.3290) maps to LMS
+/// (1, 1, 1) and to Oklab (1, 0, 0) to within 1e-15. Ottosson's published matrices (below, for
+/// reference) differ by under 3.1e-4 and give that white a chroma of 1.2e-4, so their neutral
+/// axis would leave every D65 RGB cube just below its white; irid uses the refitted ones
+/// everywhere, and they reproduce Ottosson's published table of XYZ → Oklab to its 3 decimals.
+/// M1: XYZ with D65 white at Y = 1 → LMS.
+inline constexpr Mat3 oklab_m1{{{{0.8190224379967030, 0.3619062600528904, -0.1288737815209879},
+                                 {0.0329836539323885, 0.9292868615863434, 0.0361446663506424},
+                                 {0.0481771893596242, 0.2642395317527308, 0.6335478284694309}}}};
+/// M2: cube-rooted LMS → Lab.
+inline constexpr Mat3 oklab_m2{{{{0.2104542683093140, 0.7936177747023054, -0.0040720430116193},
+                                 {1.9779985324311684, -2.4285922420485799, 0.4505937096174110},
+                                 {0.0259040424655478, 0.7827717124575296, -0.8086757549230774}}}};
 
-/// Inverses of M1 and M2, computed from them (Ottosson's published inverses are rounded to 10
-/// digits and would break exact round trips).
+/// Inverses of M1 and M2, computed from them (exact round trips).
 inline constexpr Mat3 oklab_m1_inverse = inverse_unchecked(oklab_m1);
 inline constexpr Mat3 oklab_m2_inverse = inverse_unchecked(oklab_m2);
+
+/// Ottosson's published M1 and M2 (2020, 10 digits), which the refitted ones replace.
+inline constexpr Mat3 ottosson_published_oklab_m1{{{{0.8189330101, 0.3618667424, -0.1288597137},
+                                                     {0.0329845436, 0.9293118715, 0.0361456387},
+                                                     {0.0482003018, 0.2643662691, 0.6338517070}}}};
+inline constexpr Mat3 ottosson_published_oklab_m2{{{{0.2104542553, 0.7936177850, -0.0040720468},
+                                                     {1.9779984951, -2.4285922050, 0.4505937099},
+                                                     {0.0259040371, 0.7827717662, -0.8086757660}}}};
 
 /// Oklab from XYZ relative to D65 (Y = 1 white); the cube root is odd-symmetric (cbrt) so
 /// negative LMS values from out-of-gamut colours stay invertible.

@@ -24,11 +24,18 @@
 // What the thesis leaves open, decided here for every method (and tested):
 // - Non-finite input: NaN channels are taken as 0 and ±Inf as ±1e30 before clipping, so every
 //   output is finite (an image never receives a NaN).
-// - Luminance at or below 0 gives black; at or above the white's (max, max, max) it gives that
-//   white: no colour of that luminance is in the gamut except the extremes. css and oklab apply
-//   the same rule to Oklab lightness instead (L <= 0 black, L at or above the white's L — 1 for
-//   the D65 spaces' white to 1e-6, cbrt(max) at an HDR peak — white), as CSS Color 4 does.
-//   With an HDR peak, CIELUV's L* is relative to the peak's white.
+// - Lightness at the ends: the methods that keep a lightness send a colour whose lightness is
+//   at or below black's to black and one at or above the white's (max, max, max) to that white,
+//   since no other colour of that lightness is in the gamut: smits, smits-xyz,
+//   luv-lightness-hue and smits-soft on luminance, oklab on Oklab L, and css and css-raytrace on
+//   Oklab L because CSS Color 4 prescribes it. The methods that move lightness (luv-hue,
+//   oklab-adaptive, oklab-cusp) have no such rule: their definitions apply at every lightness,
+//   below 0 and above the white's. With an HDR peak, CIELUV's L* is relative to the peak's white.
+// - Oklab is CSS Color 4's (color/spaces.h): the D65 white maps exactly onto Oklab's neutral
+//   axis (L = cbrt(max) for the white (max, max, max) of any space, adapted to D65), as in
+//   colorjs.io, so the grey of every lightness up to the white's is inside the cube. (With
+//   Ottosson's published M1 the white has a chroma of 1.2e-4, and the neutral axis leaves the
+//   cube 1.4e-4 below the white's L: css-raytrace's anchor fell outside the cube there.)
 // - A colour exactly on a face (a channel equal to 0 or to max) is in the gamut and unchanged.
 // - A colour within rounding outside the cube comes back within rounding of itself, whatever the
 //   method (tests/gamut/boundary_test.cpp: moved by at most 100 times its distance d to the cube,
@@ -38,13 +45,12 @@
 //   oklab keeps lightness and hue exactly, and the line of a colour's lightness and hue can meet
 //   the cube only at the colour: sRGB blue's leaves it through r = 0 at 85 % of blue's chroma and
 //   comes back only at the vertex, and so do those of the blue–black edge, of the blue end of
-//   the blue–cyan edge and of a strip of the face r = 0 beside them (Rec.2020 alike); just below
-//   the white's lightness Oklab's neutral axis itself leaves the cube (Display P3, Adobe RGB). A
+//   the blue–cyan edge and of a strip of the face r = 0 beside them (Rec.2020 alike). A
 //   colour a hair outside there has no colour of its lightness and hue near it, so a colour
 //   within oklab_rounding_tolerance × max of the cube (every channel in [−tol, max + tol]) is
 //   taken as on it and clamped (moved by at most that much); css-raytrace, oklab-adaptive and
-//   oklab-cusp apply the same rule (their rays and segments meet the same trouble);
-//   smits_corrected's hue step is at most as long as smits' own move. The soft methods are
+//   oklab-cusp apply the same rule (their rays and segments meet the same trouble). The soft
+//   methods are
 //   continuous and move such a colour by a bounded amount like any other near the boundary.
 // - The destination's maximum may differ from 1 (an HDR peak): the cube is [0, max]³.
 
@@ -54,6 +60,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -84,13 +91,9 @@ enum class ClipMethod {
     /// CSS Color Module Level 4 gamut mapping (binary search on OKLCh chroma, ΔEOK < JND 0.02).
     css,
     /// Constant Oklab lightness and hue, chroma reduced exactly to the boundary: to the nearest
-    /// chroma at or below the colour's that is inside the cube. Within about 1.4e-4 of the
-    /// white's L, where Oklab's neutral axis leaves the cube and no chroma is inside, the point
-    /// of the chroma line nearest the cube, clamped.
+    /// chroma at or below the colour's that is inside the cube (the upper end of the last piece
+    /// of the chroma line inside it). It jumps where a piece appears or vanishes (GAMUT.md).
     oklab,
-    /// smits followed by one Newton step along the gamut face toward the input's Oklab hue, at
-    /// constant luminance, no longer than smits' own move.
-    smits_corrected,
     /// CSS Color Module Level 4 "Ray Trace" gamut mapping (§13.2.3 of the current draft, with
     /// the corrections of csswg-drafts issue 14029): up to four slab intersections from the
     /// OkLCh(L, 0, h) anchor toward the colour, L and h restored after each, then a final clip.
@@ -119,7 +122,8 @@ enum class ClipMethod {
 [[nodiscard]] std::span<const ClipMethod> clip_methods() noexcept;
 /// The name used on the command line ("smits-xyz", "luv-lightness-hue", ...).
 [[nodiscard]] std::string_view clip_method_name(ClipMethod method) noexcept;
-/// Throws irid::Error listing the names when `name` is none of them.
+/// Throws irid::Error listing the names when `name` is none of them (and, for a retired method,
+/// why it was retired: smits-corrected, GAMUT.md).
 [[nodiscard]] ClipMethod parse_clip_method(std::string_view name);
 
 /// One parameter of a method: its name (as in `irid clip --param name=value`), default, allowed
@@ -243,6 +247,17 @@ public:
     /// (whose curve, forward or inverse, may leave colours outside the cube, as OCIO's does) and
     /// for the inverse of smits-soft (confines_to_cube()).
     [[nodiscard]] Rgb clip(const Rgb& linear) const noexcept;
+    /// Which branches of its definition the method took for this colour, as one number: two
+    /// colours with the same signature went through the same branches, and the method's output
+    /// is continuous between them; where the signature changes, the definition itself may jump
+    /// (GAMUT.md, "Where a method may jump"; tests/gamut/continuity_test.cpp). The branches
+    /// recorded: css, the lightness rule and each step of its binary search; css-raytrace, the
+    /// lightness rule and each pass (a ray found, the anchor moved, the face reached); oklab,
+    /// oklab-adaptive and oklab-cusp, the lightness rule, the pieces of the colour's line inside
+    /// the cube and the one that holds the result (and oklab-cusp's cusp candidate); luv-hue,
+    /// a colour without chromaticity (X + 15Y + 3Z <= 0) and the local minimum of its search.
+    /// 0 for an in-gamut colour and for the methods without such branches.
+    [[nodiscard]] std::uint64_t branch_signature(const Rgb& linear) const noexcept;
     /// The same on XYZ relative to the gamut's white (Y = max for the white), returning XYZ.
     /// For smits_xyz this is the thesis' XYZ form itself; the others go through RGB.
     [[nodiscard]] Xyz clip_xyz(const Xyz& xyz) const noexcept;
@@ -277,17 +292,23 @@ public:
     [[nodiscard]] Rgb from_oklab(const Oklab& c) const noexcept;
 
 private:
+    /// The branches taken, accumulated by the methods that branch (branch_signature).
+    struct Branches {
+        std::uint64_t value = 0;
+        void take(std::uint64_t branch) noexcept { value = value * 1000003u + branch + 1u; }
+    };
+    static void take(Branches* b, std::uint64_t branch) noexcept {
+        if (b != nullptr) b->take(branch);
+    }
     [[nodiscard]] Rgb clip_finite(const Rgb& c) const noexcept;
     [[nodiscard]] Rgb smits(const Rgb& c) const noexcept;
     [[nodiscard]] Xyz smits_xyz(const Xyz& c) const noexcept;
     [[nodiscard]] Rgb luv_lightness_hue(const Rgb& c) const noexcept;
-    [[nodiscard]] Rgb luv_hue(const Rgb& c) const noexcept;
-    [[nodiscard]] Rgb css(const Rgb& c) const noexcept;
-    [[nodiscard]] Rgb oklab(const Rgb& c) const noexcept;
-    [[nodiscard]] Rgb smits_corrected(const Rgb& c) const noexcept;
-    [[nodiscard]] Rgb css_raytrace(const Rgb& c) const noexcept;      // css_raytrace.cpp
-    [[nodiscard]] Rgb oklab_adaptive(const Rgb& c) const noexcept;    // oklab_projection.cpp
-    [[nodiscard]] Rgb oklab_cusp(const Rgb& c) const noexcept;        // oklab_projection.cpp
+    [[nodiscard]] Rgb luv_hue(const Rgb& c, Branches* branches = nullptr) const noexcept;
+    [[nodiscard]] Rgb css(const Rgb& c, Branches* branches = nullptr) const noexcept;
+    [[nodiscard]] Rgb oklab(const Rgb& c, Branches* branches = nullptr) const noexcept;
+    // css_raytrace.cpp
+    [[nodiscard]] Rgb css_raytrace(const Rgb& c, Branches* branches = nullptr) const noexcept;
     [[nodiscard]] Rgb smits_soft(const Rgb& c) const noexcept;        // smits_soft.cpp
     [[nodiscard]] Rgb aces_rgc(const Rgb& c) const noexcept;          // aces_rgc.cpp
     [[nodiscard]] Rgb clamp(const Rgb& c) const noexcept;
@@ -299,12 +320,16 @@ private:
         double L, C, S, s_max;
         int zero_channel;
     };
-    [[nodiscard]] OklabCusp oklab_cusp_of_hue(double a_unit, double b_unit) const noexcept;
+    [[nodiscard]] OklabCusp oklab_cusp_of_hue(double a_unit, double b_unit,
+                                              Branches* branches = nullptr) const noexcept;
     /// The t in [0, 1] where the segment (L0 + t (L - L0), t a, t b) from (L0, 0, 0) to `lab`
     /// last leaves the cube (the upper end of its last piece inside); see oklab_projection.cpp.
-    [[nodiscard]] double oklab_segment_exit(double l0, const Oklab& lab) const noexcept;
-    /// oklab_adaptive (around_cusp false) and oklab_cusp (true) of an out-of-gamut colour.
-    [[nodiscard]] Rgb oklab_projection(const Rgb& c, bool around_cusp) const noexcept;
+    [[nodiscard]] double oklab_segment_exit(double l0, const Oklab& lab,
+                                            Branches* branches = nullptr) const noexcept;
+    /// oklab-adaptive (around_cusp false) and oklab-cusp (true) of an out-of-gamut colour
+    /// (oklab_projection.cpp).
+    [[nodiscard]] Rgb oklab_projection(const Rgb& c, bool around_cusp,
+                                       Branches* branches = nullptr) const noexcept;
     /// Checks the values of m_parameters that depend on each other, throwing irid::Error naming
     /// them, and fills m_derived with what the method precomputes from them; the per-method
     /// parts live beside each method (prepare_aces_rgc in aces_rgc.cpp, ...).

@@ -21,6 +21,7 @@
 #include <irid/gamut/clip.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 
@@ -71,6 +72,11 @@ public:
     /// threads (0: all). Throws irid::Error before writing anything for sizes that do not fit
     /// and for an xyY y = 0 with Y ≠ 0 (naming the colour's index).
     void clip(std::span<const double> in, std::span<double> out, int threads = 0) const;
+    /// GamutClipper::branch_signature of each source triple in its destination linear RGB:
+    /// where neighbouring colours' signatures differ, the method's definition may jump between
+    /// them (clip.h). `out` holds one value per triple. Throws as clip does.
+    void branch_signatures(std::span<const double> in, std::span<std::uint64_t> out,
+                           int threads = 0) const;
     /// The float form (see the file comment); `options` as clip_batch's.
     void clip(std::span<const float> in, std::span<float> out, const BatchOptions& options = {}) const;
 
