@@ -2,17 +2,16 @@
 // src/gamut/batch_simd.cpp): the cube root is what makes the conversion slow (std::cbrt, about
 // 15 ns), and a SIMD one makes it cheap.
 //
-// The cube root: a start within 7 % from the bits of the float nearest the value (a third of
-// them plus 0x2A5137A0, the trick of src/gamut/simd_common-inl.h), then three Halley steps in
-// double, y ← y (y³ + 2a)/(2y³ + a), whose error goes 7 % → 3e-4 → 3e-11 → rounding (cubic
-// convergence). The float start needs |x| within float's normal range: a block with any other
-// value (0 aside), or a NaN or infinity, takes the scalar path.
+// The cube root is simd_math::Cbrt (simd_math-inl.h) in double. Its start comes from the nearest
+// float, so it needs |x| within float's normal range: a block with any other value (0 aside),
+// or a NaN or infinity, takes the scalar path.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE __BASE_FILE__
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
 #include "convert_simd.h"
+#include "simd_math-inl.h"
 
 #include <cmath>
 #include <cstddef>
@@ -26,23 +25,6 @@ namespace hn = hwy::HWY_NAMESPACE;
 using D = hn::ScalableTag<double>;
 using V = hn::Vec<D>;
 using Df = hn::Rebind<float, D>;
-
-/// The real cube root of a vector whose |lanes| are 0 or in [1e-30, 1e30].
-HWY_INLINE V Cbrt(D d, V x) {
-    const Df df;
-    const hn::RebindToSigned<Df> di;
-    const V a = hn::Abs(x);
-    const auto bits = hn::BitCast(di, hn::DemoteTo(df, a));
-    const auto third = hn::ConvertTo(di, hn::Mul(hn::ConvertTo(df, bits), hn::Set(df, 1.0f / 3.0f)));
-    V y = hn::PromoteTo(d, hn::BitCast(df, hn::Add(third, hn::Set(di, 709921077))));
-    const V two = hn::Set(d, 2.0);
-    for (int it = 0; it < 3; ++it) {
-        const V y3 = hn::Mul(hn::Mul(y, y), y);
-        y = hn::Mul(y, hn::Div(hn::MulAdd(two, a, y3), hn::MulAdd(two, y3, a)));
-    }
-    y = hn::IfThenZeroElse(hn::Eq(a, hn::Zero(d)), y);
-    return hn::CopySign(y, x);
-}
 
 /// Whether every lane is 0 or of magnitude in [1e-30, 1e30] (false for NaN and infinity).
 HWY_INLINE bool InRange(D d, V x) {
@@ -94,7 +76,7 @@ void Kernel(const T* in, T* out, std::size_t n, const double* m1, const double* 
             continue;
         }
         V L, A, B;
-        Mul3(d, m2, Cbrt(d, l), Cbrt(d, m), Cbrt(d, s), L, A, B);
+        Mul3(d, m2, simd_math::Cbrt(d, l), simd_math::Cbrt(d, m), simd_math::Cbrt(d, s), L, A, B);
         if constexpr (sizeof(T) == 8) {
             hn::StoreInterleaved3(L, A, B, d, out + 3 * i);
         } else {

@@ -63,16 +63,10 @@ double uncompress_distance(double d, double thr, double s, double p) noexcept {
 
 }  // namespace
 
-// m_derived layout (read by the batch kernel, batch_simd_aces.cpp):
-//   [0], [1], [2]  thresholds of the red, green, blue channels (cyan, magenta, yellow)
-//   [3], [4], [5]  their scales s, so that D(limit) = 1
-//   [6]            power p
-//   [7]            1/p
-//   [8], [9], [10] the asymptotes thr + s of the compressed distance (where the inverse stops)
 void GamutClipper::prepare_aces_rgc() {
     const double p = m_parameters[6].second;
-    m_derived[6] = p;
-    m_derived[7] = 1.0 / p;
+    m_aces_rgc.power = p;
+    m_aces_rgc.inverse_power = 1.0 / p;
     for (std::size_t k = 0; k < 3; ++k) {
         const double lim = m_parameters[k].second;
         const double thr = m_parameters[3 + k].second;
@@ -85,9 +79,9 @@ void GamutClipper::prepare_aces_rgc() {
                         format_shortest(lim) + " must exceed 1 and " + m_parameters[3 + k].first +
                         " = " + format_shortest(thr) + " must be below 1");
         }
-        m_derived[k] = thr;
-        m_derived[3 + k] = s;
-        m_derived[8 + k] = thr + s;
+        m_aces_rgc.threshold[k] = thr;
+        m_aces_rgc.scale[k] = s;
+        m_aces_rgc.asymptote[k] = thr + s;
     }
 }
 
@@ -96,17 +90,18 @@ Rgb GamutClipper::aces_rgc(const Rgb& c) const noexcept {
     // OCIO's gamut_comp (and the CTL's dist = 0): no achromatic axis, every channel 0.
     if (ach == 0.0) return {0.0, 0.0, 0.0};
     const double abs_ach = std::abs(ach);
-    const double p = m_derived[6];
+    const AcesRgcPrepared& a = m_aces_rgc;
+    const double p = a.power;
     const auto channel = [&](double v, std::size_t k) {
-        const double thr = m_derived[k];
+        const double thr = a.threshold[k];
         const double d = (ach - v) / abs_ach;
         if (d < thr) return v;  // inside the protected core: untouched
         double compressed = 0.0;
         if (!m_inverse) {
-            compressed = compress_distance(d, thr, m_derived[3 + k], p);
+            compressed = compress_distance(d, thr, a.scale[k], p);
         } else {
-            if (d >= m_derived[8 + k]) return v;  // at or beyond the asymptote: unchanged
-            compressed = uncompress_distance(d, thr, m_derived[3 + k], p);
+            if (d >= a.asymptote[k]) return v;  // at or beyond the asymptote: unchanged
+            compressed = uncompress_distance(d, thr, a.scale[k], p);
         }
         const double out = ach - compressed * abs_ach;
         return std::clamp(out, -output_cap, output_cap);

@@ -25,13 +25,6 @@
 namespace irid {
 namespace {
 
-/// The non-finite rule of clip.h in float (1e30 is a float).
-float finite_or_default_f(float v) noexcept {
-    if (std::isnan(v)) return 0.0f;
-    if (std::isinf(v)) return v > 0.0f ? 1e30f : -1e30f;
-    return v;
-}
-
 /// std::clamp(v, 0, max), written as the SIMD kernel does.
 float clamp_to_cube(float v, float max) noexcept {
     if (v < 0.0f) v = 0.0f;
@@ -50,9 +43,9 @@ void smits_scalar(const float* in, float* out, std::size_t colours,
                   const detail::BatchFloatParams& p) noexcept {
     const std::array<float, 3> lum{p.lum0, p.lum1, p.lum2};
     for (std::size_t i = 0; i < colours; ++i) {
-        const std::array<float, 3> c{finite_or_default_f(in[3 * i]),
-                                     finite_or_default_f(in[3 * i + 1]),
-                                     finite_or_default_f(in[3 * i + 2])};
+        const std::array<float, 3> c{finite_or_default<float>(in[3 * i]),
+                                     finite_or_default<float>(in[3 * i + 1]),
+                                     finite_or_default<float>(in[3 * i + 2])};
         const std::array<float, 3> o = smits_clip_rgb<float>(c, lum, p.inv_lum_sum, p.max);
         for (std::size_t k = 0; k < 3; ++k) out[3 * i + k] = clamp_to_cube(o[k], p.max);
     }
@@ -61,7 +54,7 @@ void smits_scalar(const float* in, float* out, std::size_t colours,
 void clamp_scalar(const float* in, float* out, std::size_t colours,
                   const detail::BatchFloatParams& p) noexcept {
     for (std::size_t i = 0; i < 3 * colours; ++i)
-        out[i] = clamp_to_cube(finite_or_default_f(in[i]), p.max);
+        out[i] = clamp_to_cube(finite_or_default<float>(in[i]), p.max);
 }
 
 /// Any other method: the double GamutClipper::clip per colour.
@@ -73,6 +66,21 @@ void clipper_scalar(const GamutClipper& clipper, const float* in, float* out,
         out[3 * i + 1] = static_cast<float>(o.g);
         out[3 * i + 2] = static_cast<float>(o.b);
     }
+}
+
+/// The rules for every float kernel (a method's own rules are beside its kernel, kernels.h).
+bool any_kernel_takes(const GamutClipper& clipper) noexcept {
+    // A peak below 1e-6 puts the float kernels' values near float's subnormals, where they lose
+    // the relative precision the 1e-5 × max contract needs (fuzz finding clip-4: smits-soft at a
+    // peak of 2e-41): the double reference runs instead.
+    if (!(clipper.gamut().max() >= 1e-6)) return false;
+    // A primary of zero or negative luminance (ACES2065-1's blue, Y = -0.072) makes the geometry
+    // of the hue- and lightness-keeping methods ill-conditioned in float in places no hard-lane
+    // test foresees (fuzz findings clip-6, smits-xyz black instead of the colour, and clip-7,
+    // luv-lightness-hue 3e-5 × max off, both on aces2065-1): such a gamut runs the double
+    // reference. Nobody displays ACES2065-1's cube; its colours are clipped in AP1.
+    const Vec3& lum = clipper.gamut().luminance_row();
+    return lum[0] > 0.0 && lum[1] > 0.0 && lum[2] > 0.0;
 }
 
 /// Clips colours [0, colours) of in into out: the kernel of one chunk.
@@ -90,33 +98,11 @@ void clip_range(const GamutClipper& clipper, const detail::BatchFloatParams& p, 
             return;
         }
         default: {
-            // A peak below 1e-6 puts the float kernels' values near float's subnormals, where
-            // they lose the relative precision the 1e-5 × max contract needs (fuzz finding
-            // clip-4: smits-soft at a peak of 2e-41): the double reference runs instead.
-            const bool float_range = clipper.gamut().max() >= 1e-6;
-            // A primary of zero or negative luminance (ACES2065-1's blue, Y = -0.072) makes
-            // the geometry of the hue- and lightness-keeping methods ill-conditioned in float in
-            // places no hard-lane test foresees (fuzz findings clip-6, smits-xyz black instead
-            // of the colour, and clip-7, luv-lightness-hue 3e-5 × max off, both on
-            // aces2065-1): such a gamut runs the double reference. Nobody displays
-            // ACES2065-1's cube; its colours are clipped in AP1.
-            const Vec3& lum = clipper.gamut().luminance_row();
-            const bool real_primaries = lum[0] > 0.0 && lum[1] > 0.0 && lum[2] > 0.0;
-            // The css kernel's margins on its Oklab comparisons are absolute: above a peak of 16
-            // they no longer cover float's rounding (at max 100, 2e-4 × max off; at 16, under
-            // 2e-6).
-            const bool css_range = clipper.method() != ClipMethod::css || clipper.gamut().max() <= 16.0;
-            // css-raytrace at a peak of 0.1 put a colour 1e-3 below the white's lightness near
-            // white where the reference gives cyan (0.99 × max off; found by a sweep of small
-            // peaks at the end of issue 12's first session, cause not yet found): below a peak
-            // of 0.5 it runs the double reference.
-            const bool raytrace_range =
-                clipper.method() != ClipMethod::css_raytrace || clipper.gamut().max() >= 0.5;
-            const detail::ClipKernel kernel = simd && float_range && real_primaries && css_range &&
-                                                      raytrace_range
-                                                  ? detail::simd_kernel(clipper.method())
-                                                  : nullptr;
-            const std::size_t done = kernel ? kernel(clipper, in, out, colours) : 0;
+            const detail::Kernel kernel = simd ? detail::simd_kernel(clipper.method()) : detail::Kernel{};
+            const std::size_t done =
+                kernel.run != nullptr && any_kernel_takes(clipper) && (kernel.takes == nullptr || kernel.takes(clipper))
+                    ? kernel.run(clipper, in, out, colours)
+                    : 0;
             clipper_scalar(clipper, in + 3 * done, out + 3 * done, colours - done);
             return;
         }
@@ -127,19 +113,12 @@ void clip_range(const GamutClipper& clipper, const detail::BatchFloatParams& p, 
 
 namespace detail {
 
-ClipKernel simd_kernel(ClipMethod method) noexcept {
-    switch (method) {
-        case ClipMethod::smits_xyz: return clip_smits_xyz_simd;
-        case ClipMethod::luv_lightness_hue: return clip_luv_lightness_hue_simd;
-        case ClipMethod::smits_soft: return clip_smits_soft_simd;
-        case ClipMethod::aces_rgc: return clip_aces_rgc_simd;
-        case ClipMethod::css: return clip_css_simd;
-        case ClipMethod::css_raytrace: return clip_css_raytrace_simd;
-        case ClipMethod::oklab: return clip_oklab_simd;
-        case ClipMethod::oklab_adaptive: return clip_oklab_adaptive_simd;
-        case ClipMethod::oklab_cusp: return clip_oklab_cusp_simd;
-        default: return nullptr;
+Kernel simd_kernel(ClipMethod method) noexcept {
+    for (const auto lookup : {smits_family_kernel, aces_rgc_kernel, css_kernel, oklab_kernel}) {
+        const Kernel k = lookup(method);
+        if (k.run != nullptr) return k;
     }
+    return {};
 }
 
 }  // namespace detail

@@ -24,6 +24,8 @@
 
 #include <irid/gamut/batch.h>
 
+#include "simd_common-inl.h"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -35,24 +37,6 @@ namespace {
 namespace hn = hwy::HWY_NAMESPACE;
 using D = hn::ScalableTag<float>;
 using V = hn::Vec<D>;
-
-/// The non-finite rule of clip.h: NaN → 0, ±Inf → ±1e30.
-HWY_INLINE V finite_or_default(D d, V v) {
-    v = hn::IfThenZeroElse(hn::IsNaN(v), v);
-    return hn::IfThenElse(hn::IsInf(v), hn::CopySign(hn::Set(d, 1e30f), v), v);
-}
-
-/// The rule on three channels, skipped when they are all finite: v − v is 0 for a finite v and
-/// NaN for NaN and ±Inf, and a sum with a NaN is NaN, so one comparison of
-/// (r − r) + (g − g) + (b − b) with 0 tests the three channels (5 arithmetic operations, fewer
-/// than three IsFinite on AVX2, where each is a few integer operations).
-HWY_INLINE void finite_or_default(D d, V& r, V& g, V& b) {
-    const V sum = hn::Add(hn::Add(hn::Sub(r, r), hn::Sub(g, g)), hn::Sub(b, b));
-    if (HWY_LIKELY(hn::AllTrue(d, hn::Eq(sum, hn::Zero(d))))) return;
-    r = finite_or_default(d, r);
-    g = finite_or_default(d, g);
-    b = finite_or_default(d, b);
-}
 
 /// std::clamp(v, 0, max) for non-NaN v (-0 stays -0, as in the scalar code).
 HWY_INLINE V clamp_to_cube(V v, V zero, V max) {
@@ -102,7 +86,7 @@ std::size_t ClipSmits(const float* in, float* out, std::size_t colours,
     for (; i + n <= colours; i += n) {
         V r, g, b;
         hn::LoadInterleaved3(d, in + 3 * i, r, g, b);
-        finite_or_default(d, r, g, b);
+        simd::FiniteOrDefault(d, r, g, b);
         // Outcodes.
         const auto low_r = hn::Lt(r, zero), low_g = hn::Lt(g, zero), low_b = hn::Lt(b, zero);
         const auto high_r = hn::Gt(r, max), high_g = hn::Gt(g, max), high_b = hn::Gt(b, max);
@@ -164,7 +148,7 @@ std::size_t ClipClamp(const float* in, float* out, std::size_t colours,
     for (; i + n <= colours; i += n) {
         V r, g, b;
         hn::LoadInterleaved3(d, in + 3 * i, r, g, b);
-        finite_or_default(d, r, g, b);
+        simd::FiniteOrDefault(d, r, g, b);
         r = clamp_to_cube(r, zero, max);
         g = clamp_to_cube(g, zero, max);
         b = clamp_to_cube(b, zero, max);

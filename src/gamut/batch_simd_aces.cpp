@@ -36,6 +36,7 @@
 #include <hwy/contrib/math/math-inl.h>
 
 #include "kernels.h"
+#include "simd_common-inl.h"
 
 #include <algorithm>
 #include <cmath>
@@ -176,19 +177,19 @@ struct AcesV {
     V power, inv_power, max, large;  // |ach| above `large` goes to the double reference
     bool inverse, confined;
 
-    /// From the clipper's derived values (aces_rgc.cpp); `large` is large_confined × max when
+    /// From the clipper's prepared values (aces_rgc.cpp); `large` is large_confined × max when
     /// the clipper confines, else large_free.
     AcesV(D d, const GamutClipper& clipper, double large_confined, double large_free) {
         using T = hn::TFromD<D>;
-        const auto& x = clipper.derived();
+        const AcesRgcPrepared& x = clipper.aces_rgc_prepared();
         for (std::size_t k = 0; k < 3; ++k) {
-            ch[k].thr = hn::Set(d, static_cast<T>(x[k]));
-            ch[k].scale = hn::Set(d, static_cast<T>(x[3 + k]));
-            ch[k].inv_scale = hn::Set(d, static_cast<T>(1.0 / x[3 + k]));
-            ch[k].asymptote = hn::Set(d, static_cast<T>(x[8 + k]));
+            ch[k].thr = hn::Set(d, static_cast<T>(x.threshold[k]));
+            ch[k].scale = hn::Set(d, static_cast<T>(x.scale[k]));
+            ch[k].inv_scale = hn::Set(d, static_cast<T>(1.0 / x.scale[k]));
+            ch[k].asymptote = hn::Set(d, static_cast<T>(x.asymptote[k]));
         }
-        power = hn::Set(d, static_cast<T>(x[6]));
-        inv_power = hn::Set(d, static_cast<T>(x[7]));
+        power = hn::Set(d, static_cast<T>(x.power));
+        inv_power = hn::Set(d, static_cast<T>(x.inverse_power));
         const double m = clipper.gamut().max();
         max = hn::Set(d, static_cast<T>(m));
         inverse = clipper.inverse();
@@ -196,14 +197,6 @@ struct AcesV {
         large = hn::Set(d, static_cast<T>(confined ? large_confined * m : large_free));
     }
 };
-
-/// The non-finite rule of clip.h (NaN → 0, ±Inf → ±1e30) in either precision.
-template <class D, class V = hn::Vec<D>>
-HWY_INLINE V FiniteOrDefault(D d, V v) {
-    using T = hn::TFromD<D>;
-    v = hn::IfThenZeroElse(hn::IsNaN(v), v);
-    return hn::IfThenElse(hn::IsInf(v), hn::CopySign(hn::Set(d, static_cast<T>(1e30)), v), v);
-}
 
 /// Compresses (or, inverse, uncompresses) one channel c against ach (inv_abs = 1/|ach|); adds to
 /// `hard` the lanes for the double reference: inverse with u = nd^p above u_max, or d at or above
@@ -244,7 +237,7 @@ HWY_INLINE V Channel(D d, const AcesV<D>& P, const ChannelV<V>& C, V c, V ach, V
     return hn::IfThenElse(active, out, c);
 }
 
-/// One vector of colours (r, g, b in and out) in the precision of D: the non-finite rule, ach,
+/// One vector of colours (r, g, b in and out, the non-finite rule applied) in the precision of D: ach,
 /// the three channels, 0 where ach = 0, the cube when confined. `hard` receives the lanes whose
 /// results must come from the double reference (|ach| below `tiny` or above P.large, and those
 /// of Channel); their r, g, b here are meaningless.
@@ -252,9 +245,6 @@ template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
 HWY_INLINE void Colours(D d, const AcesV<D>& P, V& r, V& g, V& b, V tiny, V u_max, V band,
                         M& hard) {
     using T = hn::TFromD<D>;
-    r = FiniteOrDefault(d, r);
-    g = FiniteOrDefault(d, g);
-    b = FiniteOrDefault(d, b);
     const V zero = hn::Zero(d), one = hn::Set(d, static_cast<T>(1.0));
     const V ach = hn::Max(r, hn::Max(g, b));
     const V abs_ach = hn::Abs(ach);
@@ -273,21 +263,6 @@ HWY_INLINE void Colours(D d, const AcesV<D>& P, V& r, V& g, V& b, V tiny, V u_ma
         g = hn::Min(hn::Max(g, zero), P.max);
         b = hn::Min(hn::Max(b, zero), P.max);
     }
-}
-
-/// Writes n colours of `result` to out, those flagged in `flag` recomputed by the double
-/// reference from `in` (read before `out`, which may be the same memory, is written).
-HWY_INLINE void Patch(const GamutClipper& clipper, const float* in, float* out, float* result,
-                      const float* flag, std::size_t n) {
-    for (std::size_t k = 0; k < n; ++k) {
-        if (flag[k] == 0.0f) continue;
-        const float* c = in + 3 * k;
-        const Rgb o = clipper.clip({c[0], c[1], c[2]});
-        result[3 * k] = static_cast<float>(o.r);
-        result[3 * k + 1] = static_cast<float>(o.g);
-        result[3 * k + 2] = static_cast<float>(o.b);
-    }
-    for (std::size_t k = 0; k < 3 * n; ++k) out[k] = result[k];
 }
 
 constexpr std::size_t max_float_lanes = HWY_MAX_BYTES / sizeof(float);
@@ -413,7 +388,7 @@ std::size_t ForwardBlocks(const GamutClipper& clipper, const float* in, float* o
     V tail[tail_terms];
     {
         float coeffs[tail_terms];
-        tail_polynomial(clipper.derived()[7], coeffs);
+        tail_polynomial(clipper.aces_rgc_prepared().inverse_power, coeffs);
         for (std::size_t k = 0; k < tail_terms; ++k) tail[k] = hn::Set(d, coeffs[k]);
     }
     constexpr std::size_t capacity = block_colours + max_float_lanes;
@@ -437,7 +412,7 @@ std::size_t ForwardBlocks(const GamutClipper& clipper, const float* in, float* o
             hn::LoadInterleaved3(d, in + 3 * i, c[0], c[1], c[2]);
             if (HWY_UNLIKELY(!hn::AllTrue(d, hn::And(hn::And(hn::IsFinite(c[0]), hn::IsFinite(c[1])),
                                                    hn::IsFinite(c[2]))))) {
-                for (V& v : c) v = FiniteOrDefault(d, v);
+                for (V& v : c) v = simd::FiniteOrDefault(d, v);
             }
             const V ach = hn::Max(c[0], hn::Max(c[1], c[2]));
             const V abs_ach = hn::Abs(ach);
@@ -536,37 +511,18 @@ std::size_t Forward(const GamutClipper& clipper, const float* in, float* out, st
 /// float's rounding beyond 1e-5), colours loaded and stored as float.
 std::size_t Inverse(const GamutClipper& clipper, const float* in, float* out, std::size_t colours) {
     using D = hn::ScalableTag<double>;
-    using DF = hn::Rebind<float, D>;
     const D d;
-    const DF df;
     using V = hn::Vec<D>;
-    using VF = hn::Vec<DF>;
-    const std::size_t n = hn::Lanes(d);
     // In double the rounding of ach − D |ach| stays far below 1e-5 of max for any ach up to 1e30.
     const AcesV<D> P(d, clipper, 1e30, 1e30);
     const V tiny = hn::Set(d, 1e-300), u_max = hn::Set(d, 1.0 - 1e-4),
             band = hn::Set(d, 1.0 + 1e-9);
-    std::size_t i = 0;
-    for (; i + n <= colours; i += n) {
-        VF rf, gf, bf;
-        hn::LoadInterleaved3(df, in + 3 * i, rf, gf, bf);
-        V r = hn::PromoteTo(d, rf), g = hn::PromoteTo(d, gf), b = hn::PromoteTo(d, bf);
+    return simd::RunKernel(d, clipper, in, out, colours, [&](V r, V g, V b, V& out_r, V& out_g, V& out_b) {
         hn::Mask<D> hard;
         Colours(d, P, r, g, b, tiny, u_max, band, hard);
-        rf = hn::DemoteTo(df, r);
-        gf = hn::DemoteTo(df, g);
-        bf = hn::DemoteTo(df, b);
-        if (HWY_LIKELY(hn::AllFalse(d, hard))) {
-            hn::StoreInterleaved3(rf, gf, bf, df, out + 3 * i);
-            continue;
-        }
-        alignas(64) float result[3 * max_float_lanes];
-        alignas(64) float flag[max_float_lanes];
-        hn::StoreInterleaved3(rf, gf, bf, df, result);
-        hn::Store(hn::DemoteTo(df, hn::IfThenElseZero(hard, hn::Set(d, 1.0))), df, flag);
-        Patch(clipper, in + 3 * i, out + 3 * i, result, flag, n);
-    }
-    return i;
+        out_r = r, out_g = g, out_b = b;
+        return hard;
+    });
 }
 
 }  // namespace
@@ -586,17 +542,17 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 
 namespace irid {
+namespace {
 
-HWY_EXPORT(ClipAcesRgc);
+IRID_EXPORT_KERNEL(ClipAcesRgc)
 
-namespace detail {
+}  // namespace
 
-std::size_t clip_aces_rgc_simd(const GamutClipper& clipper, const float* in, float* out,
-                               std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipAcesRgc)(clipper, in, out, colours);
+detail::Kernel detail::aces_rgc_kernel(ClipMethod method) noexcept {
+    if (method == ClipMethod::aces_rgc) return {ClipAcesRgcDispatch, nullptr};
+    return {};
 }
 
-}  // namespace detail
 }  // namespace irid
 
 #endif  // HWY_ONCE

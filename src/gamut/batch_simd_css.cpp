@@ -188,24 +188,20 @@ HWY_INLINE Vf Dot3(Df d, const PairMatrix& M, int i, const Vf (&x)[3], const Vf 
 }
 
 /// The real cube root of x, sign kept, to about 3e-7 relative over float's normal range (0
-/// below it), without a division: simd::Cbrt's start from the exponent bits (within 7 %), then
+/// below it), without a division: simd_math::Cbrt's start from the exponent bits (within 7 %), then
 /// two Halley steps written as corrections, y <- y (1 + (a - y^3)/(2 y^3 + a)), whose
 /// quotient needs only a 12-bit reciprocal (its error scales the correction, not y). The start
 /// of CbrtPair, whose exact Newton step squares this error.
 HWY_INLINE Vf CbrtStart(Df d, Vf x) {
-    const hn::RebindToSigned<Df> di;
     const Vf a = hn::Abs(x);
-    // As simd::Cbrt: a third of the bits plus 0x2A5137A0 (simd_common-inl.h).
-    const auto third = hn::ConvertTo(
-        di, hn::Mul(hn::ConvertTo(d, hn::BitCast(di, a)), hn::Set(d, 1.0f / 3.0f)));
-    Vf y = hn::BitCast(d, hn::Add(third, hn::Set(di, 709921077)));
+    Vf y = simd_math::CbrtStart(d, a);  // src/color/simd_math-inl.h
     for (int it = 0; it < 2; ++it) {
         const Vf y3 = hn::Mul(hn::Mul(y, y), y);
         const Vf c = hn::Mul(hn::Sub(a, y3),
                              hn::ApproximateReciprocal(hn::MulAdd(hn::Set(d, 2.0f), y3, a)));
         y = hn::MulAdd(y, c, y);
     }
-    y = hn::IfThenZeroElse(hn::Lt(a, hn::Set(d, 1.17549435e-38f)), y);
+    y = hn::IfThenZeroElse(hn::Lt(a, hn::Set(d, simd_math::smallest_normal_float)), y);
     return hn::CopySign(y, x);
 }
 
@@ -348,29 +344,6 @@ HWY_INLINE Vf Chroma(Vf a, Vf b) {
     return hn::Sqrt(hn::MulAdd(a, a, hn::Mul(b, b)));
 }
 
-/// Rewrites the flagged lanes of colours [i, i + lanes) of `out` with the double reference of
-/// the input colours (r, g, b), kept in registers: `out` may be the input itself (in place), so
-/// the input must not be read back from memory after the vector's result was stored.
-HWY_INLINE void RedoInDouble(Df d, Mf flagged, const GamutClipper& clipper, Vf r, Vf g, Vf b,
-                             float* out, std::size_t i) {
-    if (hn::AllFalse(d, flagged)) return;
-    HWY_ALIGN float flags[hn::MaxLanes(d)];
-    HWY_ALIGN float in_r[hn::MaxLanes(d)];
-    HWY_ALIGN float in_g[hn::MaxLanes(d)];
-    HWY_ALIGN float in_b[hn::MaxLanes(d)];
-    hn::Store(hn::IfThenElseZero(flagged, hn::Set(d, 1.0f)), d, flags);
-    hn::Store(r, d, in_r);
-    hn::Store(g, d, in_g);
-    hn::Store(b, d, in_b);
-    for (std::size_t lane = 0; lane < hn::Lanes(d); ++lane) {
-        if (flags[lane] == 0.0f) continue;
-        const std::size_t k = 3 * (i + lane);
-        const Rgb o = clipper.clip({in_r[lane], in_g[lane], in_b[lane]});
-        out[k] = static_cast<float>(o.r);
-        out[k + 1] = static_cast<float>(o.g);
-        out[k + 2] = static_cast<float>(o.b);
-    }
-}
 
 /// "Cast a ray" (CSS Color 4 Ray Trace) from start (s) to end (e) through the box [0, max]³,
 /// lane by lane, as css_raytrace.cpp's cast_ray: returns the lanes where an intersection was
@@ -537,7 +510,6 @@ HWY_INLINE void RestoreDouble(Df d, const DoubleTransforms& T, Vf r, Vf g, Vf b,
 std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float* out,
                             std::size_t colours) {
     const Df d;
-    const std::size_t n = hn::Lanes(d);
     const Params p = LoadParams(d, clipper);
     const Vf zero = hn::Zero(d);
     const Vf low = hn::Mul(hn::Set(d, raytrace_epsilon_f), p.max);
@@ -551,15 +523,11 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
     const DoubleTransforms TD{LoadDoubleMatrix(clipper.rgb_to_lms()), LoadDoubleMatrix(clipper.lms_to_rgb()),
                               LoadDoubleMatrix(oklab_m2), LoadDoubleMatrix(oklab_m2_inverse)};
 #endif
-    std::size_t i = 0;
-    for (; i + n <= colours; i += n) {
-        Vf r, g, b;
-        hn::LoadInterleaved3(d, in + 3 * i, r, g, b);
-        simd::FiniteOrDefault(d, r, g, b);
+    return simd::RunKernel(d, clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& out_r, Vf& out_g, Vf& out_b) {
         const Mf inside = InCube(r, g, b, zero, p.max);
         if (hn::AllTrue(d, inside)) {
-            hn::StoreInterleaved3(r, g, b, d, out + 3 * i);
-            continue;
+            out_r = r, out_g = g, out_b = b;
+            return hn::Not(inside);
         }
         Vf L, A, B;
 #if HWY_TARGET != HWY_SCALAR && HWY_HAVE_FLOAT64
@@ -679,15 +647,13 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
         rr = hn::IfThenElse(inside, r, rr);
         gg = hn::IfThenElse(inside, g, gg);
         bb = hn::IfThenElse(inside, b, bb);
-        hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
+        out_r = rr, out_g = gg, out_b = bb;
         const Mf near_l = hn::Or(hn::Lt(hn::Abs(hn::Sub(L, p.white_l)), lmargin),
                                  hn::Lt(hn::Abs(L), lmargin));
-        const Mf flagged = hn::AndNot(
+        return hn::AndNot(
             inside, hn::Or(hn::Or(hn::Or(near_l, huge), hn::Or(hn::Or(wild, grazing), hn::Or(bounds_path, diverging))),
                            hn::AndNot(hn::Or(white, black), hn::Lt(c0, hn::Set(d, hueless_chroma)))));
-        RedoInDouble(d, flagged, clipper, r, g, b, out, i);
-    }
-    return i;
+    });
 }
 
 /// css (the binary search) likewise: a lane-masked search until every lane has finished, each
@@ -695,7 +661,6 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
 std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, float* out,
                                 std::size_t colours) {
     const Df d;
-    const std::size_t n = hn::Lanes(d);
     const Params p = LoadParams(d, clipper);
     const Vf zero = hn::Zero(d);
     const Vf half = hn::Set(d, 0.5f);
@@ -717,15 +682,11 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
         const Vf dl = hn::Sub(l2, L), da = hn::Sub(a2, ca), db = hn::Sub(b2, cbk);
         return hn::Sqrt(hn::MulAdd(dl, dl, hn::MulAdd(da, da, hn::Mul(db, db))));
     };
-    std::size_t i = 0;
-    for (; i + n <= colours; i += n) {
-        Vf r, g, b;
-        hn::LoadInterleaved3(d, in + 3 * i, r, g, b);
-        simd::FiniteOrDefault(d, r, g, b);
+    return simd::RunKernel(d, clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& out_r, Vf& out_g, Vf& out_b) {
         const Mf inside = InCube(r, g, b, zero, p.max);
         if (hn::AllTrue(d, inside)) {
-            hn::StoreInterleaved3(r, g, b, d, out + 3 * i);
-            continue;
+            out_r = r, out_g = g, out_b = b;
+            return hn::Not(inside);
         }
         Vf L, A, B;
         ToOklabAccurate(d, p.T, r, g, b, L, A, B);
@@ -794,10 +755,9 @@ std::size_t ClipCssBinarySearch(const GamutClipper& clipper, const float* in, fl
         rr = hn::IfThenElse(inside, r, rr);
         gg = hn::IfThenElse(inside, g, gg);
         bb = hn::IfThenElse(inside, b, bb);
-        hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
-        RedoInDouble(d, hn::AndNot(inside, flagged), clipper, r, g, b, out, i);
-    }
-    return i;
+        out_r = rr, out_g = gg, out_b = bb;
+        return hn::AndNot(inside, flagged);
+    });
 }
 
 }  // namespace HWY_NAMESPACE
@@ -807,23 +767,25 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 
 namespace irid {
+namespace {
 
-HWY_EXPORT(ClipCssBinarySearch);
-HWY_EXPORT(ClipCssRayTrace);
+IRID_EXPORT_KERNEL(ClipCssBinarySearch)
+IRID_EXPORT_KERNEL(ClipCssRayTrace)
 
-namespace detail {
+/// css: the kernel's margins on its Oklab comparisons are absolute; above a peak of 16 they no
+/// longer cover float's rounding (at max 100, 2e-4 × max off; at 16, under 2e-6).
+bool css_takes(const GamutClipper& clipper) noexcept { return clipper.gamut().max() <= 16.0; }
 
-std::size_t clip_css_simd(const GamutClipper& clipper, const float* in, float* out,
-                          std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipCssBinarySearch)(clipper, in, out, colours);
+}  // namespace
+
+detail::Kernel detail::css_kernel(ClipMethod method) noexcept {
+    switch (method) {
+        case ClipMethod::css: return {ClipCssBinarySearchDispatch, css_takes};
+        case ClipMethod::css_raytrace: return {ClipCssRayTraceDispatch, nullptr};
+        default: return {};
+    }
 }
 
-std::size_t clip_css_raytrace_simd(const GamutClipper& clipper, const float* in, float* out,
-                                   std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipCssRayTrace)(clipper, in, out, colours);
-}
-
-}  // namespace detail
 }  // namespace irid
 
 #endif  // HWY_ONCE

@@ -18,7 +18,7 @@
 //    that t whose linear point f + f' Δt is the float result. A vector keeps it when on each
 //    of its lanes float's rounding of the channels, times the exit's conditioning, is under
 //    8e-7 max (estimate in ClipProjection; not on a gamut without the sectors' structure,
-//    m_derived[15] = 0). The estimate runs up to 4 times short of the error: at a bound of
+//    OklabProjectionPrepared::structured false). The estimate runs up to 4 times short of the error: at a bound of
 //    6.4e-6 max, 2 million colours uniform in [-0.5, 1.5]³ found errors of 1.6e-5 (Display P3)
 //    and 2.7e-5 (Adobe RGB); at 8e-7 the largest is 5e-7. Every other vector takes, in double, the
 //    colour's Oklab (a Newton step on each float cube root), the cusp's L (a Newton step on
@@ -35,7 +35,7 @@
 //    for oklab-cusp a cusp whose Halley iteration did not settle or that is not at S_max, and a
 //    hue within 2e-5 (of the white's L, as a distance in a, b) of a primary's, where the cusp
 //    may jump (CuspLightness).
-// The cusp (oklab-cusp): the zero channel of the hue's sector (m_derived, see
+// The cusp (oklab-cusp): the zero channel of the hue's sector (OklabProjectionPrepared, see
 // prepare_oklab_projection), its S_max by three Halley steps on that channel's cubic in S from
 // the per-gamut linear fit, then L_cusp = cbrt(max / largest channel at (1, S_max a', S_max b')).
 // Where prepare_oklab_projection found the sectors' structure does not hold (ACES2065-1, whose
@@ -74,8 +74,8 @@ struct Setup {
     V max, tol2, white_l, alpha, half;
     V m2i[9];  // Ottosson's M2⁻¹, row-major
     V lms[9];  // the gamut's LMS → RGB
-    V fit[9];  // [3 z + k]: S_max fit of zero channel z (m_derived[0..8])
-    V prim[6];  // unit hues of R, G, B (m_derived[9..14])
+    V fit[9];   // [3 z + k]: S_max fit of zero channel z (OklabProjectionPrepared::s_max_fit)
+    V prim[6];  // unit hues of R, G, B (OklabProjectionPrepared::primary_hue)
 };
 
 /// f_i(t) and f_i'(t) for the three channels at u_j = P_j + t Q_j.
@@ -184,7 +184,7 @@ HWY_INLINE V CuspLightness(const Setup& s, V au, V bu, V C, M& hard, V& s_max,
     s_max = S;
     zero_channel = hn::IfThenElse(in_rg, hn::Set(d, 2.0f),
                                   hn::IfThenElse(in_gb, zero, hn::Set(d, 1.0f)));
-    return simd::Cbrt(d, hn::Div(s.max, safe_m));
+    return simd_math::Cbrt(d, hn::Div(s.max, safe_m));
 }
 
 /// Ottosson's adaptive L0 (oklab_projection.cpp's oklab_adaptive_l0) in float.
@@ -417,11 +417,7 @@ template <Projection kind>
 std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* out,
                            std::size_t colours) {
     const D d;
-    const std::size_t n = hn::Lanes(d);
-    const std::array<double, 16>& derived = clipper.derived();
-    if (kind == Projection::cusp && derived[15] != 1.0) return 0;
-    // A peak far below 1 would put the channels and LMS near float's subnormals: all scalar.
-    if (!(clipper.gamut().max() >= 1e-6)) return 0;
+    const OklabProjectionPrepared& prepared = clipper.oklab_projection_prepared();
     Setup s;
     s.mat = simd::LoadOklabMatrices(d, clipper);
     const double max_d = clipper.gamut().max();
@@ -437,9 +433,9 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
     for (std::size_t k = 0; k < 9; ++k) {
         s.m2i[k] = hn::Set(d, m2i.m[k]);
         s.lms[k] = hn::Set(d, lms.m[k]);
-        s.fit[k] = hn::Set(d, static_cast<float>(derived[k]));
+        s.fit[k] = hn::Set(d, static_cast<float>(prepared.s_max_fit[k / 3][k % 3]));
     }
-    for (std::size_t k = 0; k < 6; ++k) s.prim[k] = hn::Set(d, static_cast<float>(derived[9 + k]));
+    for (std::size_t k = 0; k < 6; ++k) s.prim[k] = hn::Set(d, static_cast<float>(prepared.primary_hue[k / 2][k % 2]));
     Exact exact{};
     for (std::size_t k = 0; k < 9; ++k) {
         const int row = static_cast<int>(k / 3);
@@ -454,7 +450,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
     exact.max = max_d;
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = s.half;
     // The float result may stand without the double step (see its use below).
-    const bool float_only = kind == Projection::constant_l || derived[15] == 1.0;
+    const bool float_only = kind == Projection::constant_l || prepared.structured;
     const V float_bound = hn::Mul(hn::Set(d, 8.0f), s.max);
     const V near = hn::Mul(hn::Set(d, 1e-5f), s.max);
     const V lw_margin = hn::Mul(hn::Set(d, 1e-5f), s.white_l);
@@ -465,20 +461,13 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
     const V big_c = hn::Mul(hn::Set(d, 16.0f), s.white_l);
     const V max_plus_tol = hn::Add(s.max, s.tol2);
     const V neg_tol = hn::Neg(s.tol2);
-    HWY_ALIGN float raw[3][hn::MaxLanes(D())];
-    HWY_ALIGN float flag[hn::MaxLanes(D())];
-    std::size_t i = 0;
-    for (; i + n <= colours; i += n) {
-        V r0, g0, b0;
-        hn::LoadInterleaved3(d, in + 3 * i, r0, g0, b0);
-        V r = r0, g = g0, b = b0;
-        simd::FiniteOrDefault(d, r, g, b);
+    return simd::RunKernel(d, clipper, in, out, colours, [&](V r, V g, V b, V& out_r, V& out_g, V& out_b) {
         const M outside = hn::Or(hn::Or(hn::Or(hn::Lt(r, zero), hn::Gt(r, s.max)),
                                         hn::Or(hn::Lt(g, zero), hn::Gt(g, s.max))),
                                  hn::Or(hn::Lt(b, zero), hn::Gt(b, s.max)));
         if (hn::AllFalse(d, outside)) {
-            hn::StoreInterleaved3(r, g, b, d, out + 3 * i);
-            continue;
+            out_r = r, out_g = g, out_b = b;
+            return outside;
         }
         V L, A, B;
         simd::ToOklab(d, s.mat, r, g, b, L, A, B);
@@ -708,7 +697,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
         // the exit by the conditioning (1 + total / slope) stays under 8 × 1e-7 max (see the
         // file comment for why not more); the
         // double step is taken for the whole vector otherwise, and always on a gamut without
-        // the sectors' structure (m_derived[15] = 0: ACES2065-1, where float alone was measured
+        // the sectors' structure (OklabProjectionPrepared::structured false: ACES2065-1, where float alone was measured
         // 1.8e-5 max off with oklab-adaptive, for reasons this estimate does not capture).
         V terms = zero;
         for (int j = 0; j < 3; ++j) {
@@ -734,28 +723,13 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             res[ch] = hn::IfThenZeroElse(black, hn::IfThenElse(white, s.max, res[ch]));
             res[ch] = hn::IfThenElse(outside, res[ch], c1[ch]);
         }
-        hn::StoreInterleaved3(res[0], res[1], res[2], d, out + 3 * i);
+        out_r = res[0], out_g = res[1], out_b = res[2];
         // Black and white lanes are final unless within rounding of the cube (tested first),
         // beyond float's range for the transforms, or with L near the verdict's threshold (fuzz
         // finding clip-8: on Rec.2020 a colour of L 3e-8 below the white's came out white).
-        const M redo = hn::And(
-            outside, hn::Or(hn::Or(hn::Or(within_tol, overflow), near_verdict),
-                            hn::AndNot(hn::Or(black, white), hard)));
-        if (HWY_UNLIKELY(!hn::AllFalse(d, redo))) {
-            hn::Store(r0, d, raw[0]);
-            hn::Store(g0, d, raw[1]);
-            hn::Store(b0, d, raw[2]);
-            hn::Store(hn::IfThenElseZero(redo, one), d, flag);
-            for (std::size_t k = 0; k < n; ++k) {
-                if (flag[k] == 0.0f) continue;
-                const Rgb o = clipper.clip({raw[0][k], raw[1][k], raw[2][k]});
-                out[3 * (i + k)] = static_cast<float>(o.r);
-                out[3 * (i + k) + 1] = static_cast<float>(o.g);
-                out[3 * (i + k) + 2] = static_cast<float>(o.b);
-            }
-        }
-    }
-    return i;
+        return hn::And(outside, hn::Or(hn::Or(hn::Or(within_tol, overflow), near_verdict),
+                                       hn::AndNot(hn::Or(black, white), hard)));
+    });
 }
 
 }  // namespace
@@ -789,27 +763,30 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 
 namespace irid {
+namespace {
 
-HWY_EXPORT(ClipOklab);
-HWY_EXPORT(ClipOklabAdaptive);
-HWY_EXPORT(ClipOklabCusp);
+IRID_EXPORT_KERNEL(ClipOklab)
+IRID_EXPORT_KERNEL(ClipOklabAdaptive)
+IRID_EXPORT_KERNEL(ClipOklabCusp)
 
-namespace detail {
-
-std::size_t clip_oklab_simd(const GamutClipper& clipper, const float* in, float* out,
-                            std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipOklab)(clipper, in, out, colours);
-}
-std::size_t clip_oklab_adaptive_simd(const GamutClipper& clipper, const float* in, float* out,
-                                     std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipOklabAdaptive)(clipper, in, out, colours);
-}
-std::size_t clip_oklab_cusp_simd(const GamutClipper& clipper, const float* in, float* out,
-                                 std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipOklabCusp)(clipper, in, out, colours);
+/// oklab-cusp: the kernel finds the cusp from the sectors' structure of the gamut (one zero
+/// channel per sector between primaries, the cusp at S_max; prepare_oklab_projection), which
+/// ACES2065-1's imaginary blue breaks: such a gamut runs the double reference.
+bool oklab_cusp_takes(const GamutClipper& clipper) noexcept {
+    return clipper.oklab_projection_prepared().structured;
 }
 
-}  // namespace detail
+}  // namespace
+
+detail::Kernel detail::oklab_kernel(ClipMethod method) noexcept {
+    switch (method) {
+        case ClipMethod::oklab: return {ClipOklabDispatch, nullptr};
+        case ClipMethod::oklab_adaptive: return {ClipOklabAdaptiveDispatch, nullptr};
+        case ClipMethod::oklab_cusp: return {ClipOklabCuspDispatch, oklab_cusp_takes};
+        default: return {};
+    }
+}
+
 }  // namespace irid
 
 #endif  // HWY_ONCE

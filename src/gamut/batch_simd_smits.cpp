@@ -41,43 +41,6 @@ using simd::Df;
 using simd::Mf;
 using simd::Vf;
 
-/// Floats per vector at most (the stack buffers of the hard lanes).
-constexpr std::size_t max_lanes = HWY_MAX_BYTES / sizeof(float);
-
-/// The loop every kernel shares: load, non-finite rule, `body(r, g, b, rr, gg, bb)` returning
-/// the hard lanes, store, then the hard lanes recomputed by the double reference. The input is
-/// kept in registers, so `in` may equal `out`.
-template <class Body>
-std::size_t RunKernel(const GamutClipper& clipper, const float* in, float* out, std::size_t colours,
-                      const Body& body) {
-    const Df d;
-    const std::size_t n = hn::Lanes(d);
-    std::size_t i = 0;
-    for (; i + n <= colours; i += n) {
-        Vf r, g, b;
-        hn::LoadInterleaved3(d, in + 3 * i, r, g, b);
-        simd::FiniteOrDefault(d, r, g, b);
-        Vf rr, gg, bb;
-        const Mf hard = body(r, g, b, rr, gg, bb);
-        hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
-        if (HWY_UNLIKELY(!hn::AllFalse(d, hard))) {
-            HWY_ALIGN float cr[max_lanes], cg[max_lanes], cb[max_lanes], flag[max_lanes];
-            hn::Store(r, d, cr);
-            hn::Store(g, d, cg);
-            hn::Store(b, d, cb);
-            hn::Store(hn::IfThenElseZero(hard, hn::Set(d, 1.0f)), d, flag);
-            for (std::size_t k = 0; k < n; ++k) {
-                if (flag[k] == 0.0f) continue;
-                const Rgb o = clipper.clip({cr[k], cg[k], cb[k]});
-                out[3 * (i + k)] = static_cast<float>(o.r);
-                out[3 * (i + k) + 1] = static_cast<float>(o.g);
-                out[3 * (i + k) + 2] = static_cast<float>(o.b);
-            }
-        }
-    }
-    return i;
-}
-
 /// Lanes with a channel beyond 16 × max in magnitude (hard in every kernel, see the top).
 HWY_INLINE Mf Huge(Vf r, Vf g, Vf b, Vf limit) {
     return hn::Gt(hn::Max(hn::Max(hn::Abs(r), hn::Abs(g)), hn::Abs(b)), limit);
@@ -179,7 +142,7 @@ std::size_t ClipSmitsXyz(const GamutClipper& clipper, const float* in, float* ou
     const Vf zero = hn::Zero(d), one = hn::Set(d, 1.0f);
     const Vf max = hn::Set(d, static_cast<float>(clipper.gamut().max()));
     const Vf huge = hn::Mul(max, hn::Set(d, 16.0f));
-    return RunKernel(clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& rr, Vf& gg, Vf& bb) {
+    return simd::RunKernel(d, clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& rr, Vf& gg, Vf& bb) {
         const Vf Y = hn::MulAdd(m12, b, hn::MulAdd(m11, g, hn::Mul(m10, r)));
         const Vf k = hn::Mul(Y, inv_wy);
         const Vf neutral = hn::Mul(max, k);
@@ -244,7 +207,7 @@ std::size_t ClipLuvLightnessHue(const GamutClipper& clipper, const float* in, fl
     const Vf huge = hn::Mul(max, hn::Set(d, 16.0f));
     const Vf no_chroma = hn::Mul(max, hn::Set(d, 1e-3f));
     const Vf near_tol = hn::Mul(max, hn::Set(d, 1e-4f));
-    return RunKernel(clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& rr, Vf& gg, Vf& bb) {
+    return simd::RunKernel(d, clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& rr, Vf& gg, Vf& bb) {
         Vf X, Y, Z;
         simd::Mul3(to_xyz, r, g, b, X, Y, Z);
         const Vf den = hn::MulAdd(hn::Set(d, 3.0f), Z, hn::MulAdd(hn::Set(d, 15.0f), Y, X));
@@ -294,24 +257,24 @@ std::size_t ClipLuvLightnessHue(const GamutClipper& clipper, const float* in, fl
 
 // --- smits-soft ------------------------------------------------------------------------------
 
-/// GamutClipper::smits_soft (smits_soft.cpp), forward or inverse, with m_derived's threshold,
+/// GamutClipper::smits_soft (smits_soft.cpp), forward or inverse, with its prepared threshold,
 /// limit, power, scale and 1/power. Powers as exp(p log x), arranged so that no power exceeds 1
 /// (x^p for x <= 1, x^−p above). Hard lanes: only huge ones.
 std::size_t ClipSmitsSoft(const GamutClipper& clipper, const float* in, float* out,
                           std::size_t colours) {
     const Df d;
     const SmitsParams P = LoadSmits(d, clipper.gamut());
-    const std::array<double, 16>& k = clipper.derived();
-    const Vf thr = hn::Set(d, static_cast<float>(k[0])), lim = hn::Set(d, static_cast<float>(k[1]));
-    const Vf pw = hn::Set(d, static_cast<float>(k[2])),
-             scale = hn::Set(d, static_cast<float>(k[3]));
-    const Vf inv_scale = hn::Set(d, static_cast<float>(1.0 / k[3]));
-    const Vf inv_pw = hn::Set(d, static_cast<float>(k[4]));
+    const SmitsSoftPrepared& k = clipper.smits_soft_prepared();
+    const Vf thr = hn::Set(d, static_cast<float>(k.threshold)), lim = hn::Set(d, static_cast<float>(k.limit));
+    const Vf pw = hn::Set(d, static_cast<float>(k.power)),
+             scale = hn::Set(d, static_cast<float>(k.scale));
+    const Vf inv_scale = hn::Set(d, static_cast<float>(1.0 / k.scale));
+    const Vf inv_pw = hn::Set(d, static_cast<float>(k.inverse_power));
     const bool inverse = clipper.inverse();
     const Vf zero = hn::Zero(d), one = hn::Set(d, 1.0f), max = P.max;
     const Vf huge = hn::Mul(max, hn::Set(d, 16.0f));
     const Vf tiny = hn::Set(d, 1e-30f);
-    return RunKernel(clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& rr, Vf& gg, Vf& bb) {
+    return simd::RunKernel(d, clipper, in, out, colours, [&](Vf r, Vf g, Vf b, Vf& rr, Vf& gg, Vf& bb) {
         const Vf y = hn::MulAdd(P.l2, b, hn::MulAdd(P.l1, g, hn::Mul(P.l0, r)));
         const Vf w = hn::Mul(y, P.inv_sum);
         const Vf inv_room = hn::Div(one, hn::Sub(max, w));
@@ -367,29 +330,23 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 
 namespace irid {
+namespace {
 
-HWY_EXPORT(ClipSmitsXyz);
-HWY_EXPORT(ClipLuvLightnessHue);
-HWY_EXPORT(ClipSmitsSoft);
+IRID_EXPORT_KERNEL(ClipSmitsXyz)
+IRID_EXPORT_KERNEL(ClipLuvLightnessHue)
+IRID_EXPORT_KERNEL(ClipSmitsSoft)
 
-namespace detail {
+}  // namespace
 
-std::size_t clip_smits_xyz_simd(const GamutClipper& clipper, const float* in, float* out,
-                                std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipSmitsXyz)(clipper, in, out, colours);
+detail::Kernel detail::smits_family_kernel(ClipMethod method) noexcept {
+    switch (method) {
+        case ClipMethod::smits_xyz: return {ClipSmitsXyzDispatch, nullptr};
+        case ClipMethod::luv_lightness_hue: return {ClipLuvLightnessHueDispatch, nullptr};
+        case ClipMethod::smits_soft: return {ClipSmitsSoftDispatch, nullptr};
+        default: return {};
+    }
 }
 
-std::size_t clip_luv_lightness_hue_simd(const GamutClipper& clipper, const float* in, float* out,
-                                        std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipLuvLightnessHue)(clipper, in, out, colours);
-}
-
-std::size_t clip_smits_soft_simd(const GamutClipper& clipper, const float* in, float* out,
-                                 std::size_t colours) noexcept {
-    return HWY_DYNAMIC_DISPATCH(ClipSmitsSoft)(clipper, in, out, colours);
-}
-
-}  // namespace detail
 }  // namespace irid
 
 #endif  // HWY_ONCE

@@ -36,21 +36,32 @@ struct Mat3f {
 using ClipKernel = std::size_t (*)(const GamutClipper& clipper, const float* in, float* out,
                                    std::size_t colours) noexcept;
 
-/// The kernel of a method, or nullptr for one without (luv-hue). smits and clamp keep their
-/// bit-exact kernels of batch.h (clip_smits_simd, clip_clamp_simd) and are not listed here.
-[[nodiscard]] ClipKernel simd_kernel(ClipMethod method) noexcept;
+/// A method's SIMD kernel, and the rule of which clippers it may take, beyond batch.cpp's rules
+/// for every kernel (a peak of at least 1e-6, primaries of positive luminance). The rule is
+/// written beside the kernel, in its file; nullptr takes every clipper.
+struct Kernel {
+    ClipKernel run = nullptr;
+    bool (*takes)(const GamutClipper& clipper) noexcept = nullptr;
+};
 
-std::size_t clip_smits_xyz_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;
-std::size_t clip_luv_lightness_hue_simd(const GamutClipper&, const float*, float*,
-                                        std::size_t) noexcept;
-std::size_t clip_smits_soft_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;
-std::size_t clip_aces_rgc_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;
-std::size_t clip_css_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;
-std::size_t clip_css_raytrace_simd(const GamutClipper&, const float*, float*,
-                                   std::size_t) noexcept;
-std::size_t clip_oklab_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;
-std::size_t clip_oklab_adaptive_simd(const GamutClipper&, const float*, float*,
-                                     std::size_t) noexcept;
-std::size_t clip_oklab_cusp_simd(const GamutClipper&, const float*, float*, std::size_t) noexcept;
+/// The kernel of a method, or {} for one without (luv-hue). smits and clamp keep their
+/// bit-exact kernels of batch.h (clip_smits_simd, clip_clamp_simd) and are not listed here.
+[[nodiscard]] Kernel simd_kernel(ClipMethod method) noexcept;
+
+// Each kernel file's methods ({} for any other method).
+[[nodiscard]] Kernel smits_family_kernel(ClipMethod method) noexcept;  // batch_simd_smits.cpp
+[[nodiscard]] Kernel aces_rgc_kernel(ClipMethod method) noexcept;      // batch_simd_aces.cpp
+[[nodiscard]] Kernel css_kernel(ClipMethod method) noexcept;           // batch_simd_css.cpp
+[[nodiscard]] Kernel oklab_kernel(ClipMethod method) noexcept;         // batch_simd_oklab.cpp
 
 }  // namespace irid::detail
+
+/// In a kernel file's HWY_ONCE part, inside namespace irid: exports HWY_NAMESPACE::Name (a
+/// ClipKernel without noexcept, compiled once per target by foreach_target.h) and defines
+/// Name##Dispatch, the ClipKernel that runs the best target the CPU has.
+#define IRID_EXPORT_KERNEL(Name)                                                                \
+    HWY_EXPORT(Name);                                                                           \
+    std::size_t Name##Dispatch(const GamutClipper& clipper, const float* in, float* out,        \
+                               std::size_t colours) noexcept {                                  \
+        return HWY_DYNAMIC_DISPATCH(Name)(clipper, in, out, colours);                           \
+    }

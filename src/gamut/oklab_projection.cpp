@@ -359,28 +359,17 @@ Rgb GamutClipper::oklab_projection(const Rgb& c, bool around_cusp, Branches* bra
     return out;
 }
 
-// m_derived of oklab-adaptive and oklab-cusp (read by the SIMD kernels, batch_simd_oklab.cpp):
-//   [3 z + 0, 3 z + 1, 3 z + 2]  S_max ≈ k0 + k1 a' + k2 b' over the hues whose rays first reach
-//                                the face of channel z (z = 0, 1, 2 for r, g, b) = 0: a least-
-//                                squares fit to the exact S_max, the kernels' starting guess;
-//   [9, 10], [11, 12], [13, 14]  the unit hue (a', b') of the red, green and blue primaries;
-//   [15]                         1 when every hue from red to green (counter-clockwise) first
-//                                reaches b = 0, from green to blue r = 0, from blue to red g = 0,
-//                                each of these sectors under 180°, and the cusp lies at S_max,
-//                                at 48 hues of each sector; else 0 (the kernel of oklab-cusp then
-//                                leaves every colour to the double reference).
+// OklabProjectionPrepared (clip.h), read by the SIMD kernels (batch_simd_oklab.cpp).
 void GamutClipper::prepare_oklab_projection() {
-    m_derived.fill(0.0);
+    m_oklab_projection = {};
     const double max = m_gamut.max();
-    std::array<std::array<double, 2>, 3> primary{};
+    std::array<std::array<double, 2>, 3>& primary = m_oklab_projection.primary_hue;
     for (int i = 0; i < 3; ++i) {
         Rgb c{0.0, 0.0, 0.0};
         (i == 0 ? c.r : i == 1 ? c.g : c.b) = max;
         const Oklab lab = to_oklab(c);
         const double chroma = std::hypot(lab.a, lab.b);
         primary[static_cast<std::size_t>(i)] = {lab.a / chroma, lab.b / chroma};
-        m_derived[static_cast<std::size_t>(9 + 2 * i)] = lab.a / chroma;
-        m_derived[static_cast<std::size_t>(10 + 2 * i)] = lab.b / chroma;
     }
     const auto cross = [](const std::array<double, 2>& u, const std::array<double, 2>& v) {
         return u[0] * v[1] - u[1] * v[0];
@@ -414,9 +403,9 @@ void GamutClipper::prepare_oklab_projection() {
             }
         }
         const Vec3 fit = irid::inverse(normal, "oklab cusp fit") * rhs;
-        for (int i = 0; i < 3; ++i) m_derived[static_cast<std::size_t>(3 * zero + i)] = fit[i];
+        m_oklab_projection.s_max_fit[static_cast<std::size_t>(zero)] = {fit[0], fit[1], fit[2]};
     }
-    m_derived[15] = structured ? 1.0 : 0.0;
+    m_oklab_projection.structured = structured;
 }
 
 

@@ -2,10 +2,11 @@
 // after hwy/highway.h; the include guard toggles with HWY_TARGET_TOGGLE, as Highway's own -inl.h
 // headers do).
 //
-// - finite_or_default: the non-finite rule of clip.h (NaN → 0, ±Inf → ±1e30).
+// - FiniteOrDefault: the non-finite rule of clip.h (NaN → 0, ±Inf → ±1e30).
+// - RunKernel: the loop every per-vector kernel shares (load, the rule, the body, store, the hard
+//   lanes redone in double), and RedoHardLanes.
 // - Mul3: a float 3×3 matrix (kernels.h, row-major) times a vector of colours.
-// - Cbrt: the real cube root, sign kept, to within 2 ulp of float over the normal range (an
-//   initial guess from the exponent bits, refined by two Halley steps; tests/gamut/kernel_test).
+// The cube root is the one of src/color/simd_math-inl.h (simd_math::Cbrt).
 // - ToOklab / FromOklab: linear RGB of a gamut ↔ Oklab, through the clipper's LMS matrices and
 //   Ottosson's M2 (in float).
 
@@ -19,7 +20,11 @@
 #include <hwy/highway.h>
 #include <irid/color/spaces.h>
 
+#include "../color/simd_math-inl.h"
+
 #include "kernels.h"
+
+#include <cstddef>
 
 HWY_BEFORE_NAMESPACE();
 namespace irid {
@@ -31,20 +36,89 @@ using Df = hn::ScalableTag<float>;
 using Vf = hn::Vec<Df>;
 using Mf = hn::Mask<Df>;
 
-HWY_INLINE Vf FiniteOrDefault(Df d, Vf v) {
+/// The non-finite rule of clip.h (finite_or_default: NaN → 0, ±Inf → ±1e30), in float or double.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V FiniteOrDefault(D d, V v) {
+    using T = hn::TFromD<D>;
     v = hn::IfThenZeroElse(hn::IsNaN(v), v);
-    return hn::IfThenElse(hn::IsInf(v), hn::CopySign(hn::Set(d, 1e30f), v), v);
+    return hn::IfThenElse(hn::IsInf(v), hn::CopySign(hn::Set(d, static_cast<T>(1e30)), v), v);
 }
 
-/// The rule on three channels, skipped (a few comparisons) when they are all finite.
-HWY_INLINE void FiniteOrDefault(Df d, Vf& r, Vf& g, Vf& b) {
-    if (HWY_LIKELY(
-            hn::AllTrue(d, hn::And(hn::And(hn::IsFinite(r), hn::IsFinite(g)), hn::IsFinite(b))))) {
-        return;
-    }
+/// The rule on three channels, skipped when they are all finite: v − v is 0 for a finite v and
+/// NaN for NaN and ±Inf, and a sum with a NaN is NaN, so one comparison of
+/// (r − r) + (g − g) + (b − b) with 0 tests the three channels (5 arithmetic operations, fewer
+/// than three IsFinite on AVX2, where each is a few integer operations).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void FiniteOrDefault(D d, V& r, V& g, V& b) {
+    const V sum = hn::Add(hn::Add(hn::Sub(r, r), hn::Sub(g, g)), hn::Sub(b, b));
+    if (HWY_LIKELY(hn::AllTrue(d, hn::Eq(sum, hn::Zero(d))))) return;
     r = FiniteOrDefault(d, r);
     g = FiniteOrDefault(d, g);
     b = FiniteOrDefault(d, b);
+}
+
+/// The hard lanes of one vector of colours redone by the double reference: GamutClipper::clip of
+/// each lane of the input (raw_r, raw_g, raw_b as loaded, before any rule) whose `hard` is set,
+/// written over out + 3 (i + lane).
+template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
+HWY_NOINLINE void RedoHardLanes(D d, M hard, const GamutClipper& clipper, V raw_r, V raw_g, V raw_b,
+                                float* out, std::size_t i) {
+    using T = hn::TFromD<D>;
+    constexpr std::size_t max_lanes = HWY_MAX_BYTES / sizeof(T);
+    HWY_ALIGN T cr[max_lanes], cg[max_lanes], cb[max_lanes], flag[max_lanes];
+    hn::Store(raw_r, d, cr);
+    hn::Store(raw_g, d, cg);
+    hn::Store(raw_b, d, cb);
+    hn::Store(hn::IfThenElseZero(hard, hn::Set(d, T(1))), d, flag);
+    for (std::size_t k = 0; k < hn::Lanes(d); ++k) {
+        if (flag[k] == T(0)) continue;
+        const Rgb o = clipper.clip({static_cast<double>(cr[k]), static_cast<double>(cg[k]),
+                                    static_cast<double>(cb[k])});
+        out[3 * (i + k)] = static_cast<float>(o.r);
+        out[3 * (i + k) + 1] = static_cast<float>(o.g);
+        out[3 * (i + k) + 2] = static_cast<float>(o.b);
+    }
+}
+
+/// The loop every per-vector kernel shares: load a vector of interleaved float colours (promoted
+/// to double when D is double), the non-finite rule, `body(r, g, b, rr, gg, bb)` returning the
+/// hard lanes, store rr, gg, bb (demoted to float), then the hard lanes redone by the double
+/// reference. The input is kept in registers, so `in` may equal `out`. Returns how many colours
+/// it did: the largest multiple of the vector length (kernels.h). aces-rgc's forward kernel is
+/// the one that does not use it: it works on blocks of vectors, packing each channel's lanes
+/// that need the curve, and redoes its hard lanes after the block (batch_simd_aces.cpp).
+template <class D, class Body>
+HWY_INLINE std::size_t RunKernel(D d, const GamutClipper& clipper, const float* in, float* out,
+                                 std::size_t colours, const Body& body) {
+    using V = hn::Vec<D>;
+    const std::size_t n = hn::Lanes(d);
+    std::size_t i = 0;
+    for (; i + n <= colours; i += n) {
+        V r0, g0, b0;
+        if constexpr (sizeof(hn::TFromD<D>) == sizeof(float)) {
+            hn::LoadInterleaved3(d, in + 3 * i, r0, g0, b0);
+        } else {
+            const hn::Rebind<float, D> df;
+            hn::Vec<decltype(df)> rf, gf, bf;
+            hn::LoadInterleaved3(df, in + 3 * i, rf, gf, bf);
+            r0 = hn::PromoteTo(d, rf);
+            g0 = hn::PromoteTo(d, gf);
+            b0 = hn::PromoteTo(d, bf);
+        }
+        V r = r0, g = g0, b = b0;
+        FiniteOrDefault(d, r, g, b);
+        V rr, gg, bb;
+        const auto hard = body(r, g, b, rr, gg, bb);
+        if constexpr (sizeof(hn::TFromD<D>) == sizeof(float)) {
+            hn::StoreInterleaved3(rr, gg, bb, d, out + 3 * i);
+        } else {
+            const hn::Rebind<float, D> df;
+            hn::StoreInterleaved3(hn::DemoteTo(df, rr), hn::DemoteTo(df, gg), hn::DemoteTo(df, bb), df,
+                                  out + 3 * i);
+        }
+        if (HWY_UNLIKELY(!hn::AllFalse(d, hard))) RedoHardLanes(d, hard, clipper, r0, g0, b0, out, i);
+    }
+    return i;
 }
 
 /// A float matrix broadcast into vectors once per kernel call.
@@ -64,30 +138,6 @@ HWY_INLINE void Mul3(const MatV& M, Vf x0, Vf x1, Vf x2, Vf& o0, Vf& o1, Vf& o2)
     o2 = hn::MulAdd(M.m[8], x2, hn::MulAdd(M.m[7], x1, hn::Mul(M.m[6], x0)));
 }
 
-/// The real cube root with the sign of x; 0 for ±0 (and for subnormal x, below 1.2e-38, whose
-/// cube root 2.3e-13 matters to no colour). For |x| up to 1e37: above about 1.1e38 the Halley
-/// step's 2y³ + |x| overflows and the result is wrong (callers send such lanes to the double
-/// reference; inputs are at most 1e30 after the non-finite rule).
-HWY_INLINE Vf Cbrt(Df d, Vf x) {
-    const hn::RebindToSigned<Df> di;
-    const Vf a = hn::Abs(x);
-    // The bits of a float are nearly a scaled log2: a third of them, plus the bias times 2/3
-    // (127 · 2^23 · 2/3 = 0x2A2AAAAB; 0x2A51_37A0 splits the error around 0), is within 7 % of
-    // the root.
-    const auto bits = hn::BitCast(di, a);
-    const auto third = hn::ConvertTo(
-        di, hn::Mul(hn::ConvertTo(d, bits), hn::Set(d, 1.0f / 3.0f)));
-    Vf y = hn::BitCast(d, hn::Add(third, hn::Set(di, 709921077)));
-    // Halley: y ← y (y³ + 2a)/(2y³ + a), cubic convergence (7 % → 1e-4 → float rounding).
-    const Vf two = hn::Set(d, 2.0f);
-    for (int it = 0; it < 2; ++it) {
-        const Vf y3 = hn::Mul(hn::Mul(y, y), y);
-        y = hn::Mul(y, hn::Div(hn::MulAdd(two, a, y3), hn::MulAdd(two, y3, a)));
-    }
-    y = hn::IfThenZeroElse(hn::Lt(a, hn::Set(d, 1.17549435e-38f)), y);
-    return hn::CopySign(y, x);
-}
-
 /// Oklab of linear RGB: LMS = rgb_to_lms · rgb, cube roots, then Ottosson's M2.
 struct OklabMatrices {
     MatV to_lms, from_lms, m2, m2_inverse;
@@ -101,7 +151,7 @@ HWY_INLINE OklabMatrices LoadOklabMatrices(Df d, const GamutClipper& clipper) {
 HWY_INLINE void ToOklab(Df d, const OklabMatrices& M, Vf r, Vf g, Vf b, Vf& L, Vf& A, Vf& B) {
     Vf l, m, s;
     Mul3(M.to_lms, r, g, b, l, m, s);
-    Mul3(M.m2, Cbrt(d, l), Cbrt(d, m), Cbrt(d, s), L, A, B);
+    Mul3(M.m2, simd_math::Cbrt(d, l), simd_math::Cbrt(d, m), simd_math::Cbrt(d, s), L, A, B);
 }
 HWY_INLINE void FromOklab(const OklabMatrices& M, Vf L, Vf A, Vf B, Vf& r, Vf& g, Vf& b) {
     Vf l, m, s;

@@ -28,9 +28,7 @@
 // r' and goes to w + (limit/r')(c − w), near the grey) and bounded by the limit's shell.
 // inverse(forward(c)) = c for every colour whose r < limit.
 // The inverse's output is not confined to the cube (confines_to_cube() is false).
-//
-// m_derived layout (prepare_smits_soft):
-//   [0] threshold  [1] limit  [2] power  [3] scale  [4] 1/power
+
 
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
@@ -57,12 +55,7 @@ void GamutClipper::prepare_smits_soft() {
             " give no finite compression curve (((1 - threshold)/(limit - threshold))^-power"
             " overflows); lower the power or bring the limit nearer the threshold");
     }
-    m_derived = {};
-    m_derived[0] = threshold;
-    m_derived[1] = limit;
-    m_derived[2] = power;
-    m_derived[3] = scale;
-    m_derived[4] = 1.0 / power;
+    m_smits_soft = {threshold, limit, power, scale, 1.0 / power};
 }
 
 Rgb GamutClipper::smits_soft(const Rgb& c) const noexcept {
@@ -80,8 +73,9 @@ Rgb GamutClipper::smits_soft(const Rgb& c) const noexcept {
         const double ri = v[i] > w ? (v[i] - w) / (max - w) : (w - v[i]) / w;
         if (ri > r) r = ri, face = i;
     }
-    const double threshold = m_derived[0], limit = m_derived[1], power = m_derived[2];
-    const double scale = m_derived[3], inv_power = m_derived[4];
+    const SmitsSoftPrepared& prepared = m_smits_soft;
+    const double threshold = prepared.threshold, limit = prepared.limit, power = prepared.power;
+    const double scale = prepared.scale, inv_power = prepared.inverse_power;
     if (!(r > threshold)) return c;
     double target = 0.0;  // the new relative distance
     if (!m_inverse) {

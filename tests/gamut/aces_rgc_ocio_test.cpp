@@ -106,7 +106,7 @@ std::vector<float> colours(const Params& p, std::uint32_t seed) {
 double inverse_slope(const GamutClipper& g, double ach, double c, std::size_t k) {
     if (ach == 0.0) return 1.0;
     const double d = (ach - c) / std::abs(ach);
-    const double thr = g.derived()[k], s = g.derived()[3 + k], p = g.derived()[6];
+    const double thr = g.aces_rgc_prepared().threshold[k], s = g.aces_rgc_prepared().scale[k], p = g.aces_rgc_prepared().power;
     if (d < thr) return 1.0;
     if (d >= thr + s) return d < (thr + s) * (1.0 + 1e-6) ? HUGE_VAL : 1.0;
     const double u = std::pow((d - thr) / s, p);

@@ -87,7 +87,7 @@ TEST(AcesRgc, DefaultsAreThePublishedOnesAndRangesAreOcios) {
                                        .set("limit-magenta", 65504)
                                        .set("threshold-magenta", 0)
                                        .set("power", 65504));
-    for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(edge.derived()[3 + static_cast<std::size_t>(k)]));
+    for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(edge.aces_rgc_prepared().scale[static_cast<std::size_t>(k)]));
 }
 
 TEST(AcesRgc, TheLimitMapsToTheBoundaryExactly) {
@@ -123,7 +123,7 @@ TEST(AcesRgc, BelowTheThresholdNothingMovesAndTheCurveJoinsWithSlopeOne) {
         double* v[3] = {&c.r, &c.g, &c.b};
         const int top = static_cast<int>(3 * u(rng)) % 3;
         for (int k = 0; k < 3; ++k) {
-            const double d = k == top ? 0.0 : g.derived()[static_cast<std::size_t>(k)] * u(rng);
+            const double d = k == top ? 0.0 : g.aces_rgc_prepared().threshold[static_cast<std::size_t>(k)] * u(rng);
             *v[k] = ach - d * std::abs(ach);
         }
         const Rgb out = g.clip(c);
@@ -136,7 +136,7 @@ TEST(AcesRgc, BelowTheThresholdNothingMovesAndTheCurveJoinsWithSlopeOne) {
     // At the threshold the curve is continuous (D(thr) = thr) and its slope is 1 from both sides
     // (f'(0) = 1 for f(nd) = nd / (1 + nd^p)^(1/p)), so C1; farther out the slope drops below 1.
     for (int k = 0; k < 3; ++k) {
-        const double thr = g.derived()[static_cast<std::size_t>(k)];
+        const double thr = g.aces_rgc_prepared().threshold[static_cast<std::size_t>(k)];
         const double h = 1e-7;
         EXPECT_NEAR(compressed_distance(g, k, thr), thr, 1e-15);
         EXPECT_NEAR(compressed_distance(g, k, thr + h) - (thr + h), 0.0, 1e-14);
@@ -152,7 +152,7 @@ TEST(AcesRgc, BelowTheThresholdNothingMovesAndTheCurveJoinsWithSlopeOne) {
         for (double d = thr; d < 50.0; d += 0.01) {
             const double D = compressed_distance(g, k, d);
             EXPECT_GE(D, last);
-            EXPECT_LT(D, g.derived()[8 + static_cast<std::size_t>(k)]);
+            EXPECT_LT(D, g.aces_rgc_prepared().asymptote[static_cast<std::size_t>(k)]);
             last = D;
         }
     }
@@ -180,7 +180,7 @@ TEST(AcesRgc, InverseUndoesForwardAndForwardUndoesInverse) {
             Rgb c{1.0, 1.0, 1.0};
             for (int k = 0; k < 3; ++k) {
                 if (k == i % 3) continue;  // the achromatic axis, at 1
-                const double a = fwd.derived()[8 + static_cast<std::size_t>(k)];
+                const double a = fwd.aces_rgc_prepared().asymptote[static_cast<std::size_t>(k)];
                 const double d = (a - 1e-3) * (0.5 + 0.5 * (u(rng) + 1.5) / 2.7);
                 (k == 0 ? c.r : (k == 1 ? c.g : c.b)) = 1.0 - d;
             }
@@ -218,12 +218,12 @@ TEST(AcesRgc, AchromaticZeroNegativeMaxAndTheAsymptoteAsOcio) {
     for (int k = 0; k < 3; ++k) {
         EXPECT_NEAR((channel(on, k) + 0.1) / 0.1, (channel(op, k) - 0.1) / 0.1, 1e-12) << k;
     }
-    EXPECT_LT(channel(on, 1), -0.1 - 0.1 * g.derived()[1]);  // compressed, still below ach
+    EXPECT_LT(channel(on, 1), -0.1 - 0.1 * g.aces_rgc_prepared().threshold[1]);  // compressed, still below ach
     EXPECT_GT(channel(on, 1), -0.5);
     // Inverse at and beyond the asymptote thr + s: the channel is unchanged (OCIO uncompress:
     // dist >= thr + scale returns dist).
     for (int k = 0; k < 3; ++k) {
-        const double a = g.derived()[8 + static_cast<std::size_t>(k)];
+        const double a = g.aces_rgc_prepared().asymptote[static_cast<std::size_t>(k)];
         for (const double d : {a, a + 1e-9, 2.0, 50.0}) {
             const Rgb c = with_channel(2.0, 2.0 - 2.0 * d, k);
             EXPECT_EQ(channel(inv.clip(c), k), channel(c, k)) << d;
@@ -240,8 +240,8 @@ TEST(AcesRgc, ALargePowerTendsToTheHardClipOfTheDistanceAndStaysFinite) {
     // nd^p overflows there; irid's form does not.
     const GamutClipper g = aces(ClipSettings{}.set("power", 65504));
     for (int k = 0; k < 3; ++k) {
-        const double thr = g.derived()[static_cast<std::size_t>(k)];
-        EXPECT_NEAR(g.derived()[3 + static_cast<std::size_t>(k)], 1.0 - thr, 1e-4);
+        const double thr = g.aces_rgc_prepared().threshold[static_cast<std::size_t>(k)];
+        EXPECT_NEAR(g.aces_rgc_prepared().scale[static_cast<std::size_t>(k)], 1.0 - thr, 1e-4);
         for (const double d : {thr + 0.01, 0.95, 0.999, 1.0, 1.2, 10.0, 1e20}) {
             const double D = compressed_distance(g, k, d);
             EXPECT_TRUE(std::isfinite(D));
@@ -422,7 +422,7 @@ TEST(AcesRgcBatch, LanesSentToTheDoubleReferenceOnTheBenchmarkInput) {
         bool hard = extreme;
         for (std::size_t k = 0; k < 3 && ach != 0.0; ++k) {
             const double dist = (ach - c[k]) / a;
-            const double thr = g.derived()[k], s = g.derived()[3 + k], p = g.derived()[6];
+            const double thr = g.aces_rgc_prepared().threshold[k], s = g.aces_rgc_prepared().scale[k], p = g.aces_rgc_prepared().power;
             if (dist >= thr && dist < thr + s && std::pow((dist - thr) / s, p) > 1.0 - 1e-4) hard = true;
             if (dist >= thr + s && dist < (thr + s) * (1.0 + 1e-9)) hard = true;
         }

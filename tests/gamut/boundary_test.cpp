@@ -10,12 +10,11 @@
 //     growth × d + rounding
 //
 // growth = 100: the methods that move a colour toward the grey of its luminance (smits,
-// smits-xyz, luv-lightness-hue, and the correction of smits-corrected, which is no longer than
-// smits' own move) move a colour at distance d from a face by up to d (1 − l)/l, where l is the
-// smallest luminance weight of the space relative to their sum (sRGB blue 0.0722: 13 d;
-// Rec.2020 blue 0.0593: 16 d); twice that for smits-corrected; clamp, css and oklab move it by
-// d; 100 leaves room. The defects this guards against: oklab moved colours by 4e-4 to 0.86
-// whatever d was; smits-corrected by up to about 6000 d (6.4e-6 for d = 1e-9 on Rec.2020).
+// smits-xyz, luv-lightness-hue) move a colour at distance d from a face by up to d (1 − l)/l,
+// where l is the smallest luminance weight of the space relative to their sum (sRGB blue
+// 0.0722: 13 d; Rec.2020 blue 0.0593: 16 d); clamp, css and oklab move it by d; 100 leaves
+// room. The defects this guards against: oklab moved colours by 4e-4 to 0.86 whatever d was;
+// the retired smits-corrected by up to about 6000 d (6.4e-6 for d = 1e-9 on Rec.2020).
 // rounding: in double 1e-12 max: the methods go through XYZ, CIELUV or Oklab (cube roots) and
 // back, a few hundred ulps at most, and luv-hue's golden-section search settles L* to about
 // 1e-13. In float 4 ulps of max (4 × 2^-23 max): the result is rounded to float (half an ulp)

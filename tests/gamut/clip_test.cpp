@@ -241,13 +241,12 @@ TEST(Oklab, KeepsOklabLightnessAndHueWithMaximalChroma) {
 }
 
 TEST(Oklab, JustBelowTheWhitesLightnessKeepsTheLightness) {
-    // Oklab's neutral axis (a = b = 0) is not exactly the spaces' grey: the published matrices
-    // give the D65 white a chroma of about 1e-4, and at the white's lightness the neutral is
-    // sRGB (1.0004, 1.0000, 0.9992). So within about 1.4e-4 of the white's L no chroma of the
-    // colour's lightness and hue is inside the cube. The line's point nearest the cube is then
-    // at most that 4.2e-4 outside, and clamping it changes Y by no more, L (about Y^(1/3)) by a
-    // third of it: 1e-3 leaves room. (The first crossing of a bound, taken before, moved L by up
-    // to 0.32 here.) Colours scaled to a lightness in the last 3e-4 below the white's.
+    // With Ottosson's published matrices Oklab's neutral axis left the cube within about 1.4e-4
+    // below the white's L (they give the D65 white a chroma of 1.2e-4), no chroma of such a
+    // colour's lightness and hue was inside, and the method could keep L only to 1e-3. CSS Color
+    // 4's matrices put the white on the axis: the grey of every lightness up to the white's is
+    // inside, and L is kept to rounding. Colours scaled to a lightness in the last 3e-4 below
+    // the white's.
     for (const RgbSpace* space : {&srgb(), &display_p3(), &rec2020(), &adobe_rgb()}) {
         SCOPED_TRACE(space->name());
         const Gamut gamut(*space);
@@ -265,7 +264,7 @@ TEST(Oklab, JustBelowTheWhitesLightnessKeepsTheLightness) {
             if (gamut.contains(in)) continue;
             const Rgb out = clipper.clip(in);
             EXPECT_TRUE(gamut.contains(out));
-            EXPECT_NEAR(xyz_to_oklab(space->to_xyz(out)).L, target, 1e-3)
+            EXPECT_NEAR(xyz_to_oklab(space->to_xyz(out)).L, target, 1e-9)
                 << in.r << "," << in.g << "," << in.b;
             ++checked;
         }

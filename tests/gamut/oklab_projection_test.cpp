@@ -3,7 +3,8 @@
 // oklab-cusp.
 //
 // What is checked, on every built-in RGB space and on HDR peaks:
-// - in-gamut colours are unchanged; L <= 0 gives black and L at or above the white's L white;
+// - in-gamut colours are unchanged; there is no black or white rule (Ottosson's L0 applies at
+//   every lightness);
 // - an out-of-gamut colour comes back inside the cube with a channel at 0 or max (to 1e-12 max),
 //   its Oklab hue kept, on the segment from (L0, 0) to itself in its hue plane, where L0 is
 //   Ottosson's formula (written out here from the article) around half the white's L or around

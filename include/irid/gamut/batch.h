@@ -24,7 +24,7 @@
 // (float → double → float); luv-hue always does, and so does every method but smits and clamp
 // when the peak is below 1e-6 (float's subnormals are near) or when a primary of the gamut has
 // a luminance of 0 or below (ACES2065-1), where float is ill-conditioned; css does above a peak
-// of 16, css-raytrace below a peak of 0.5.
+// of 16.
 //
 // Threads: the span is cut into fixed chunks of `batch_chunk_colours` colours (independent of the
 // thread count) run by oneTBB in an arena of the requested concurrency. Each colour is computed

@@ -64,6 +64,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -177,10 +178,13 @@ private:
     Vec3 m_luminance;
 };
 
-/// Replaces NaN by 0 and ±Inf by ±1e30 (the rule above).
-[[nodiscard]] inline double finite_or_default(double v) noexcept {
-    if (std::isnan(v)) return 0.0;
-    if (std::isinf(v)) return v > 0.0 ? 1e30 : -1e30;
+/// Replaces NaN by 0 and ±Inf by ±1e30 (the rule above), in double or in float (the batches'
+/// scalar form; the SIMD form is simd::FiniteOrDefault in src/gamut/simd_common-inl.h).
+/// T is never deduced: a float argument is taken as a double unless T = float is asked for.
+template <class T = double>
+[[nodiscard]] inline T finite_or_default(std::type_identity_t<T> v) noexcept {
+    if (std::isnan(v)) return T(0);
+    if (std::isinf(v)) return v > T(0) ? T(1e30) : T(-1e30);
     return v;
 }
 
@@ -232,6 +236,34 @@ template <class T>
     return out;
 }
 
+/// What aces-rgc precomputes from its parameters (aces_rgc.cpp), for the double method and its
+/// batch kernel. Channels in the order red, green, blue (the limits toward cyan, magenta,
+/// yellow).
+struct AcesRgcPrepared {
+    std::array<double, 3> threshold{};  ///< distance below which nothing moves
+    std::array<double, 3> scale{};      ///< s of the curve, so that the limit maps to 1
+    std::array<double, 3> asymptote{};  ///< threshold + scale: the inverse's domain ends there
+    double power = 1.0, inverse_power = 1.0;
+};
+/// What smits-soft precomputes (smits_soft.cpp).
+struct SmitsSoftPrepared {
+    double threshold = 0.0, limit = 0.0, power = 1.0, scale = 1.0, inverse_power = 1.0;
+};
+/// What oklab-adaptive and oklab-cusp precompute (oklab_projection.cpp) for their kernel.
+struct OklabProjectionPrepared {
+    /// [z]: S_max ≈ k0 + k1 a' + k2 b' over the hues whose rays from black first reach the face
+    /// where channel z (r, g, b) is 0: a least-squares fit to the exact S_max, the kernel's
+    /// starting guess.
+    std::array<std::array<double, 3>, 3> s_max_fit{};
+    /// The unit hue (a', b') of the red, green and blue primaries.
+    std::array<std::array<double, 2>, 3> primary_hue{};
+    /// Every hue from red to green (counter-clockwise) first reaches b = 0, from green to blue
+    /// r = 0, from blue to red g = 0, each of these sectors under 180°, and the cusp lies at
+    /// S_max, at 48 hues of each sector (false for ACES2065-1: its kernel runs the double
+    /// reference).
+    bool structured = false;
+};
+
 /// One clipping method on one gamut: built once (matrices, Oklab transforms), then clip() is
 /// noexcept and allocates nothing.
 class GamutClipper {
@@ -271,8 +303,13 @@ public:
     [[nodiscard]] const std::vector<std::pair<std::string, double>>& parameters() const noexcept {
         return m_parameters;
     }
-    /// What a method precomputes from its parameters, for its batch kernel (layout: prepare_*).
-    [[nodiscard]] const std::array<double, 16>& derived() const noexcept { return m_derived; }
+    /// What a method precomputes (its batch kernel reads it); only the clipper's own method's is
+    /// filled.
+    [[nodiscard]] const AcesRgcPrepared& aces_rgc_prepared() const noexcept { return m_aces_rgc; }
+    [[nodiscard]] const SmitsSoftPrepared& smits_soft_prepared() const noexcept { return m_smits_soft; }
+    [[nodiscard]] const OklabProjectionPrepared& oklab_projection_prepared() const noexcept {
+        return m_oklab_projection;
+    }
     [[nodiscard]] bool inverse() const noexcept { return m_inverse; }
     /// Whether outputs are confined to [0, max]³ (false only for aces-rgc without clip and for
     /// the inverse of smits-soft, which expands toward the limit).
@@ -331,7 +368,7 @@ private:
     [[nodiscard]] Rgb oklab_projection(const Rgb& c, bool around_cusp,
                                        Branches* branches = nullptr) const noexcept;
     /// Checks the values of m_parameters that depend on each other, throwing irid::Error naming
-    /// them, and fills m_derived with what the method precomputes from them; the per-method
+    /// them, and fills the method's prepared values (m_aces_rgc, ...); the per-method
     /// parts live beside each method (prepare_aces_rgc in aces_rgc.cpp, ...).
     void prepare();
     void prepare_aces_rgc();
@@ -351,8 +388,9 @@ private:
     std::vector<std::pair<std::string, double>> m_parameters;  // every parameter, resolved
     bool m_inverse = false;
     bool m_confined = true;
-    /// What a method precomputes from its parameters (its own layout, see prepare_*).
-    std::array<double, 16> m_derived{};
+    AcesRgcPrepared m_aces_rgc;
+    SmitsSoftPrepared m_smits_soft;
+    OklabProjectionPrepared m_oklab_projection;
 };
 
 /// Operation counts of the thesis' RGB clip on one colour (Table 1), from the same template run
