@@ -114,10 +114,14 @@ constexpr float grazing_gain = 16.0f;
 constexpr float diverging_ratio = 2.0f;
 /// css-raytrace: a lane whose anchor the float bounds (1e-6) keep where the double reference's
 /// (1e-12) would move it, or where float cannot tell (a restored point within 1e-6 max of a
-/// face), goes to the double path; so does a colour with a channel of its own between
+/// face), goes to the double path when that changes its passes by more than rounding: a dark
+/// colour (brightest channel below dark_channel × max), or a next restored point within
+/// wild_gap × max of the would-be anchor; so does a colour with a channel of its own between
 /// rounding_channel × max and the float bound (near 0 or near max; fuzz finding clip-9: on
 /// SMPTE-C at max 100, a channel of 4.8e-5 left the anchor in place in float and the result
 /// 3e-5 max away).
+constexpr float dark_channel = 1e-3f;
+constexpr float wild_gap = 1e-5f;
 constexpr float rounding_channel = 2e-7f;
 
 /// A double 3×3 matrix (row-major) as float pairs, m = hi + lo to about 2^-48 |m|.
@@ -565,7 +569,13 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
                           hn::And(hn::Ge(v, high), hn::Le(v, hn::Sub(p.max, rounding))));
         };
         bounds_path = hn::And(active, hn::Or(hn::Or(between(r), between(g)), between(b)));
+        const Vf dark = hn::Mul(hn::Set(d, dark_channel), p.max);
+        const Vf wild_gap_max = hn::Mul(hn::Set(d, wild_gap), p.max);
         Vf last_moved = zero;
+        // The previous pass's restored point and whether the double path may have moved the
+        // anchor to it (below).
+        Vf prev_r = zero, prev_g = zero, prev_b = zero;
+        Mf prev_maybe_moved = hn::Lt(zero, zero);
         for (int it = 0; it < 4; ++it) {
             if (it > 0) {
                 // Back onto the chroma line: the origin's L and h, the current chroma.
@@ -615,19 +625,31 @@ std::size_t ClipCssRayTrace(const GamutClipper& clipper, const float* in, float*
                     hn::And(hn::And(hn::Lt(low_d, c_r), hn::Lt(c_r, high_d)),
                             hn::And(hn::Lt(low_d, c_g), hn::Lt(c_g, high_d))),
                     hn::And(hn::Lt(low_d, c_b), hn::Lt(c_b, high_d)));
-                // Flagged where the two bounds disagree, and wherever a restored point has a channel within the float bound of a face
-                // (|c| <= 1e-6 max from 0 or max): float cannot tell whether the double bound
-                // (1e-12) moves the anchor there, and when it does the anchor may sit a rounding
-                // error from the next restored point, whose ray then goes anywhere (the
-                // definition's own jump: the continuity walk found sRGB (0.0048756, -0.029423,
-                // 1.1251) ending on g = 0 in double after an anchor 1e-10 from its target, and
-                // on r = 0 in float).
+                // Where the double bounds may move the anchor and these do not (the bounds
+                // disagree, or float cannot tell: a channel within the float bound of a face,
+                // |c| <= 1e-6 max from 0 or max), it matters for a dark colour (channels near
+                // 1e-6 max themselves), and when the next pass's restored point lies within
+                // wild_gap × max of this one: the double path's next ray then starts a rounding
+                // error from its end and may leave through any face (the definition's own jump:
+                // the continuity walk found sRGB (0.0048756, -0.029423, 1.1251) ending on g = 0
+                // in double after an anchor 1e-10 from its target, and on r = 0 in float). For a
+                // lighter colour with a longer next ray, the moved anchor changes the result by
+                // rounding only.
                 const auto unresolved = [&](Vf v) {
                     return hn::Or(hn::Le(hn::Abs(v), low), hn::Le(hn::Abs(hn::Sub(p.max, v)), low));
                 };
                 const Mf undecided = hn::Or(hn::Or(unresolved(c_r), unresolved(c_g)), unresolved(c_b));
-                bounds_path = hn::Or(bounds_path,
-                                     hn::And(active, hn::Or(hn::AndNot(below, below_double), undecided)));
+                const Mf maybe_moved = hn::And(active, hn::Or(hn::AndNot(below, below_double), undecided));
+                const Vf brightest = hn::Max(hn::Max(c_r, c_g), c_b);
+                bounds_path = hn::Or(bounds_path, hn::And(maybe_moved, hn::Lt(brightest, dark)));
+                if (it > 1) {
+                    const Vf gap = hn::Max(hn::Max(hn::Abs(hn::Sub(c_r, prev_r)), hn::Abs(hn::Sub(c_g, prev_g))),
+                                           hn::Abs(hn::Sub(c_b, prev_b)));
+                    bounds_path = hn::Or(bounds_path, hn::And(hn::And(active, prev_maybe_moved),
+                                                              hn::Lt(gap, wild_gap_max)));
+                }
+                prev_maybe_moved = maybe_moved;
+                prev_r = c_r, prev_g = c_g, prev_b = c_b;
                 a0 = hn::IfThenElse(move, c_r, a0);
                 a1 = hn::IfThenElse(move, c_g, a1);
                 a2 = hn::IfThenElse(move, c_b, a2);

@@ -125,14 +125,29 @@ double edge_cusp_l(const GamutClipper& clipper, double a, double b) {
 }
 
 /// Out-of-gamut colours: uniform in [-0.5, 1.5]³ max (the benchmark's range) and in [-3, 3]³ max.
+/// Out-of-gamut colours of six kinds in turn: uniform in [−0.5, 1.5]³ (twice), wide
+/// ([−3, 3]³), near the white (a level of 0.95 to 4 with tints of ±0.03: lightness around and
+/// above the white's), near black ([−0.004, 0.004]³: lightness around 0, negative too) and HDR
+/// ([−5, 100]³), all × max.
 std::vector<Rgb> out_of_gamut(const Gamut& g, int count, unsigned seed) {
     std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(-0.5, 1.5), w(-3.0, 3.0);
+    std::uniform_real_distribution<double> u(-0.5, 1.5), w(-3.0, 3.0), level(0.95, 4.0),
+        tint(-0.03, 0.03), dark(-0.004, 0.004), hdr(-5.0, 100.0);
     std::vector<Rgb> out;
     while (static_cast<int>(out.size()) < count) {
-        const bool wide = out.size() % 4 == 3;
-        const Rgb c{(wide ? w(rng) : u(rng)) * g.max(), (wide ? w(rng) : u(rng)) * g.max(),
-                    (wide ? w(rng) : u(rng)) * g.max()};
+        Rgb c{};
+        switch (out.size() % 6) {
+            case 2: c = {w(rng), w(rng), w(rng)}; break;
+            case 3: {
+                const double l = level(rng);
+                c = {l + tint(rng), l + tint(rng), l + tint(rng)};
+                break;
+            }
+            case 4: c = {dark(rng), dark(rng), dark(rng)}; break;
+            case 5: c = {hdr(rng), hdr(rng), hdr(rng)}; break;
+            default: c = {u(rng), u(rng), u(rng)}; break;
+        }
+        c = {c.r * g.max(), c.g * g.max(), c.b * g.max()};
         if (!g.contains(c)) out.push_back(c);
     }
     return out;
