@@ -28,9 +28,11 @@
 //    terms cancel, would move the exit by 1e-6 max / f'.)
 // 3. Hard lanes are recomputed by the double reference (GamutClipper::clip): a channel coming
 //    back without the condition above, an interior extremum within 1e-5 max of a bound, a grey
-//    not inside or within 1e-4 max of max (near the white's L; on Display P3 and Adobe RGB the
-//    neutral axis leaves the cube there), a colour within 2 × the rounding tolerance of the cube
-//    (clip.h's rule, tested first), L within 1e-5 of 0 or 1e-4 of the white's, a chroma over 16 times the white's L, an exit where the leaving
+//    not inside or within 1e-4 max of max (the segment starts at the cube's top, ill-conditioned
+//    in float), a colour within 2 × the rounding tolerance of the cube (clip.h's rule, tested
+//    first), L within 1e-5 of 0 or of the white's within 1e-4 (oklab) or 5e-3 (Ottosson's
+//    projections, whose L0 lies just below the white's there), a chroma over 16 times the
+//    white's L, an exit where the leaving
 //    channel's slope is under 1/1024 of the channels' total (nearly tangent), a non-finite t, and
 //    for oklab-cusp a cusp whose Halley iteration did not settle or that is not at S_max, and a
 //    hue within 2e-5 (of the white's L, as a distance in a, b) of a primary's, where the cusp
@@ -197,11 +199,17 @@ HWY_INLINE V AdaptiveL0(const Setup& s, V L, V C, V l_centre) {
     const M above = hn::Gt(ld, hn::Zero(d));
     const V k = hn::Mul(two, hn::IfThenElse(above, hn::Sub(one, lc), lc));
     const V ald = hn::Abs(ld);
-    const V e1 = hn::Add(hn::MulAdd(s.half, k, ald), hn::Div(hn::Mul(s.alpha, cr), k));
+    const V a = hn::MulAdd(s.half, k, ald);         // ½ k + |ΔL|
+    const V bc = hn::Div(hn::Mul(s.alpha, cr), k);  // α C / k
+    const V e1 = hn::Add(a, bc);
     // ½ (e1 − √(e1² − 2 k |ΔL|)) as ½ 2 k |ΔL| / (e1 + √(e1² − 2 k |ΔL|)): the same value
-    // without the cancellation of the difference when the chroma term makes e1 large.
+    // without the cancellation of the difference when the chroma term makes e1 large; and
+    // e1² − 2 k |ΔL| as (½ k − |ΔL|)² + b (2a + b), a sum of non-negative terms: near the
+    // white's lightness with little chroma it is a difference of two numbers near 1 whose
+    // float rounding moved L0 by 2e-5 × max (found by a review of issue 23).
     const V x = hn::Mul(hn::Mul(two, k), ald);
-    const V arg = hn::Max(hn::Zero(d), hn::Sub(hn::Mul(e1, e1), x));
+    const V gap = hn::Sub(hn::Mul(s.half, k), ald);
+    const V arg = hn::MulAdd(gap, gap, hn::Mul(bc, hn::MulAdd(two, a, bc)));
     const V sum = hn::Add(e1, hn::Sqrt(arg));
     const V step =
         hn::Mul(s.half, hn::Div(x, hn::IfThenElse(hn::Gt(sum, hn::Zero(d)), sum, one)));
@@ -456,7 +464,11 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
     const V lw_margin = hn::Mul(hn::Set(d, 1e-5f), s.white_l);
     // Within 1e-4 of the white (its L, or a grey channel of max) the exit is within a few 1e-2
     // of the grey and ill-conditioned in float.
-    const V white_margin = hn::Mul(hn::Set(d, 1e-4f), s.white_l);
+    // Ottosson's projections near the white's L: L0 lies just below it, the grey at the segment's
+    // start within a hair of the cube's top, and the exit ill-conditioned in float (2e-5 × max
+    // off at 1e-3 from the white's L with little chroma, found by a review of issue 23): within
+    // 5e-3 of it those lanes go to the double reference.
+    const V white_margin = hn::Mul(hn::Set(d, kind == Projection::constant_l ? 1e-4f : 5e-3f), s.white_l);
     const V max_margin = hn::Mul(hn::Set(d, 1e-4f), s.max);
     const V big_c = hn::Mul(hn::Set(d, 16.0f), s.white_l);
     const V max_plus_tol = hn::Add(s.max, s.tol2);
@@ -488,7 +500,7 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
                                       hn::Lt(hn::Abs(hn::Sub(L, s.white_l)), white_margin));
         M hard = hn::Or(within_tol, near_verdict);
         hard = hn::Or(hard, hn::Gt(C, big_c));
-        // A channel beyond 1e30 (what ±Inf becomes) is near float's range, where simd::Cbrt's
+        // A channel beyond 1e30 (what ±Inf becomes) is near float's range, where simd_math::Cbrt's
         // Halley step overflows (fuzz finding clip oklab-overflow-1: 2.55e38 on Display P3 at
         // max 4 came out black instead of white): the double reference takes those.
         // Their L is wrong, so even a black or white verdict is redone (below).
@@ -540,9 +552,10 @@ std::size_t ClipProjection(const GamutClipper& clipper, const float* in, float* 
             be = hn::Mul(hn::Set(d, 6.0f), be);
             ga = hn::Mul(hn::Set(d, 3.0f), ga);
             f0[ch] = v0;
-            // The grey must be inside, and not within 1e-4 max of max (near the white's L on
-            // Display P3 and Adobe RGB the neutral axis leaves the cube). Its channels are all
-            // about (L0 / L_white)³ max, so a positive one is positive, however dark.
+            // The grey must be inside, and not within 1e-4 max of max (a segment starting at the
+            // cube's top is ill-conditioned in float). Its channels are all (L0 / L_white)³ max
+            // (CSS Color 4's Oklab puts the white on the neutral axis), so a positive one is
+            // positive, however dark.
             hard = hn::Or(hard, hn::Not(hn::Gt(v0, zero)));
             hard = hn::Or(hard, hn::Not(hn::Lt(v0, hn::Sub(s.max, max_margin))));
             // Derivative roots (stable form), kept when finite and in (0, 1), else 0.

@@ -141,8 +141,11 @@ double oklab_adaptive_l0(double l, double c, double l_cusp, double l_white,
     // (0, l_cusp) below the cusp and (l_cusp, 1) above it, so a colour brighter than the white
     // moves toward a point inside the gamut, as Ottosson's code does (it has no white rule).
     const double k = 2.0 * (ld > 0.0 ? 1.0 - lc : lc);
-    const double e1 = 0.5 * k + std::abs(ld) + alpha * cr / k;
-    const double root = std::sqrt(std::max(0.0, e1 * e1 - 2.0 * k * std::abs(ld)));
+    const double a = 0.5 * k + std::abs(ld), b = alpha * cr / k;
+    const double e1 = a + b;
+    // e1² − 2 k |ΔL| = (½ k − |ΔL|)² + b (2a + b): no cancellation near the white's lightness.
+    const double gap = 0.5 * k - std::abs(ld);
+    const double root = std::sqrt(gap * gap + b * (2.0 * a + b));
     const double sign = ld > 0.0 ? 1.0 : (ld < 0.0 ? -1.0 : 0.0);
     // e1 − root, written without the cancellation of two large numbers (HDR and far colours).
     const double step = 2.0 * k * std::abs(ld) / (e1 + root);

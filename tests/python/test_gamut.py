@@ -223,3 +223,21 @@ def test_clip_image_equals_the_command_line(tmp_path, irid_cli):
         irid.clip_image(rgba, ["X", "Y", "Z", "A"], "smits", source="srgb")
     with pytest.raises(ValueError):
         irid.clip_image(rgba, ["A", "B", "C", "D"], "smits")
+
+
+@pytest.mark.parametrize("method", ["oklab-adaptive", "oklab-cusp", "oklab", "css-raytrace", "css"])
+@pytest.mark.parametrize("space,peak", [("srgb-linear", 1.0), ("display-p3-linear", 100.0),
+                                        ("rec2020-linear", 0.01)])
+def test_float32_kernels_within_contract_near_and_above_the_white(method, space, peak):
+    # Greys and near-greys from a hair above the white to six times it (Oklab L just above the
+    # white's, where Ottosson's L0 lies just below it): a review of issue 23 found oklab-adaptive's
+    # kernel 5.9e-5 × max off there before its L0 lost a cancellation and its lanes within 5e-3
+    # of the white's L went to the double path.
+    rng = np.random.default_rng(17)
+    n = 20000
+    level = 1.0 + 10.0 ** rng.uniform(-5.0, 0.7, (n, 1))
+    tint = rng.uniform(-1.0, 1.0, (n, 3)) * 10.0 ** rng.uniform(-6.0, -0.5, (n, 1))
+    rgb = ((level + tint) * peak).astype(np.float32)
+    fast = irid.clip(rgb, method, source=space, max=peak, threads=1)
+    exact = irid.clip(rgb.astype(np.float64), method, source=space, max=peak, threads=1)
+    assert np.max(np.abs(fast - exact)) <= 1e-5 * peak
