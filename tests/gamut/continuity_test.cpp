@@ -117,9 +117,33 @@ Rgb draw(Family f, std::mt19937_64& rng, double max) {
 /// (GamutClipper::branch_signature: css's binary search, css-raytrace's passes, the pieces of the
 /// Oklab methods' lines, the cusp's candidate, CIELUV's undefined chromaticity, luv-hue's local
 /// minima). Every other jump is a defect.
+/// oklab and oklab-adaptive: both outputs of a jump lie on the colour's own segment toward the
+/// neutral axis (its Oklab hue, and one line through the colour in the (L, C) plane), so that
+/// the jump is a choice between two pieces of that segment inside the cube, not a defect that
+/// happens to meet a change in the number of pieces. (Not for oklab-cusp, whose L0 moves with
+/// its cusp's candidate.)
+bool both_on_the_segment(const GamutClipper& clipper, const Rgb& a, const Rgb& out_a, const Rgb& out_b) {
+    const Oklab in = clipper.to_oklab(a), p = clipper.to_oklab(out_a), q = clipper.to_oklab(out_b);
+    const double scale = std::cbrt(clipper.gamut().max());
+    const double tol = 1e-6 * scale;
+    const double hue = std::atan2(in.b, in.a);
+    const auto chroma = [](const Oklab& c) { return std::hypot(c.a, c.b); };
+    for (const Oklab& o : {p, q}) {
+        if (chroma(o) > tol && std::abs(std::remainder(std::atan2(o.b, o.a) - hue, 2.0 * M_PI)) > 1e-5) {
+            return false;
+        }
+    }
+    // (L, C) of the two outputs relative to the colour's: parallel (collinear with it).
+    const double l1 = p.L - in.L, c1 = chroma(p) - chroma(in), l2 = q.L - in.L, c2 = chroma(q) - chroma(in);
+    return std::abs(l1 * c2 - l2 * c1) <= tol * (std::hypot(l1, c1) + std::hypot(l2, c2) + tol);
+}
+
 bool allowed_jump(const GamutClipper& clipper, const Rgb& a, const Rgb& b, const Rgb& out_a,
                   const Rgb& out_b) {
     if (clipper.branch_signature(a) == clipper.branch_signature(b)) return false;
+    if (clipper.method() == ClipMethod::oklab || clipper.method() == ClipMethod::oklab_adaptive) {
+        return both_on_the_segment(clipper, a, out_a, out_b);
+    }
     if (clipper.method() != ClipMethod::luv_hue) return true;
     // luv-hue's branches are stricter to check than a changed signature: either CIELUV's
     // chromaticity is undefined on one side (X + 15Y + 3Z <= 0), or the two outputs are both

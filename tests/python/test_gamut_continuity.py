@@ -57,6 +57,18 @@ def allowed(method, space, peak, a, b, out_a, out_b):
     sig = irid.clip_branches(np.array([a, b]), method, source=space, max=peak, **params)
     if sig[0] == sig[1]:
         return False
+    if method in ("oklab", "oklab-adaptive"):
+        # Both outputs on the colour's own segment toward the neutral axis: its Oklab hue, and
+        # one line through it in the (L, C) plane (a choice between two pieces of it).
+        lab = irid.convert(np.array([a, out_a, out_b]) / peak, space, "oklab")
+        c = np.hypot(lab[:, 1], lab[:, 2])
+        h = np.arctan2(lab[:, 2], lab[:, 1])
+        tol = 1e-6
+        dh = np.abs((h[1:] - h[0] + np.pi) % (2 * np.pi) - np.pi)
+        if np.any((c[1:] > tol) & (dh > 1e-5)):
+            return False
+        l1, c1, l2, c2 = lab[1, 0] - lab[0, 0], c[1] - c[0], lab[2, 0] - lab[0, 0], c[2] - c[0]
+        return bool(abs(l1 * c2 - l2 * c1) <= tol * (np.hypot(l1, c1) + np.hypot(l2, c2) + tol))
     if method != "luv-hue":
         return True
     xyz = irid.convert(np.array([a, b]) / peak, space, "xyz")
