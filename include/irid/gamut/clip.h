@@ -50,8 +50,8 @@
 //   within oklab_rounding_tolerance × max of the cube (every channel in [−tol, max + tol]) is
 //   taken as on it and clamped (moved by at most that much); css-raytrace, oklab-adaptive and
 //   oklab-cusp apply the same rule (their rays and segments meet the same trouble). The soft
-//   methods are
-//   continuous and move such a colour by a bounded amount like any other near the boundary.
+//   methods are continuous and move such a colour by a bounded amount like any other near the
+//   boundary.
 // - The destination's maximum may differ from 1 (an HDR peak): the cube is [0, max]³.
 
 #include <irid/color/matrix.h>
@@ -285,8 +285,9 @@ public:
     /// (GAMUT.md, "Where a method may jump"; tests/gamut/continuity_test.cpp). The branches
     /// recorded: css, the lightness rule and each step of its binary search; css-raytrace, the
     /// lightness rule and each pass (a ray found, the anchor moved, the face reached); oklab,
-    /// oklab-adaptive and oklab-cusp, the lightness rule, the pieces of the colour's line inside
-    /// the cube and the one that holds the result (and oklab-cusp's cusp candidate); luv-hue,
+    /// oklab-adaptive and oklab-cusp, the lightness or rounding rule and the number of pieces of
+    /// the colour's segment inside the cube (the result ends the last; oklab-cusp also records
+    /// the kind of its cusp candidate); luv-hue,
     /// a colour without chromaticity (X + 15Y + 3Z <= 0) and the local minimum of its search.
     /// 0 for an in-gamut colour and for the methods without such branches.
     [[nodiscard]] std::uint64_t branch_signature(const Rgb& linear) const noexcept;
