@@ -545,7 +545,9 @@ def _file_space(metadata):
                            None if chroma is None else _floats(chroma, "source: 'chromaticities'"),
                            _flag(integer, "source: 'integer'"),
                            _flag(metadata.get("icc_profile_rejected", False),
-                                 "source: 'icc_profile_rejected'"))
+                                 "source: 'icc_profile_rejected'"),
+                           _text(metadata.get("icc_profile_damage") or "",
+                                 "source: 'icc_profile_damage'"))
 
 
 def _floats(values, what):
@@ -601,10 +603,10 @@ def read_image(path):
     "channels" (names), "color_space" (irid's or OpenImageIO's name, may be empty),
     "description", "bits" (per sample as stored), "integer" (stored as integers),
     "icc_profile" (the embedded ICC profile's bytes, or None; "icc_profile_rejected" is True when
-    the file had one its decoder refused), "chromaticities" (an EXR's 8 values, or None) and
+    the file had one that is damaged, and "icc_profile_damage" says how, else None), "chromaticities" (an EXR's 8 values, or None) and
     "adopted_neutral" (an EXR's x, y, or None). :func:`image_space` says what space they name.
-    Raises OSError for a file that cannot be read (missing, not an image, corrupt, larger than
-    64 Mpixel).
+    Raises OSError for a file that cannot be read whole (missing, not an image, truncated or
+    corrupt pixel data, a header declaring more than the file holds, larger than 64 Mpixel).
     """
     return _irid.read_image(_path(path))
 

@@ -148,7 +148,7 @@ void add_gamut(py::module_& m) {
     // that the pipelines built on it can point at its RgbSpace.
     py::class_<ImageSpace, std::shared_ptr<ImageSpace>>(m, "FileSpace")
         .def(py::init([](const std::optional<py::bytes>& icc, const std::optional<std::vector<float>>& chromaticities,
-                         bool integer, bool rejected) {
+                         bool integer, bool rejected, const std::string& damage) {
                  io::Image image;
                  if (icc) {
                      const std::string bytes = *icc;
@@ -157,9 +157,10 @@ void add_gamut(py::module_& m) {
                  if (chromaticities) image.chromaticities = *chromaticities;
                  image.stored_integer = integer;
                  image.icc_profile_rejected = rejected;
+                 image.icc_profile_damage = damage;
                  return std::make_shared<ImageSpace>(image_space(image, "image"));
              }),
-             py::arg("icc_profile"), py::arg("chromaticities"), py::arg("integer"), py::arg("rejected"))
+             py::arg("icc_profile"), py::arg("chromaticities"), py::arg("integer"), py::arg("rejected"), py::arg("damage"))
         .def_property_readonly("space", [](const ImageSpace& f) {
             if (f.builtin == nullptr) return py::object(py::none());
             return py::object(py::str(color_space_name(ColorSpace{f.colour_space().family, f.builtin})));

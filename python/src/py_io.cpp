@@ -59,6 +59,8 @@ void add_io(py::module_& m) {
                                       : py::object(py::bytes(reinterpret_cast<const char*>(image.icc_profile.data()),
                                                              image.icc_profile.size()));
             meta["icc_profile_rejected"] = image.icc_profile_rejected;
+            meta["icc_profile_damage"] = image.icc_profile_damage.empty() ? py::object(py::none())
+                                                                          : py::object(py::str(image.icc_profile_damage));
             meta["chromaticities"] = image.chromaticities.empty() ? py::object(py::none())
                                                                   : py::object(py::tuple(py::cast(image.chromaticities)));
             meta["adopted_neutral"] = image.adopted_neutral.empty() ? py::object(py::none())

@@ -507,9 +507,9 @@ const RgbSpace* matching_builtin_space(const RgbSpace& space, double tolerance, 
 ImageSpace image_space(const io::Image& image, const std::string& what) {
     ImageSpace s;
     if (image.icc_profile_rejected) {
-        throw Error(what + ": ICC profile: the file's decoder rejected it (libpng drops, with only a "
-                           "warning, a profile that is damaged or does not suit the image: CMYK, Lab "
-                           "or named colours in an RGB PNG)");
+        throw Error(what + ": ICC profile: damaged: " +
+                    (image.icc_profile_damage.empty() ? std::string("the file's decoder rejected it")
+                                                      : image.icc_profile_damage));
     }
     if (!image.icc_profile.empty()) {
         auto profile = std::make_shared<const IccProfile>(IccProfile::parse(image.icc_profile, what));

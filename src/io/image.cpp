@@ -129,7 +129,18 @@ Image read_image(const fs::path& path, const ImageLimits& limits) {
     Image image;
     std::string error;
     if (!backend().read(path.c_str(), &limits, &image, &error)) throw Error(error);
-    image.icc_profile_rejected = facts.png_icc_chunk && image.icc_profile.empty();
+    if (!facts.icc_damage.empty()) {
+        // OpenImageIO 2.4 drops a profile whose container is damaged, or passes on a part of it.
+        image.icc_profile.clear();
+        image.icc_profile_rejected = true;
+        image.icc_profile_damage = facts.icc_damage;
+    } else if (!facts.jpeg_icc_profile.empty()) {
+        image.icc_profile = facts.jpeg_icc_profile;
+    } else if (facts.png_icc_chunk && image.icc_profile.empty()) {
+        image.icc_profile_rejected = true;
+        image.icc_profile_damage = "libpng rejected it (it drops, with only a warning, a profile that is damaged "
+                                   "or does not suit the image: CMYK, Lab or named colours in an RGB PNG)";
+    }
     return image;
 }
 

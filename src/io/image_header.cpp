@@ -3,6 +3,7 @@
 // a chunk's length, an attribute's size, the line-offset table of the data window. A file of a
 // few hundred bytes can so ask for gigabytes. These checks need only the file's bytes.
 #include "image_header.h"
+#include "header_reader.h"
 
 #include <irid/error.h>
 
@@ -23,53 +24,18 @@
 #include <unistd.h>
 
 namespace irid::io {
-namespace {
+namespace header {
 
-/// deflate (RFC 1951) expands its input at most about 1032-fold: a 258-byte match costs at
-/// least 2 bits (zlib's FAQ, "What's the maximum compression ratio?": 1032:1).
-constexpr double deflate_max_expansion = 1032.0;
-
-/// Reads a file front to back through a buffer, and skips ahead without reading.
-class Reader {
-public:
-    Reader(int fd, std::uint64_t size) : m_fd(fd), m_size(size) {}
-    [[nodiscard]] std::uint64_t size() const noexcept { return m_size; }
-    /// `n` bytes at `offset` (n <= buffer size), or false when the file ends first.
-    bool read(std::uint64_t offset, void* out, std::size_t n) {
-        if (offset + n > m_size) return false;
-        if (offset < m_start || offset + n > m_start + m_valid) {
-            m_start = offset;
-            m_valid = 0;
-            while (m_valid < m_buffer.size() && m_start + m_valid < m_size) {
-                const ssize_t got = ::pread(m_fd, m_buffer.data() + m_valid,
-                                            m_buffer.size() - m_valid,
-                                            static_cast<off_t>(m_start + m_valid));
-                if (got < 0 && errno == EINTR) continue;
-                if (got <= 0) break;
-                m_valid += static_cast<std::size_t>(got);
-            }
-            if (offset + n > m_start + m_valid) return false;
-        }
-        std::memcpy(out, m_buffer.data() + (offset - m_start), n);
-        return true;
+std::vector<unsigned char> read_bytes(Reader& file, std::uint64_t offset, std::uint64_t n) {
+    std::vector<unsigned char> out;
+    if (offset > file.size() || n > file.size() - offset) return out;
+    out.resize(n);
+    for (std::uint64_t done = 0; done < n;) {
+        const std::size_t piece = static_cast<std::size_t>(std::min<std::uint64_t>(n - done, 1 << 15));
+        if (!file.read(offset + done, out.data() + done, piece)) return {};
+        done += piece;
     }
-
-private:
-    int m_fd;
-    std::uint64_t m_size;
-    std::uint64_t m_start = 0;
-    std::size_t m_valid = 0;
-    std::array<unsigned char, 1 << 16> m_buffer{};
-};
-
-std::uint32_t big_endian32(const unsigned char* p) noexcept {
-    return static_cast<std::uint32_t>(p[0]) << 24 | static_cast<std::uint32_t>(p[1]) << 16 |
-           static_cast<std::uint32_t>(p[2]) << 8 | static_cast<std::uint32_t>(p[3]);
-}
-
-std::uint32_t little_endian32(const unsigned char* p) noexcept {
-    return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
-           static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+    return out;
 }
 
 std::string printable(const unsigned char* p, std::size_t n) {
@@ -78,7 +44,7 @@ std::string printable(const unsigned char* p, std::size_t n) {
     return s;
 }
 
-[[noreturn]] void corrupt(const std::string& shown, const std::string& what) {
+void corrupt(const std::string& shown, const std::string& what) {
     throw Error(shown + ": truncated or corrupt: " + what);
 }
 
@@ -135,73 +101,14 @@ void check_icc(const std::string& shown, const std::vector<unsigned char>& p) {
     }
 }
 
-/// `n` bytes at `offset`, in pieces the reader's buffer holds; empty when the file ends first.
-std::vector<unsigned char> read_bytes(Reader& file, std::uint64_t offset, std::uint64_t n) {
-    std::vector<unsigned char> out;
-    if (offset + n > file.size()) return out;
-    out.resize(n);
-    for (std::uint64_t done = 0; done < n;) {
-        const std::size_t piece = static_cast<std::size_t>(std::min<std::uint64_t>(n - done, 1 << 15));
-        if (!file.read(offset + done, out.data() + done, piece)) return {};
-        done += piece;
-    }
-    return out;
-}
+}  // namespace header
 
-/// TIFF (TIFF 6.0 §2, classic TIFF): the ICC profile of the first directory, tag 34675.
-void check_tiff_icc(const std::string& shown, Reader& file) {
-    unsigned char head[8];
-    if (!file.read(0, head, sizeof head)) return;
-    const bool little = head[0] == 'I';
-    const auto u16 = [little](const unsigned char* q) {
-        return little ? static_cast<std::uint32_t>(q[0] | q[1] << 8) : static_cast<std::uint32_t>(q[0] << 8 | q[1]);
-    };
-    const auto u32 = [little](const unsigned char* q) { return little ? little_endian32(q) : big_endian32(q); };
-    const std::uint64_t ifd = u32(head + 4);
-    unsigned char count_bytes[2];
-    if (!file.read(ifd, count_bytes, 2)) return;
-    const std::uint32_t entries = u16(count_bytes);
-    for (std::uint32_t i = 0; i < entries; ++i) {
-        unsigned char e[12];
-        if (!file.read(ifd + 2 + 12 * std::uint64_t{i}, e, sizeof e)) return;
-        if (u16(e) != 34675) continue;
-        const std::uint64_t n = u32(e + 4);
-        if (n > (std::uint64_t{64} << 20)) return;  // libtiff refuses such a tag itself
-        const std::vector<unsigned char> profile =
-            n <= 4 ? std::vector<unsigned char>(e + 8, e + 8 + n) : read_bytes(file, u32(e + 8), n);
-        if (profile.size() == n) check_icc(shown, profile);
-        return;
-    }
-}
+namespace {
+using namespace header;
 
-/// JPEG (ICC.1:2022 Annex B.4): the profile in APP2 "ICC_PROFILE" segments, joined in their order.
-void check_jpeg_icc(const std::string& shown, Reader& file) {
-    std::vector<std::pair<int, std::vector<unsigned char>>> chunks;
-    std::uint64_t pos = 2;
-    unsigned char m[4];
-    while (file.read(pos, m, 4) && m[0] == 0xFF) {
-        const unsigned marker = m[1];
-        if (marker == 0xDA || marker == 0xD9) break;  // the scan, or the end
-        if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0xFF) {
-            pos += marker == 0xFF ? 1 : 2;
-            continue;
-        }
-        const std::uint64_t length = static_cast<std::uint64_t>(m[2]) << 8 | m[3];
-        if (length < 2) return;
-        if (marker == 0xE2 && length >= 16) {
-            std::vector<unsigned char> data = read_bytes(file, pos + 4, length - 2);
-            if (data.size() >= 14 && std::memcmp(data.data(), "ICC_PROFILE\0", 12) == 0) {
-                chunks.emplace_back(data[12], std::vector<unsigned char>(data.begin() + 14, data.end()));
-            }
-        }
-        pos += 2 + length;
-    }
-    if (chunks.empty()) return;
-    std::stable_sort(chunks.begin(), chunks.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<unsigned char> profile;
-    for (const auto& c : chunks) profile.insert(profile.end(), c.second.begin(), c.second.end());
-    check_icc(shown, profile);
-}
+/// deflate (RFC 1951) expands its input at most about 1032-fold: a 258-byte match costs at
+/// least 2 bits (zlib's FAQ, "What's the maximum compression ratio?": 1032:1).
+constexpr double deflate_max_expansion = 1032.0;
 
 /// PNG's iCCP chunk (ISO/IEC 15948 §11.3.3.3): a name, a NUL, the compression method (0) and the
 /// zlib-compressed profile, which is inflated (up to 64 MiB) and checked as TIFF's and JPEG's
@@ -393,8 +300,10 @@ HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLim
     if (!file.read(0, magic, sizeof magic)) return facts;
     if (std::memcmp(magic, "\x89PNG\r\n\x1a\n", 8) == 0) check_png(shown, file, limits, facts);
     if (std::memcmp(magic, "\x76\x2f\x31\x01", 4) == 0) check_exr(shown, file, limits);
-    if (std::memcmp(magic, "II*\0", 4) == 0 || std::memcmp(magic, "MM\0*", 4) == 0) check_tiff_icc(shown, file);
-    if (std::memcmp(magic, "\xff\xd8\xff", 3) == 0) check_jpeg_icc(shown, file);
+    if (std::memcmp(magic, "II*\0", 4) == 0 || std::memcmp(magic, "MM\0*", 4) == 0) {
+        check_tiff(shown, file, limits, facts);
+    }
+    if (std::memcmp(magic, "\xff\xd8\xff", 3) == 0) check_jpeg(shown, file, limits, facts);
     return facts;
 }
 

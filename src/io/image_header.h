@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace irid::io {
 
@@ -15,14 +16,22 @@ namespace irid::io {
 struct HeaderFacts {
     /// A PNG with an iCCP chunk (libpng drops a profile it finds invalid, with only a warning).
     bool png_icc_chunk = false;
+    /// Why the file's embedded ICC profile is damaged in its container (JPEG APP2 segments not
+    /// numbered 1..N, a TIFF profile tag past the file); empty when it is whole or absent.
+    std::string icc_damage;
+    /// A JPEG's profile joined from its APP2 segments by their sequence numbers (ICC.1 Annex
+    /// B.4), which is what the file holds whatever order OpenImageIO joins them in.
+    std::vector<unsigned char> jpeg_icc_profile;
 };
 
-/// For PNG and OpenEXR files: throws irid::Error naming the file when a chunk or a header
-/// attribute declares more bytes than the file holds, when a PNG's compressed data cannot hold
-/// the pixels its header declares, or when the declared size (PNG IHDR, EXR dataWindow) is
-/// beyond `limits`, and, for TIFF and JPEG, when an embedded ICC profile's tag table runs past
-/// the profile (OpenImageIO 2.4 reads it unchecked). Other formats, and files it cannot open,
-/// pass (the decoder reports them).
+/// For PNG, OpenEXR, TIFF and JPEG files: throws irid::Error naming the file when the declared
+/// size (PNG IHDR, EXR dataWindow, TIFF's first directory, JPEG's frame header) is beyond
+/// `limits`, when a chunk, a header attribute, a TIFF strip or tile declares more bytes than the
+/// file holds, when the compressed data cannot hold the pixels declared (PNG, TIFF, Huffman-coded
+/// JPEG), or when an embedded ICC profile's tag table runs past the profile (OpenImageIO 2.4
+/// reads it unchecked). Damage of a profile's container (JPEG's APP2 numbering, a TIFF tag past
+/// the file) is returned in HeaderFacts::icc_damage instead, for the caller to refuse or
+/// override. Other formats, and files it cannot open, pass (the decoder reports them).
 HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLimits& limits);
 
 /// Throws irid::Error "<file>: the image declares W x H pixels (N Mpixel); irid reads at most

@@ -46,6 +46,15 @@ std::string message_or(std::string message, const char* fallback) {
     return message.empty() ? std::string(fallback) : message;
 }
 
+/// The first line of a message, with how many more there were (libtiff repeats its complaint for
+/// every strip that follows a short one).
+std::string first_line(const std::string& message) {
+    const std::size_t end = message.find('\n');
+    if (end == std::string::npos) return message;
+    const auto more = static_cast<std::size_t>(std::count(message.begin() + static_cast<std::ptrdiff_t>(end), message.end(), '\n'));
+    return message.substr(0, end) + " (and " + std::to_string(more) + " more like it)";
+}
+
 /// Encoded [0, 1] samples → integers with rounding (NaN → 0, clamped).
 template <class T>
 std::vector<T> quantise(const std::vector<float>& samples) {
@@ -120,6 +129,7 @@ Image oiio_read(const fs::path& path, const ImageLimits& limits) {
     // some TIFFs), so that colour and alpha pass through unchanged.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
+    (void)OIIO::geterror();  // nothing left over from an earlier file is blamed on this one
     auto in = OIIO::ImageInput::open(shown, &config);
     if (!in) {
         throw Error(shown + ": cannot read the image: " +
@@ -186,12 +196,23 @@ Image oiio_read(const fs::path& path, const ImageLimits& limits) {
                                  OIIO::TypeFloat, out)
                 : in->read_scanlines(0, 0, spec.y + row, spec.y + row + rows, spec.z, 0,
                                      spec.nchannels, OIIO::TypeFloat, out);
-        if (!ok) {
-            throw Error(shown + ": cannot read the pixels: " +
-                        message_or(in->geterror(), "the file is damaged or truncated"));
+        // OpenImageIO 2.4 reports a decoder's complaint (libjpeg's "Premature end of JPEG file",
+        // libtiff's short strip) through geterror() while the read itself returns true and
+        // has_error() false, and fills what is missing with grey or black.
+        std::string complaint = in->geterror();
+        if (!ok || !complaint.empty()) {
+            throw Error(shown + ": cannot read the pixels (damaged or truncated): " +
+                        first_line(message_or(std::move(complaint), "OpenImageIO gave no reason")));
         }
     }
-    in->close();
+    const bool closed = in->close();
+    if (std::string complaint = in->geterror(); !closed || !complaint.empty()) {
+        throw Error(shown + ": cannot read the pixels (damaged or truncated): " +
+                    first_line(message_or(std::move(complaint), "closing the file failed")));
+    }
+    if (std::string complaint = OIIO::geterror(); !complaint.empty()) {
+        throw Error(shown + ": cannot read the image: " + first_line(message_or(std::move(complaint), "")));
+    }
     return image;
 }
 

@@ -561,6 +561,6 @@ def test_png_profile_that_libpng_drops_is_not_ignored(irid_cli, tmp_path):
     save_tagged(tmp_path / "bad.png", patches(), patched(16, b"CMYK"))
     r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "bad.png",
             tmp_path / "out.png", status=1)
-    assert "bad.png: ICC profile: the file's decoder rejected it" in r.stderr
+    assert "bad.png: ICC profile: damaged: libpng rejected it" in r.stderr
     _, meta = irid.read_image(tmp_path / "bad.png")
     assert meta["icc_profile_rejected"]

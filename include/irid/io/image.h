@@ -46,9 +46,12 @@ struct Image {
     /// TIFF files (EXR has no place for one). irid_io does not look inside: irid/exchange/icc.h
     /// reads and builds profiles.
     std::vector<unsigned char> icc_profile;
-    /// The file has an ICC profile that its decoder rejected and did not pass on (libpng drops an
-    /// iCCP chunk whose profile it finds invalid, with only a warning). Set by read_image.
+    /// The file has an ICC profile that is damaged in its container or that its decoder rejected
+    /// (libpng drops an iCCP chunk whose profile it finds invalid, with only a warning; JPEG APP2
+    /// segments not numbered 1..N; a TIFF profile tag past the file). icc_profile is then empty,
+    /// and icc_profile_damage says what is wrong. Set by read_image.
     bool icc_profile_rejected = false;
+    std::string icc_profile_damage;
     /// OpenEXR's "chromaticities" (red x, y, green x, y, blue x, y, white x, y), 8 values, or
     /// empty when the file has none. write_image writes it to EXR files only.
     std::vector<float> chromaticities;

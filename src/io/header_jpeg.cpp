@@ -1,0 +1,152 @@
+// A JPEG's markers read before libjpeg sees the file (header_reader.h).
+//
+// libjpeg allocates what the frame header declares when decoding starts (a progressive file's
+// whole coefficient buffer at once), and fills with grey whatever a file cut short lacks. With
+// Huffman coding every 8 × 8 block of every component costs at least one bit in the first scan
+// that holds it (a DC difference's code is at least one bit long, and progressive end-of-band
+// runs cover AC coefficients only), so the coded data bound the blocks a file can hold.
+#include "header_reader.h"
+
+#include <irid/error.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace irid::io::header {
+namespace {
+
+struct Frame {
+    unsigned marker = 0;
+    std::uint64_t width = 0, height = 0;
+    /// Horizontal and vertical sampling factors, one pair per component.
+    std::vector<std::pair<unsigned, unsigned>> sampling;
+};
+
+bool is_frame_marker(unsigned m) noexcept {
+    // SOF0–SOF15 (T.81 Table B.1) except DHT (C4), JPG (C8) and DAC (CC).
+    return m >= 0xC0 && m <= 0xCF && m != 0xC4 && m != 0xC8 && m != 0xCC;
+}
+
+bool is_arithmetic(unsigned m) noexcept { return m >= 0xC9; }
+bool is_lossless(unsigned m) noexcept { return m == 0xC3 || m == 0xC7 || m == 0xCB || m == 0xCF; }
+
+/// The least number of coded bits a Huffman-coded frame needs: one per block of a DCT frame
+/// (T.81 A.2.4: a component's blocks cover its sampled size rounded up to 8), one per sample of
+/// a lossless one.
+std::uint64_t least_coded_bits(const Frame& f) {
+    unsigned h_max = 1, v_max = 1;
+    for (const auto& [h, v] : f.sampling) {
+        h_max = std::max(h_max, h);
+        v_max = std::max(v_max, v);
+    }
+    std::uint64_t units = 0;
+    for (const auto& [h, v] : f.sampling) {
+        const std::uint64_t w = (f.width * h + h_max - 1) / h_max;
+        const std::uint64_t rows = (f.height * v + v_max - 1) / v_max;
+        units += is_lossless(f.marker) ? w * rows : ((w + 7) / 8) * ((rows + 7) / 8);
+    }
+    return units;
+}
+
+std::string sequence_text(const std::vector<std::pair<unsigned, unsigned>>& chunks) {
+    std::string s;
+    for (const auto& [sequence, count] : chunks) {
+        if (!s.empty()) s += ", ";
+        s += std::to_string(sequence) + " of " + std::to_string(count);
+    }
+    return s;
+}
+
+}  // namespace
+
+void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts) {
+    Frame frame;
+    std::uint64_t first_scan = 0;
+    // APP2 "ICC_PROFILE\0" chunks: (sequence number, count) and the data, in file order.
+    std::vector<std::pair<unsigned, unsigned>> chunk_numbers;
+    std::vector<std::vector<unsigned char>> chunk_data;
+    std::uint64_t pos = 2;
+    unsigned char m[4];
+    while (first_scan == 0 && file.read(pos, m, 2) && m[0] == 0xFF) {
+        const unsigned marker = m[1];
+        if (marker == 0xFF) {  // a fill byte
+            ++pos;
+            continue;
+        }
+        if (marker == 0xD9) break;  // the end of the image, before any scan
+        if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD8)) {
+            pos += 2;
+            continue;
+        }
+        if (!file.read(pos, m, 4)) break;
+        const std::uint64_t length = static_cast<std::uint64_t>(m[2]) << 8 | m[3];
+        if (length < 2) break;  // libjpeg names it
+        if (is_frame_marker(marker) && frame.marker == 0 && length >= 8) {
+            const std::vector<unsigned char> sof = read_bytes(file, pos + 4, length - 2);
+            if (sof.size() >= 6) {
+                frame.marker = marker;
+                frame.height = static_cast<std::uint64_t>(sof[1]) << 8 | sof[2];
+                frame.width = static_cast<std::uint64_t>(sof[3]) << 8 | sof[4];
+                const std::size_t components = sof[5];
+                for (std::size_t c = 0; c < components && 6 + 3 * c + 2 < sof.size(); ++c) {
+                    const unsigned factors = sof[6 + 3 * c + 1];
+                    frame.sampling.emplace_back(std::max(1u, factors >> 4), std::max(1u, factors & 15u));
+                }
+            }
+        } else if (marker == 0xE2 && length >= 16) {
+            std::vector<unsigned char> data = read_bytes(file, pos + 4, length - 2);
+            if (data.size() >= 14 && std::memcmp(data.data(), "ICC_PROFILE\0", 12) == 0) {
+                chunk_numbers.emplace_back(data[12], data[13]);
+                chunk_data.emplace_back(data.begin() + 14, data.end());
+            }
+        } else if (marker == 0xDA) {
+            first_scan = pos + 2 + length;
+        }
+        pos += 2 + length;
+    }
+
+    if (frame.marker != 0 && frame.width > 0 && frame.height > 0) {
+        check_declared_pixels(shown, frame.width, frame.height, limits);
+        // Arithmetic coding can spend less than a bit on a block: such a file is bounded by the
+        // limits alone.
+        if (!is_arithmetic(frame.marker) && first_scan > 0 && !frame.sampling.empty()) {
+            const std::uint64_t bits = least_coded_bits(frame);
+            const std::uint64_t coded = first_scan <= file.size() ? file.size() - first_scan : 0;
+            if (bits > 8 * coded) {
+                corrupt(shown, declared_size_text(frame.width, frame.height) + " need at least " +
+                                   std::to_string((bits + 7) / 8) + " bytes of coded data (a bit per " +
+                                   (is_lossless(frame.marker) ? "sample" : "8 x 8 block") +
+                                   "), and the file holds " + std::to_string(coded) +
+                                   " after its first scan header");
+            }
+        }
+    }
+
+    if (chunk_numbers.empty()) return;
+    // ICC.1:2022 Annex B.4: chunks numbered 1 to N, each once, all with the same N.
+    const unsigned count = chunk_numbers.front().second;
+    std::map<unsigned, std::size_t> by_sequence;
+    bool whole = count >= 1 && chunk_numbers.size() == count;
+    for (std::size_t i = 0; whole && i < chunk_numbers.size(); ++i) {
+        const auto [sequence, n] = chunk_numbers[i];
+        whole = n == count && sequence >= 1 && sequence <= count && by_sequence.emplace(sequence, i).second;
+    }
+    if (!whole) {
+        facts.icc_damage = "its " + std::to_string(chunk_numbers.size()) +
+                           " APP2 ICC_PROFILE segments are numbered " + sequence_text(chunk_numbers) +
+                           "; ICC.1 Annex B.4 numbers N segments 1 to N, each once, with the same N";
+        return;
+    }
+    std::vector<unsigned char> profile;
+    for (const auto& [sequence, i] : by_sequence) {
+        profile.insert(profile.end(), chunk_data[i].begin(), chunk_data[i].end());
+    }
+    check_icc(shown, profile);
+    facts.jpeg_icc_profile = std::move(profile);
+}
+
+}  // namespace irid::io::header

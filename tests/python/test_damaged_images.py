@@ -1,0 +1,286 @@
+"""Every image is read whole or refused, and costs what it holds (docs/RELIABILITY.md).
+
+- A file cut short, in every format irid reads (PNG, JPEG baseline and progressive, TIFF
+  uncompressed, LZW and deflate, OpenEXR), is exit 1 from ``irid clip`` with the path and the
+  reason, and OSError from ``irid.read_image``: never grey or black rows.
+- A file of a few hundred bytes whose header declares a huge image is refused before decoding,
+  in memory bounded by the program itself (OpenImageIO loaded), not by the declared size.
+- A damaged embedded ICC profile (JPEG APP2 segments not numbered 1..N as ICC.1 Annex B.4
+  says; a TIFF profile tag past the file) is refused as PNG's is, and ``--from`` overrides it
+  with a note. Segments in another order than their numbers are joined by their numbers.
+"""
+
+import io
+import os
+import pathlib
+import resource
+import struct
+import subprocess
+
+import numpy as np
+import pytest
+
+import irid
+
+COLORD = pathlib.Path("/usr/share/color/icc/colord")   # colord-data (scripts/install-deps)
+
+
+def random_rgb(h=96, w=80, seed=3):
+    return (np.random.default_rng(seed).random((h, w, 3)) * 255).astype(np.uint8)
+
+
+def pil_bytes(pixels, fmt, **kw):
+    from PIL import Image
+    buf = io.BytesIO()
+    Image.fromarray(pixels).save(buf, fmt, **kw)
+    return buf.getvalue()
+
+
+def run_limited(cli, *args, data_mb=None):
+    """(exit status, stderr) of one irid run, its data segment (heap and private mappings)
+    limited to `data_mb` megabytes when given."""
+    def limit():
+        size = data_mb << 20
+        resource.setrlimit(resource.RLIMIT_DATA, (size, size))
+    r = subprocess.run([cli, *map(str, args)], capture_output=True, text=True,
+                       preexec_fn=limit if data_mb else None)
+    return r.returncode, r.stderr
+
+
+def whole_files():
+    px = random_rgb()
+    files = {
+        "png": pil_bytes(px, "PNG"),
+        "jpg": pil_bytes(px, "JPEG", quality=90),
+        "progressive.jpg": pil_bytes(px, "JPEG", quality=90, progressive=True),
+        "tif": pil_bytes(px, "TIFF"),
+        "lzw.tif": pil_bytes(px, "TIFF", compression="tiff_lzw"),
+        "deflate.tif": pil_bytes(px, "TIFF", compression="tiff_adobe_deflate"),
+    }
+    return files
+
+
+@pytest.mark.parametrize("name", ["png", "jpg", "progressive.jpg", "tif", "lzw.tif", "deflate.tif",
+                                  "exr"])
+@pytest.mark.parametrize("keep", [0.5, 0.9])
+def test_a_file_cut_short_is_refused(irid_cli, tmp_path, name, keep):
+    if name == "exr":
+        irid.write_image(tmp_path / "whole.exr", random_rgb().astype(np.float32) / 255,
+                         compression="zip")
+        data = (tmp_path / "whole.exr").read_bytes()
+    else:
+        data = whole_files()[name]
+    whole = tmp_path / f"whole.{name}"
+    whole.write_bytes(data)
+    irid.read_image(whole)      # the uncut file reads
+    cut = tmp_path / f"cut.{name}"
+    cut.write_bytes(data[:int(len(data) * keep)])
+    status, err = run_limited(irid_cli, "clip", "--method", "clamp", "--from", "srgb", cut,
+                                  tmp_path / "out.png")
+    assert status == 1, err
+    assert str(cut) in err and ("truncated" in err or "damaged" in err or "corrupt" in err
+                                or "cannot read" in err), err
+    assert not (tmp_path / "out.png").exists()
+    with pytest.raises(OSError, match="cut"):
+        irid.read_image(cut)
+
+
+def test_corrupt_jpeg_data_is_refused(tmp_path):
+    """A marker inside the coded data (here a restart marker in a file without restart
+    intervals). JPEG's coded data carry no checksum: damage that still decodes as Huffman codes
+    cannot be told from an image, and is not claimed to be."""
+    data = whole_files()["jpg"]
+    sos = data.index(b"\xff\xda")
+    data = data[:sos + 400] + b"\xff\xd3" + data[sos + 400:]
+    (tmp_path / "bad.jpg").write_bytes(data)
+    with pytest.raises(OSError, match="bad.jpg: cannot read the pixels"):
+        irid.read_image(tmp_path / "bad.jpg")
+
+
+def jpeg_declaring(width, height, progressive=False):
+    """A JPEG's headers with the frame's size patched, and 20 bytes of coded data."""
+    data = bytearray(pil_bytes(random_rgb(16, 16), "JPEG", quality=90, progressive=progressive))
+    i = 2
+    while True:
+        marker, length = data[i + 1], struct.unpack(">H", data[i + 2:i + 4])[0]
+        if marker in (0xC0, 0xC2):
+            data[i + 5:i + 9] = struct.pack(">HH", height, width)
+        if marker == 0xDA:
+            return bytes(data[:i + 2 + length + 20]) + b"\xff\xd9"
+        i += 2 + length
+
+
+def tiff_declaring(width, height, compression=1, strip_bytes=None, bits=32, sample_format=3):
+    """A classic little-endian TIFF directory of 3 samples, one strip of `strip_bytes` at the
+    end of a file of a few hundred bytes (none: as many as the pixels need uncompressed)."""
+    need = width * height * 3 * bits // 8
+    entries = [(256, 4, 1, width), (257, 4, 1, height), (258, 3, 3, None), (259, 3, 1, compression),
+               (262, 3, 1, 2), (273, 4, 1, None), (277, 3, 1, 3), (278, 4, 1, height),
+               (279, 4, 1, need if strip_bytes is None else strip_bytes), (284, 3, 1, 1),
+               (339, 3, 3, None)]
+    after = 8 + 2 + 12 * len(entries) + 4
+    extra = struct.pack("<3H", bits, bits, bits) + struct.pack("<3H", *(3 * [sample_format]))
+    strip_at = after + len(extra)
+    out = b""
+    for tag, typ, count, value in entries:
+        if tag == 258:
+            out += struct.pack("<HHII", tag, typ, count, after)
+        elif tag == 339:
+            out += struct.pack("<HHII", tag, typ, count, after + 6)
+        elif tag == 273:
+            out += struct.pack("<HHII", tag, typ, count, strip_at)
+        elif typ == 3:
+            out += struct.pack("<HHIHH", tag, typ, count, value, 0)
+        else:
+            out += struct.pack("<HHII", tag, typ, count, value)
+    body = b"II*\0" + struct.pack("<I", 8) + struct.pack("<H", len(entries)) + out + b"\0\0\0\0"
+    body += extra
+    if strip_bytes is not None:
+        body += bytes(strip_bytes)
+    return body
+
+
+# A few hundred bytes that declare 8000 x 8000 or 8192 x 8192: refused from the header, within
+# 384 MB of data, which a run needs to load OpenImageIO and read a small image (an 8000 x 8000
+# float image alone is 768 MB; without the header checks these runs fail allocating it).
+@pytest.mark.parametrize("name,data,reason", [
+    ("huge.jpg", jpeg_declaring(8000, 8000), "need at least 187500 bytes of coded data"),
+    ("huge-progressive.jpg", jpeg_declaring(8000, 8000, True), "bytes of coded data"),
+    ("huge.tif", tiff_declaring(8192, 8192), "its strip 0 declares 805306368 bytes"),
+    ("huge-deflate.tif", tiff_declaring(8192, 8192, 8, 200), "expand at most 1032-fold"),
+    ("huge-lzw.tif", tiff_declaring(8192, 8192, 5, 200), "expand at most 3640-fold"),
+    ("huge-packbits.tif", tiff_declaring(8192, 8192, 32773, 200), "expand at most 64-fold"),
+    ("huge-raw.tif", tiff_declaring(8192, 8192, 1, 200), "bytes of uncompressed data cannot"),
+], ids=lambda v: v if isinstance(v, str) and v.startswith("huge") else "")
+def test_a_small_file_declaring_a_huge_image_costs_what_it_holds(irid_cli, tmp_path, name, data,
+                                                                 reason):
+    assert len(data) < 1000
+    (tmp_path / name).write_bytes(data)
+    status, err = run_limited(irid_cli, "clip", "--method", "clamp", "--from", "srgb",
+                              tmp_path / name, tmp_path / "out.exr", data_mb=384)
+    assert status == 1 and reason in err, err
+    with pytest.raises(OSError, match=reason):
+        irid.read_image(tmp_path / name)
+
+
+def test_a_small_image_reads_within_the_data_limit_of_the_test_above(irid_cli, tmp_path):
+    (tmp_path / "small.jpg").write_bytes(whole_files()["jpg"])
+    status, err = run_limited(irid_cli, "clip", "--method", "clamp", "--from", "srgb",
+                              tmp_path / "small.jpg", tmp_path / "out.exr", data_mb=384)
+    assert status == 0, err
+
+
+def test_the_bounds_pass_real_files_of_every_compression(tmp_path):
+    """A flat image compresses best: the bounds must still let it through."""
+    flat = np.zeros((512, 512, 3), np.uint8)
+    for name, kw in [("flat.jpg", dict(quality=10)), ("flatp.jpg", dict(quality=10, progressive=True)),
+                     ("flat-444.jpg", dict(quality=10, subsampling=0)),
+                     ("flat.tif", {}), ("flat-lzw.tif", dict(compression="tiff_lzw")),
+                     ("flat-deflate.tif", dict(compression="tiff_adobe_deflate")),
+                     ("flat-packbits.tif", dict(compression="packbits"))]:
+        fmt = "JPEG" if name.endswith(".jpg") else "TIFF"
+        (tmp_path / name).write_bytes(pil_bytes(flat, fmt, **kw))
+        px, _ = irid.read_image(tmp_path / name)
+        assert px.shape == (512, 512, 3) and float(np.abs(px).max()) < 2 / 255, name
+
+
+# --- embedded profiles damaged in their container --------------------------------------------
+
+def prophoto():
+    return (COLORD / "ProPhotoRGB.icc").read_bytes()
+
+
+def jpeg_with_app2(pixels, chunks):
+    """A JPEG with the given APP2 ICC_PROFILE segments, (sequence, count, data), after SOI."""
+    plain = pil_bytes(pixels, "JPEG", quality=95)
+    segments = b""
+    for seq, count, data in chunks:
+        body = b"ICC_PROFILE\0" + bytes([seq, count]) + data
+        segments += b"\xff\xe2" + struct.pack(">H", len(body) + 2) + body
+    return plain[:2] + segments + plain[2:]
+
+
+def halves(profile):
+    mid = len(profile) // 2
+    return profile[:mid], profile[mid:]
+
+
+@pytest.mark.parametrize("numbers", ids=str, argvalues=[
+    [(1, 1), (1, 1)],          # duplicated
+    [(2, 2), (2, 2)],          # the same number twice
+    [(0, 1)],                  # numbered from 0
+    [(1, 2)],                  # a segment missing
+    [(1, 2), (2, 3)],          # counts differ
+    [(1, 0)],                  # a count of 0
+])
+def test_misnumbered_jpeg_profile_segments_are_refused(irid_cli, tmp_path, numbers):
+    px = random_rgb(8, 8)
+    profile = prophoto()
+    parts = [profile] if len(numbers) == 1 else list(halves(profile))
+    if numbers == [(1, 1), (1, 1)]:
+        parts = [profile, profile]
+    path = tmp_path / "bad.jpg"
+    path.write_bytes(jpeg_with_app2(px, [(s, n, d) for (s, n), d in zip(numbers, parts)]))
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", path, tmp_path / "out.png"],
+                       capture_output=True, text=True)
+    assert r.returncode == 1 and "bad.jpg: ICC profile: damaged" in r.stderr, r.stderr
+    assert "Annex B.4" in r.stderr and "no ICC profile" not in r.stderr
+    assert not (tmp_path / "out.png").exists()
+    _, meta = irid.read_image(path)
+    assert meta["icc_profile_rejected"] and meta["icc_profile"] is None
+    assert "APP2" in meta["icc_profile_damage"]
+    with pytest.raises(ValueError, match="damaged"):
+        irid.image_space(meta)
+    # --from overrides the damaged profile, and says so.
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", "--from", "adobe-rgb", path,
+                        tmp_path / "out.png"], capture_output=True, text=True)
+    assert r.returncode == 0 and "--from adobe-rgb overrides" in r.stderr, r.stderr
+
+
+def test_jpeg_profile_segments_are_joined_by_their_numbers(irid_cli, tmp_path):
+    px = random_rgb(8, 8)
+    first, second = halves(prophoto())
+    ordered = tmp_path / "ordered.jpg"
+    reversed_ = tmp_path / "reversed.jpg"
+    ordered.write_bytes(jpeg_with_app2(px, [(1, 2, first), (2, 2, second)]))
+    reversed_.write_bytes(jpeg_with_app2(px, [(2, 2, second), (1, 2, first)]))
+    for path in (ordered, reversed_):
+        _, meta = irid.read_image(path)
+        assert meta["icc_profile"] == prophoto(), path
+        assert irid.image_space(meta)["exact"] and "ProPhoto" in irid.image_space(meta)["origin"]
+        run = subprocess.run([irid_cli, "clip", "--method", "clamp", path, tmp_path / "o.png"],
+                             capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+
+
+def tiff_profile_entry(data):
+    """The byte offset of the ICC profile entry (tag 34675) in a little-endian TIFF's first
+    directory."""
+    assert data[:4] == b"II*\0"
+    ifd = struct.unpack("<I", data[4:8])[0]
+    n = struct.unpack("<H", data[ifd:ifd + 2])[0]
+    for i in range(n):
+        at = ifd + 2 + 12 * i
+        if struct.unpack("<H", data[at:at + 2])[0] == 34675:
+            return at
+    raise AssertionError("no ICC profile tag")
+
+
+@pytest.mark.parametrize("field,value", [("count", 10_000_000), ("offset", 10_000_000),
+                                         ("count", 0xFFFFFFF0)])
+def test_a_tiff_profile_tag_past_the_file_is_refused(irid_cli, tmp_path, field, value):
+    data = bytearray(pil_bytes(random_rgb(8, 8), "TIFF", icc_profile=prophoto()))
+    at = tiff_profile_entry(data)
+    data[at + (4 if field == "count" else 8):at + (8 if field == "count" else 12)] = \
+        struct.pack("<I", value)
+    path = tmp_path / "bad.tif"
+    path.write_bytes(bytes(data))
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", path, tmp_path / "out.png"],
+                       capture_output=True, text=True)
+    assert r.returncode == 1, r.stderr
+    assert "bad.tif: ICC profile: damaged: its ICC profile tag (34675) declares" in r.stderr
+    _, meta = irid.read_image(path)
+    assert meta["icc_profile_rejected"]
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", "--from", "adobe-rgb", path,
+                        tmp_path / "out.png"], capture_output=True, text=True)
+    assert r.returncode == 0 and "overrides" in r.stderr, r.stderr
