@@ -28,6 +28,24 @@ void write_stdout(const std::string& text) {
     if (!std::cout) throw Error(std::string("cannot write to standard output: ") + std::strerror(errno));
 }
 
+std::pair<double, double> parse_number_pair(const std::string& option, const std::string& text,
+                                            const std::string& what, const std::string& example) {
+    const auto number = [](std::string_view s) -> std::optional<double> {
+        double v = 0.0;
+        const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        if (s.empty() || ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+        return v;
+    };
+    const std::size_t comma = text.find(',');
+    const std::optional<double> lo = comma == std::string::npos ? std::nullopt : number(std::string_view(text).substr(0, comma));
+    const std::optional<double> hi = comma == std::string::npos ? std::nullopt : number(std::string_view(text).substr(comma + 1));
+    if (!lo || !hi) {
+        throw UsageError(option + " " + quote_untrusted(text) + ": give " + what + " as LO,HI (two numbers, e.g. " +
+                         example + ")");
+    }
+    return {*lo, *hi};
+}
+
 CLI::Validator whole_number_in(long long lo, long long hi) {
     const std::string allowed = std::to_string(lo) + " to " + std::to_string(hi);
     return CLI::Validator(

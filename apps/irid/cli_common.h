@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace irid::cli {
@@ -55,6 +56,11 @@ void write_stdout(const std::string& text);
 /// An option's check for a whole number in [lo, hi]: "--width abc" is "'abc' is not a whole
 /// number; allowed: 1 to 16384", not "out of range".
 [[nodiscard]] CLI::Validator whole_number_in(long long lo, long long hi);
+
+/// "LO,HI" as two numbers; throws UsageError "OPTION 'TEXT': give ... as LO,HI (two numbers,
+/// e.g. EXAMPLE)" otherwise. `what` says what the pair is ("the inputs covered").
+[[nodiscard]] std::pair<double, double> parse_number_pair(const std::string& option, const std::string& text,
+                                                          const std::string& what, const std::string& example);
 
 /// "a, b, c" for messages.
 [[nodiscard]] std::string join(const std::vector<std::string>& names);

@@ -46,17 +46,14 @@ namespace {
 ClipSettings make_settings(const PipelineArgs& o, ClipMethod method, bool final_clip) {
     ClipSettings settings;
     settings.inverse = o.inverse;
-    bool clip_given = false;
     for (const std::string& p : o.params) {
         try {
             settings.set(p);
         } catch (const Error& e) {
             throw UsageError(std::string("--param: ") + e.what());
         }
-        clip_given = clip_given || p.starts_with("clip=");
     }
-    if (final_clip && method == ClipMethod::aces_rgc && !clip_given) settings.set("clip", 1.0);
-    return settings;
+    return final_clip ? display_clip_settings(method, std::move(settings)) : settings;
 }
 
 }  // namespace

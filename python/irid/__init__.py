@@ -308,9 +308,9 @@ def simd_target():
 
 
 @functools.lru_cache(maxsize=64)
-def _pipeline(method, source, target, peak, white, adaptation, params, inverse):
+def _pipeline(method, source, target, peak, white, adaptation, params, inverse, display=False):
     return _irid.ClipPipeline(method, source, target, peak, white[0], white[1], adaptation,
-                              list(params), inverse)
+                              list(params), inverse, display)
 
 
 def _parameter_value(name, value):
@@ -398,11 +398,10 @@ def _clip_pipeline(method, source, target, max, white, adaptation, inverse, para
     if not isinstance(max, numbers.Real) or isinstance(max, bool):
         raise ValueError(f"max: {max!r} is not a number")
     values = {k.replace("_", "-"): _parameter_value(k, v) for k, v in params.items()}
-    if image and method == "aces-rgc":
-        values.setdefault("clip", 1.0)   # a file cannot hold what a display cannot show
+    # image: a file holds what a display shows (display_clip_settings in irid/gamut/clip.h).
     return _pipeline(method, source, target, float(max), _white(white),
                      _name(adaptation, "adaptation"), tuple(sorted(values.items())),
-                     _flag(inverse, "inverse"))
+                     _flag(inverse, "inverse"), image)
 
 Lut = _irid.Lut
 
@@ -443,27 +442,35 @@ def bake_lut(method, source="srgb-linear", target="srgb", size=33, shaper="none"
 
 
 def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None, size=33,
-                      adaptation="bradford", threads=0):
+                      adaptation="bradford", threads=0, range=None):
     """Writes an OpenColorIO 2 config offering the clip methods as looks (``irid ocio-config``).
 
     dir: the folder (created if missing): config.ocio and luts/irid-METHOD.clf.
-    source: the scene's RGB space, the config's reference. display: the display's RGB space,
-        whose cube is the gamut; its colour space is one matrix from the source and its transfer
-        function as an OCIO transform.
-    methods: the methods offered (default: all of :func:`clip_methods`), each a look
-        "irid-METHOD" and a view METHOD on the display "DISPLAY display", beside a view
-        "unclipped". size: the LUTs' nodes per axis (a log2 shaper over [0, 16] for a linear
-        source, uniform over [0, 1] for an encoded one).
+    source: the scene's RGB space; its linear form is the config's reference (and scene_linear
+        role), an encoded source a colour space decoded from it. display: the display's RGB
+        space, whose cube is the gamut (it may be the source's own): one matrix from the
+        reference and its transfer function as an OCIO transform.
+    methods: the methods offered (default: all of :func:`clip_methods`, each once), each a look
+        "irid-METHOD" in the display's linear space and a view METHOD on the display
+        "DISPLAY display", beside a view "unclipped".
+    size: the LUTs' nodes per axis, 5 to 129; 0 and 1 are nodes on every axis, so colours inside
+        the gamut go through a hard method's look unchanged.
+    range: (lo, hi), the source values the looks cover (default (-1, 16) for a linear source,
+        (0, 1) for an encoded one); beyond them inputs clamp.
 
     Returns the path of config.ocio. Raises KeyError for unknown names, ValueError for bad
-    values (a space that is not RGB, the source as display), OSError when a file cannot be
-    written.
+    values (a space that is not RGB, a method named twice, a bad range), OSError when a file
+    cannot be written.
     """
     names = list(_names(methods, "methods")) if methods is not None else []
+    if range is not None:
+        range = tuple(_floats(range, "range"))
+        if len(range) != 2:
+            raise ValueError(f"range: {range!r}; give (lo, hi)")
     return _irid.write_ocio_config(_path(dir), _name(source, "source"), _name(display, "display"),
-                                   names, _whole(size, "size", 2, 129),
+                                   names, _whole(size, "size", 5, 129),
                                    _name(adaptation, "adaptation"),
-                                   _whole(threads, "threads", 0, 1 << 20))
+                                   _whole(threads, "threads", 0, 1 << 20), range)
 
 
 def _names(values, what):
@@ -502,14 +509,12 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
         target = "srgb-linear" if target is None else target
         _name(target, "target")
         values = {k.replace("_", "-"): _parameter_value(k, v) for k, v in params.items()}
-        if method == "aces-rgc":
-            values.setdefault("clip", 1.0)
         if not isinstance(max, numbers.Real) or isinstance(max, bool):
             raise ValueError(f"max: {max!r} is not a number")
         wx, wy = _white(white)
         p = _irid.ClipPipeline(_name(method, "method"), file_space, target, float(max), wx, wy,
                                _name(adaptation, "adaptation"), sorted(values.items()),
-                               _flag(inverse, "inverse"))
+                               _flag(inverse, "inverse"), True)
     elif source is None:
         source = "xyz" if xyz_channels else "srgb-linear"
     elif xyz_channels and source != "xyz":

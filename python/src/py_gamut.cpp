@@ -30,7 +30,8 @@ namespace {
 /// The pipeline of ClipPipeline's Python constructors (the arguments as irid._pipeline passes them).
 ClipPipeline make_pipeline(const std::string& method, const ColorSpace& from, const std::string& target,
                            double max, double wx, double wy, const std::string& adaptation,
-                           const std::vector<std::pair<std::string, double>>& params, bool inverse) {
+                           const std::vector<std::pair<std::string, double>>& params, bool inverse,
+                           bool display) {
     const ClipMethod cm = parse_clip_method(method);
     const ColorSpace to = color_space(target);
     if (!to.is_rgb()) {
@@ -42,6 +43,7 @@ ClipPipeline make_pipeline(const std::string& method, const ColorSpace& from, co
     o.adaptation = parse_chromatic_adaptation(adaptation);
     o.settings.inverse = inverse;
     for (const auto& [k, v] : params) o.settings.set(k, v);
+    if (display) o.settings = display_clip_settings(cm, std::move(o.settings));
     return ClipPipeline(cm, from, to, o);
 }
 
@@ -174,21 +176,24 @@ void add_gamut(py::module_& m) {
         .def(py::init([](const std::string& method, const std::string& source,
                          const std::string& target, double max, double wx, double wy,
                          const std::string& adaptation, const std::vector<std::pair<std::string, double>>& params,
-                         bool inverse) {
+                         bool inverse, bool display) {
                  return make_pipeline(method, color_space(source), target, max, wx, wy, adaptation,
-                                      params, inverse);
+                                      params, inverse, display);
              }),
              py::arg("method"), py::arg("source"), py::arg("target"), py::arg("max"), py::arg("wx"),
-             py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"))
+             py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"),
+             py::arg("display") = false)
         .def(py::init([](const std::string& method, const ImageSpace& source, const std::string& target,
                          double max, double wx, double wy, const std::string& adaptation,
-                         const std::vector<std::pair<std::string, double>>& params, bool inverse) {
+                         const std::vector<std::pair<std::string, double>>& params, bool inverse,
+                         bool display) {
                  return make_pipeline(method, source.colour_space(), target, max, wx, wy, adaptation, params,
-                                      inverse);
+                                      inverse, display);
              }),
              py::keep_alive<1, 3>(),  // the pipeline points at the file space's RgbSpace
              py::arg("method"), py::arg("source"), py::arg("target"), py::arg("max"), py::arg("wx"),
-             py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"))
+             py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"),
+             py::arg("display") = false)
         .def(
             "run",
             [](const ClipPipeline& p, const py::handle& a, int threads, const py::object& out) {

@@ -17,6 +17,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace irid::python {
@@ -124,8 +125,10 @@ nodes: the input value of each node along an axis (float64, size).)")
     m.def(
         "write_ocio_config",
         [](const std::filesystem::path& dir, const std::string& source, const std::string& display,
-           const std::vector<std::string>& methods, int size, const std::string& adaptation, int threads) {
+           const std::vector<std::string>& methods, int size, const std::string& adaptation, int threads,
+           const std::optional<std::pair<double, double>>& range) {
             OcioConfigOptions o;
+            o.source_range = range;
             o.source = color_space(source);
             o.display = color_space(display);
             for (const std::string& name : methods) o.methods.push_back(parse_clip_method(name));
@@ -142,7 +145,7 @@ nodes: the input value of each node along an axis (float64, size).)")
             return (dir / "config.ocio").string();
         },
         py::arg("dir"), py::arg("source"), py::arg("display"), py::arg("methods"), py::arg("size"),
-        py::arg("adaptation"), py::arg("threads"));
+        py::arg("adaptation"), py::arg("threads"), py::arg("range"));
     m.def("lut_format_interpolation",
           [](const std::string& format) {
               return std::string(lut_interpolation_name(lut_format_interpolation(lut_format_for("lut." + format))));

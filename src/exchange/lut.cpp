@@ -41,7 +41,20 @@ std::string lower(std::string_view s) {
 std::string describe_domain(const LutDomain& d) {
     const std::string range = fmt::format("[{}, {}]", format_shortest(d.min), format_shortest(d.max));
     if (d.shaper == LutShaper::none) return fmt::format("uniform over {}", range);
+    if (d.shaper == LutShaper::nodes) {
+        std::string list;
+        for (const double x : d.nodes) {
+            if (!list.empty()) list += ' ';
+            list += format_shortest(x);
+        }
+        return fmt::format("nodes over {} at {}", range, list);
+    }
     return fmt::format("log2 shaper over {}, {} stops", range, d.stops);
+}
+
+/// The samples of the nodes shaper's LUT1D: one every `step` from min to max.
+std::size_t node_samples(const LutDomain& d) noexcept {
+    return static_cast<std::size_t>(std::llround((d.max - d.min) / d.step)) + 1;
 }
 
 std::string xml_escaped(std::string_view s) {
@@ -99,6 +112,23 @@ std::string clf_text(const Lut3D& lut) {
         put("        <minInValue>{}</minInValue>\n        <maxInValue>{}</maxInValue>\n", d.min, d.max);
         put("        <minOutValue>0</minOutValue>\n        <maxOutValue>1</maxOutValue>\n");
         put("    </Range>\n");
+    } else if (d.shaper == LutShaper::nodes) {
+        // [min, max] → [0, 1], clamped; then each input to its place between the nodes (node i
+        // at i / (size − 1)), linear between samples every `step`, all nodes among them.
+        put("    <Range inBitDepth=\"32f\" outBitDepth=\"32f\" style=\"Clamp\">\n");
+        put("        <Description>the domain [{}, {}] onto the shaper's input</Description>\n", d.min, d.max);
+        put("        <minInValue>{}</minInValue>\n        <maxInValue>{}</maxInValue>\n", d.min, d.max);
+        put("        <minOutValue>0</minOutValue>\n        <maxOutValue>1</maxOutValue>\n");
+        put("    </Range>\n");
+        const std::size_t samples = node_samples(d);
+        put("    <LUT1D inBitDepth=\"32f\" outBitDepth=\"32f\" interpolation=\"linear\">\n");
+        put("        <Description>{}</Description>\n", describe_domain(d));
+        put("        <Array dim=\"{} 1\">\n", samples);
+        for (std::size_t j = 0; j < samples; ++j) {
+            const double x = j + 1 == samples ? d.max : d.min + static_cast<double>(j) * d.step;
+            put("{}\n", static_cast<float>(lut_shape(d, x)));
+        }
+        put("        </Array>\n    </LUT1D>\n");
     } else {
         put("    <Range inBitDepth=\"32f\" outBitDepth=\"32f\" style=\"Clamp\">\n");
         put("        <Description>inputs clamped to the domain [{}, {}]</Description>\n", d.min, d.max);
@@ -200,7 +230,7 @@ LutInterpolation lut_format_interpolation(LutFormat format) noexcept {
 void check_lut_format(LutFormat format, const LutDomain& d) {
     if (format == LutFormat::cube && d.shaper != LutShaper::none) {
         throw Error(".cube carries no shaper (only LUT_3D_INPUT_RANGE, a uniform range); write "
-                    "a .clf for the log2 shaper");
+                    "a .clf for the " + std::string(d.shaper == LutShaper::log2 ? "log2 shaper" : "nodes shaper"));
     }
     if (format == LutFormat::spi3d && (d.shaper != LutShaper::none || d.min != 0.0 || d.max != 1.0)) {
         throw Error(".spi3d covers the inputs [0, 1] only, and this LUT's domain is " +
@@ -217,12 +247,55 @@ void check_lut_domain(const LutDomain& d) {
     if (d.shaper == LutShaper::log2 && !(d.stops >= 1 && d.stops <= 40)) {
         throw Error("LUT shaper stops " + std::to_string(d.stops) + ": valid 1 to 40");
     }
+    // Readers map [min, max] in float32: OpenColorIO refuses a Range narrower than 1e-6
+    // ("maxInValue is too close to minInValue"), and nodes closer than float32 can tell apart
+    // would be one node.
+    const double ulps = 64.0 * std::exp2(std::ilogb(std::max({1.0, std::abs(d.min), std::abs(d.max)})) - 23);
+    if (!(d.max - d.min >= std::max(1e-6, ulps))) {
+        throw Error("LUT domain [" + format_shortest(d.min) + ", " + format_shortest(d.max) +
+                    "]: max - min must be at least " + format_shortest(std::max(1e-6, ulps)) +
+                    " (1e-6, which OpenColorIO requires, and 64 float32 steps at this magnitude)");
+    }
+    if (d.shaper == LutShaper::nodes) {
+        if (!(d.step >= std::exp2(-20) && d.step <= 1.0) || (d.max - d.min) / d.step > std::exp2(20)) {
+            throw Error("LUT nodes step " + format_shortest(d.step) +
+                        ": valid 2^-20 to 1, with at most 2^20 steps from min to max");
+        }
+        const auto on_step = [&d](double x) {
+            const double k = (x - d.min) / d.step;
+            return std::abs(k - std::round(k)) <= 1e-6;
+        };
+        if (d.nodes.size() < 2 || d.nodes.front() != d.min || d.nodes.back() != d.max) {
+            throw Error("LUT nodes: at least 2, from min to max");
+        }
+        for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+            if ((i > 0 && !(d.nodes[i] > d.nodes[i - 1])) || !on_step(d.nodes[i])) {
+                throw Error("LUT node " + std::to_string(i) + " (" + format_shortest(d.nodes[i]) +
+                            "): nodes must increase and lie on whole steps of " + format_shortest(d.step) +
+                            " from min");
+            }
+        }
+    }
+}
+
+void check_lut_domain(const LutDomain& d, int size) {
+    check_lut_domain(d);
+    if (d.shaper == LutShaper::nodes && d.nodes.size() != static_cast<std::size_t>(size)) {
+        throw Error("LUT nodes: " + std::to_string(d.nodes.size()) + " positions for a LUT of " +
+                    std::to_string(size) + " nodes per axis");
+    }
 }
 
 double lut_shape(const LutDomain& d, double x) noexcept {
     if (!(x > d.min)) return 0.0;  // NaN too
     if (x >= d.max) return 1.0;
     if (d.shaper == LutShaper::none) return (x - d.min) / (d.max - d.min);
+    if (d.shaper == LutShaper::nodes) {
+        const auto& n = d.nodes;
+        const std::size_t i = static_cast<std::size_t>(std::upper_bound(n.begin(), n.end(), x) - n.begin()) - 1;
+        const double cells = static_cast<double>(n.size() - 1);
+        return (static_cast<double>(i) + (x - n[i]) / (n[i + 1] - n[i])) / cells;
+    }
     const double e = log_offset(d);
     return std::log2((x - d.min + e) / e) / log_span(d);
 }
@@ -231,6 +304,12 @@ double lut_unshape(const LutDomain& d, double s) noexcept {
     if (!(s > 0.0)) return d.min;
     if (s >= 1.0) return d.max;
     if (d.shaper == LutShaper::none) return d.min + s * (d.max - d.min);
+    if (d.shaper == LutShaper::nodes) {
+        const double at = s * static_cast<double>(d.nodes.size() - 1);
+        const auto i = std::min(static_cast<std::size_t>(at), d.nodes.size() - 2);
+        const double f = at - static_cast<double>(i);
+        return f == 0.0 ? d.nodes[i] : d.nodes[i] + f * (d.nodes[i + 1] - d.nodes[i]);
+    }
     const double e = log_offset(d);
     return d.min + e * (std::exp2(s * log_span(d)) - 1.0);
 }
@@ -240,7 +319,7 @@ Lut3D bake_lut(const ClipPipeline& pipeline, int size, const LutDomain& domain, 
         throw Error("LUT size " + std::to_string(size) + ": valid " + std::to_string(lut_min_size) +
                     " to " + std::to_string(lut_max_size) + " (17, 33 and 65 are usual)");
     }
-    check_lut_domain(domain);
+    check_lut_domain(domain, size);
     if (threads < 0) throw Error("threads " + std::to_string(threads) + " must be >= 0 (0: all)");
     const ColorSpace& from = pipeline.from();
     if (!from.is_rgb() && from.family != SpaceFamily::xyz) {
@@ -294,7 +373,7 @@ std::string lut_text(const Lut3D& lut, LutFormat format) {
         throw Error("not a LUT: size " + std::to_string(lut.size) + " with " +
                     std::to_string(lut.values.size()) + " values");
     }
-    check_lut_domain(lut.domain);
+    check_lut_domain(lut.domain, lut.size);
     check_lut_format(format, lut.domain);
     for (const char c : lut.title + lut.source + lut.destination) {
         if (c == '\n' || c == '\r') throw Error("a LUT's title and spaces must be single lines");

@@ -3,10 +3,15 @@
 #include <irid/error.h>
 #include <irid/gamut/pipeline.h>
 #include <irid/io/output_file.h>
+#include <irid/color/numeric_table.h>
+#include <irid/text_input.h>
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <iterator>
 #include <system_error>
 
@@ -42,13 +47,6 @@ std::string encode_transform(const RgbSpace& space) {
     throw Error("the transfer function of " + space.name() + " has no OpenColorIO form");
 }
 
-std::string decode_transform(const RgbSpace& space) {
-    std::string e = encode_transform(space);
-    const std::size_t at = e.rfind("direction: inverse");
-    if (at != std::string::npos) e.replace(at, 18, "direction: forward");
-    return e;
-}
-
 /// The 4×4 row-major matrix of OCIO's MatrixTransform from one linear space to another.
 std::string matrix_transform(const ColorSpace& from_linear, const ColorSpace& to_linear,
                              ChromaticAdaptation adaptation) {
@@ -69,43 +67,138 @@ std::string matrix_transform(const ColorSpace& from_linear, const ColorSpace& to
     return fmt::to_string(out);
 }
 
+/// An RGB space whose transfer function is linear (the alias "acescg" of ACEScg) as its linear
+/// form: its values are linear light, and its LUT domain and OCIO encoding must say so.
+ColorSpace canonical(const ColorSpace& s) {
+    if (s.family == SpaceFamily::rgb_encoded && s.rgb->transfer().kind() == TransferFunction::Kind::linear) {
+        return s.linear();
+    }
+    return s;
+}
+
 }  // namespace
 
-LutDomain ocio_config_default_domain(const ColorSpace& source) noexcept {
-    if (source.family == SpaceFamily::rgb_linear) return LutDomain{LutShaper::log2, 0.0, 16.0, 14};
-    return LutDomain{};
+std::pair<double, double> ocio_source_range(const OcioConfigOptions& o) {
+    const bool linear = canonical(o.source).family == SpaceFamily::rgb_linear;
+    const auto range = o.source_range.value_or(linear ? std::pair{-1.0, 16.0} : std::pair{0.0, 1.0});
+    const auto [bottom, top] = range;
+    if (!(std::isfinite(bottom) && std::isfinite(top) && bottom >= -1e5 && top <= 1e5 && bottom < top && top > 0.0)) {
+        throw Error("source range [" + format_shortest(bottom) + ", " + format_shortest(top) +
+                    "]: needs finite -1e5 <= min < max <= 1e5 with max > 0");
+    }
+    return range;
+}
+
+LutDomain ocio_look_domain(const OcioConfigOptions& o) {
+    if (o.size < ocio_look_min_size || o.size > lut_max_size) {
+        throw Error("LUT size " + std::to_string(o.size) + ": an OCIO config's looks take " +
+                    std::to_string(ocio_look_min_size) + " to " + std::to_string(lut_max_size) + " nodes");
+    }
+    const ColorSpace source = canonical(o.source);
+    const auto [bottom, top] = ocio_source_range(o);
+    // The corners of the source cube in the display's linear space bound every source colour:
+    // the conversion is one matrix, after decoding (which maps [0, 1] onto [0, 1] and keeps
+    // order).
+    const Converter to_display(source.linear(), o.display.linear(), Xy{0.3127, 0.3290}, o.adaptation);
+    const auto decoded = [&source](double v) {
+        return source.family == SpaceFamily::rgb_linear ? v : source.rgb->transfer().decode(v);
+    };
+    const double c0 = decoded(bottom), c1 = decoded(top);
+    double lo = 0.0, hi = 1.0;
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 c = to_display(Vec3{(k & 1) ? c1 : c0, (k & 2) ? c1 : c0, (k & 4) ? c1 : c0});
+        for (int i = 0; i < 3; ++i) {
+            lo = std::min(lo, c[i]);
+            hi = std::max(hi, c[i]);
+        }
+    }
+    // Within 1e-3 of the cube the nodes would only cost resolution: such a range is the cube's.
+    if (lo > -1e-3) lo = 0.0;
+    if (hi < 1.0 + 1e-3) hi = 1.0;
+
+    // Cells in proportion to the extent of each range: [0, 1] counts 1, below log2(1 + |lo|),
+    // above log2(hi); [0, 1] gets at least 3/8, and each range beyond the cube at least one.
+    const int cells = o.size - 1;
+    const double m_below = std::log2(1.0 - lo), m_above = std::log2(hi);
+    const int needed_outside = (lo < 0.0) + (hi > 1.0);
+    int inside = static_cast<int>(std::lround(cells / (1.0 + m_below + m_above)));
+    inside = std::clamp(inside, static_cast<int>(std::lround(0.375 * cells)), cells - needed_outside);
+    const int rest = cells - inside;
+    int below = lo < 0.0 ? static_cast<int>(std::lround(rest * m_below / (m_below + m_above))) : 0;
+    if (lo < 0.0) below = std::clamp(below, 1, rest - (hi > 1.0));
+    const int above = rest - below;
+
+    std::vector<double> x;
+    const double pi = std::acos(-1.0);
+    std::vector<double> in(static_cast<std::size_t>(inside) + 1);
+    for (int k = 0; k <= inside; ++k) in[static_cast<std::size_t>(k)] = 0.5 - 0.5 * std::cos(pi * k / inside);
+    in.front() = 0.0;
+    in.back() = 1.0;
+    const double w = in[1];
+    const double span_below = std::log2(1.0 - lo / w);
+    for (int j = below; j >= 1; --j) x.push_back(-w * (std::exp2(span_below * j / below) - 1.0));
+    x.insert(x.end(), in.begin(), in.end());
+    for (int j = 1; j <= above && hi > 1.0; ++j) x.push_back(std::exp2(std::log2(hi) * j / above));
+
+    // The step of the shaper's samples: a power of two at most a quarter of the closest two
+    // nodes, but no finer than 2^16 samples over the domain (about 1 MB of text); nodes are
+    // rounded to it and, where two would meet, the upper is moved up one step.
+    double closest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 1; i < x.size(); ++i) closest = std::min(closest, x[i] - x[i - 1]);
+    const double step = std::exp2(std::max(std::floor(std::log2(closest / 4.0)),
+                                           std::ceil(std::log2((hi - lo) / 65536.0))));
+    LutDomain d;
+    d.shaper = LutShaper::nodes;
+    d.step = step;
+    d.min = std::floor(lo / step) * step;
+    d.max = std::ceil(hi / step) * step;
+    for (double& v : x) v = std::round(v / step) * step;
+    x.front() = d.min;
+    x.back() = d.max;
+    for (std::size_t i = 1; i + 1 < x.size(); ++i) x[i] = std::max(x[i], x[i - 1] + step);
+    d.nodes = std::move(x);
+    check_lut_domain(d, o.size);
+    return d;
 }
 
 OcioConfig make_ocio_config(const OcioConfigOptions& o) {
     if (!o.source.is_rgb()) throw Error("the config's source must be an RGB space, not " + color_space_name(o.source));
     if (!o.display.is_rgb()) throw Error("the config's display must be an RGB space, not " + color_space_name(o.display));
-    const std::string source = color_space_name(o.source);
-    const std::string display = color_space_name(o.display);
-    if (source == display) throw Error("the source and the display are one space (" + source + "): nothing to clip");
-    const LutDomain domain = o.domain.value_or(ocio_config_default_domain(o.source));
+    const ColorSpace source = canonical(o.source);
+    const ColorSpace display = canonical(o.display);
     std::vector<ClipMethod> methods = o.methods;
     if (methods.empty()) methods.assign(clip_methods().begin(), clip_methods().end());
-
-    // The display from the reference: decode the source, one matrix, encode for the display.
-    std::vector<std::string> steps;
-    if (o.source.family == SpaceFamily::rgb_encoded) steps.push_back(decode_transform(*o.source.rgb));
-    steps.push_back(matrix_transform(o.source.linear(), o.display.linear(), o.adaptation));
-    if (o.display.family == SpaceFamily::rgb_encoded) {
-        const std::string e = encode_transform(*o.display.rgb);
-        if (!e.empty()) steps.push_back(e);
+    for (std::size_t i = 0; i < methods.size(); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            if (methods[i] == methods[j]) {
+                throw Error("the method " + std::string(clip_method_name(methods[i])) +
+                            " is named twice; each look is offered once");
+            }
+        }
     }
+    const LutDomain domain = ocio_look_domain(o);
+
+    // The spaces by name: the reference (the source's linear form), the source when encoded,
+    // the looks' process space (the display's linear form) and the display when encoded. Names
+    // that coincide are one colour space.
+    const ColorSpace reference = source.linear();
+    const ColorSpace process = display.linear();
+    const std::string reference_name = color_space_name(reference);
+    const std::string source_name = color_space_name(source);
+    const std::string process_name = color_space_name(process);
+    const std::string display_name = color_space_name(display);
+    const bool same_linear = reference_name == process_name;
+    const std::string to_process = same_linear ? std::string() : matrix_transform(reference, process, o.adaptation);
 
     OcioConfig result;
-    const Converter back(o.display.linear(), o.source, Xy{0.3127, 0.3290}, o.adaptation);
     for (const ClipMethod m : methods) {
         ClipPipelineOptions po;
         po.adaptation = o.adaptation;
-        if (m == ClipMethod::aces_rgc) po.settings.set("clip", 1.0);  // a display holds the cube only
-        const ClipPipeline p(m, o.source, o.display.linear(), po);
+        po.settings = display_clip_settings(m);
+        const ClipPipeline p(m, process, process, po);
         Lut3D lut = bake_lut(p, o.size, domain, o.threads);
-        back.convert(std::span<const float>(lut.values), std::span<float>(lut.values));
-        lut.title += fmt::format("; output converted back to {} (an OCIO look in {})", source, source);
-        lut.destination = source;
+        lut.title += fmt::format("; the look irid-{} of an OCIO config, in {} (the {} display's linear space)",
+                                 clip_method_name(m), process_name, display_name);
         result.luts.emplace_back(fmt::format("luts/irid-{}.clf", clip_method_name(m)), std::move(lut));
     }
 
@@ -113,36 +206,64 @@ OcioConfig make_ocio_config(const OcioConfigOptions& o) {
     const auto put = [&out]<class... A>(fmt::format_string<A...> f, A&&... a) {
         fmt::format_to(std::back_inserter(out), f, std::forward<A>(a)...);
     };
-    put("ocio_profile_version: 2\n\n");
+    // A name the user gave that differs from the canonical one ("acescg" for "acescg-linear")
+    // stays usable as an alias.
+    const auto aliases = [&put](const std::string& name, const ColorSpace& given) {
+        const std::string given_name = color_space_name(given);
+        if (given_name != name) put("    aliases: [{}]\n", given_name);
+    };
+    put("ocio_profile_version: 2.1\n\n");
     put("description: irid {} gamut looks, {} to the {} display; every clip method as a look "
-        "(luts/irid-METHOD.clf, {}³)\n\n",
-        irid_version(), source, display, o.size);
+        "(luts/irid-METHOD.clf, {}³, in {})\n\n",
+        irid_version(), source_name, display_name, o.size, process_name);
     put("search_path: luts\n\n");
-    put("roles:\n  default: {0}\n  reference: {0}\n  color_picking: {1}\n  data: raw\n", source, display);
-    if (o.source.family == SpaceFamily::rgb_linear) put("  scene_linear: {}\n", source);
-    put("\nfile_rules:\n  - !<Rule> {{name: Default, colorspace: {}}}\n\n", source);
-    put("displays:\n  {} display:\n", display);
+    put("roles:\n  default: {0}\n  reference: {1}\n  scene_linear: {1}\n  color_picking: {2}\n"
+        "  data: raw\n",
+        source_name, reference_name, display_name);
+    put("\nfile_rules:\n  - !<Rule> {{name: Default, colorspace: {}}}\n\n", source_name);
+    put("displays:\n  {} display:\n", display_name);
     for (const ClipMethod m : methods) {
-        put("    - !<View> {{name: {0}, colorspace: {1}, looks: irid-{0}}}\n", clip_method_name(m), display);
+        put("    - !<View> {{name: {0}, colorspace: {1}, looks: irid-{0}}}\n", clip_method_name(m), display_name);
     }
-    put("    - !<View> {{name: unclipped, colorspace: {}}}\n\n", display);
+    put("    - !<View> {{name: unclipped, colorspace: {}}}\n\n", display_name);
     put("active_displays: []\nactive_views: []\n\nlooks:\n");
     for (const ClipMethod m : methods) {
         put("  - !<Look>\n    name: irid-{0}\n    process_space: {1}\n"
             "    description: irid's {0} clip into the {2} gamut\n"
             "    transform: !<FileTransform> {{src: irid-{0}.clf, interpolation: tetrahedral}}\n\n",
-            clip_method_name(m), source, display);
+            clip_method_name(m), process_name, display_name);
     }
     put("colorspaces:\n");
-    put("  - !<ColorSpace>\n    name: {}\n    family: irid\n    encoding: {}\n"
-        "    description: the scene's space (the reference)\n    isdata: false\n\n",
-        source, o.source.family == SpaceFamily::rgb_linear ? "scene-linear" : "sdr-video");
-    put("  - !<ColorSpace>\n    name: {}\n    family: irid\n    encoding: {}\n"
-        "    description: the display, from {}\n    isdata: false\n    from_scene_reference: "
-        "!<GroupTransform>\n      children:\n",
-        display, o.display.family == SpaceFamily::rgb_linear ? "scene-linear" : "sdr-video", source);
-    for (const std::string& s : steps) put("        - {}\n", s);
-    put("\n  - !<ColorSpace>\n    name: raw\n    family: irid\n    description: data, not colour\n"
+    put("  - !<ColorSpace>\n    name: {}\n", reference_name);
+    if (source.family == SpaceFamily::rgb_linear) aliases(reference_name, o.source);
+    put("    family: irid\n    encoding: scene-linear\n    description: the scene's linear light (the "
+        "reference)\n    isdata: false\n\n");
+    if (source.family == SpaceFamily::rgb_encoded) {
+        put("  - !<ColorSpace>\n    name: {}\n    family: irid\n    encoding: sdr-video\n"
+            "    description: the scene's space, encoded\n    isdata: false\n"
+            "    from_scene_reference: {}\n\n",
+            source_name, encode_transform(*source.rgb));
+    }
+    if (!same_linear) {
+        put("  - !<ColorSpace>\n    name: {}\n", process_name);
+        if (display.family == SpaceFamily::rgb_linear) aliases(process_name, o.display);
+        put("    family: irid\n    encoding: scene-linear\n"
+            "    description: the {} display's linear light, where the looks run\n    isdata: false\n"
+            "    from_scene_reference: {}\n\n",
+            display_name, to_process);
+    }
+    if (display.family == SpaceFamily::rgb_encoded && display_name != source_name) {
+        put("  - !<ColorSpace>\n    name: {}\n    family: irid\n    encoding: sdr-video\n"
+            "    description: the display, from {}\n    isdata: false\n    from_scene_reference: ",
+            display_name, reference_name);
+        const std::string encode = encode_transform(*display.rgb);
+        if (same_linear) {
+            put("{}\n\n", encode);
+        } else {
+            put("!<GroupTransform>\n      children:\n        - {}\n        - {}\n\n", to_process, encode);
+        }
+    }
+    put("  - !<ColorSpace>\n    name: raw\n    family: irid\n    description: data, not colour\n"
         "    isdata: true\n");
     result.config = fmt::to_string(out);
     return result;

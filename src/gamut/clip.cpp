@@ -146,6 +146,14 @@ ClipSettings& ClipSettings::set(std::string_view name_equals_value) {
     return set(name, v);
 }
 
+ClipSettings display_clip_settings(ClipMethod method, ClipSettings given) {
+    if (method != ClipMethod::aces_rgc) return given;
+    for (const auto& [name, value] : given.values) {
+        if (name == "clip") return given;
+    }
+    return std::move(given.set("clip", 1.0));
+}
+
 ClipMethod parse_clip_method(std::string_view name) {
     std::string names;
     std::vector<std::string> valid;

@@ -307,11 +307,7 @@ std::optional<double> ramp_collapse(std::span<const Lab> lab, std::span<const bo
 }
 
 GamutClipper report_clipper(ClipMethod method, const Gamut& gamut) {
-    ClipSettings settings;
-    for (const ClipParameterInfo& p : clip_parameters(method)) {
-        if (p.name == "clip" && p.boolean) settings.set("clip", 1.0);
-    }
-    return GamutClipper(method, gamut, settings);
+    return GamutClipper(method, gamut, display_clip_settings(method));
 }
 
 ColorSet spectrum_color_set() {

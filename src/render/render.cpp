@@ -442,9 +442,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     }
     // The displayed image must fit the display: aces-rgc with its final clip, as irid clip
     // does for images.
-    ClipSettings clip_settings;
-    if (method == ClipMethod::aces_rgc) clip_settings.set("clip", 1.0);
-    const GamutClipper clipper(method, Gamut(*space, 1.0), clip_settings);
+    const GamutClipper clipper(method, Gamut(*space, 1.0), display_clip_settings(method));
     arena.execute([&] { clip_batch(clipper, rgb, BatchOptions{threads}); });
     result.display = io::Image::blank(W, H, 3);
     result.display.color_space = space->name();

@@ -284,32 +284,114 @@ TEST(LutFile, WriteLutWritesTheTextAndNeverReplacesADirectory) {
 namespace irid {
 namespace {
 
-TEST(OcioConfig, LooksReturnToTheSourceSpace) {
-    // srgb-linear to the srgb display with clamp: the look's LUT is the clamp itself, back in
-    // srgb-linear (one space, so no matrix), on a log2 shaper over [0, 16].
+TEST(OcioConfig, TheLookRunsInTheDisplaysLinearSpaceOnNodesThatHoldTheCube) {
+    // acescg-linear to the srgb display with clamp: the look's LUT is the clamp itself on nodes
+    // in srgb-linear, 0 and 1 among them, the shaper linear between nodes.
     OcioConfigOptions o;
-    o.source = color_space("srgb-linear");
+    o.source = color_space("acescg-linear");
     o.display = color_space("srgb");
     o.methods = {ClipMethod::clamp};
-    o.size = 9;
+    o.size = 17;
     const OcioConfig c = make_ocio_config(o);
     ASSERT_EQ(c.luts.size(), 1u);
     EXPECT_EQ(c.luts[0].first, "luts/irid-clamp.clf");
     const Lut3D& lut = c.luts[0].second;
-    EXPECT_EQ(lut.domain.shaper, LutShaper::log2);
+    ASSERT_EQ(lut.domain.shaper, LutShaper::nodes);
+    EXPECT_EQ(lut.source, "srgb-linear");
     EXPECT_EQ(lut.destination, "srgb-linear");
-    for (int i = 0; i < 9; ++i) {
-        EXPECT_NEAR(lut.values[3 * static_cast<std::size_t>(i)], std::min(lut.node(i), 1.0), 1e-6) << i;
+    const std::vector<double>& x = lut.domain.nodes;
+    ASSERT_EQ(x.size(), 17u);
+    EXPECT_NE(std::find(x.begin(), x.end(), 0.0), x.end());
+    EXPECT_NE(std::find(x.begin(), x.end(), 1.0), x.end());
+    // The domain holds every source colour of [-1, 16]^3: the corners, in srgb-linear.
+    const Converter to_srgb(color_space("acescg-linear"), color_space("srgb-linear"));
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 v = to_srgb(Vec3{(k & 1) ? 16.0 : -1.0, (k & 2) ? 16.0 : -1.0, (k & 4) ? 16.0 : -1.0});
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_GE(v[i], lut.domain.min);
+            EXPECT_LE(v[i], lut.domain.max);
+        }
+    }
+    for (int i = 0; i < 17; ++i) {
+        EXPECT_NEAR(lut.values[3 * static_cast<std::size_t>(i)], std::clamp(lut.node(i), 0.0, 1.0), 1e-6) << i;
+    }
+    // Inside the cube the LUT is the identity, between nodes too.
+    for (const Vec3& in : {Vec3{0.3, 0.7, 0.01}, Vec3{1.0, 0.0, 0.5}, Vec3{0.999, 0.001, 0.123}}) {
+        const Rgb out = apply_lut(lut, in, LutInterpolation::tetrahedral);
+        EXPECT_NEAR(out.r, in[0], 1e-6);
+        EXPECT_NEAR(out.g, in[1], 1e-6);
+        EXPECT_NEAR(out.b, in[2], 1e-6);
     }
     EXPECT_NE(c.config.find("process_space: srgb-linear"), std::string::npos);
+    EXPECT_NE(c.config.find("scene_linear: acescg-linear"), std::string::npos);
     EXPECT_NE(c.config.find("ExponentWithLinearTransform> {gamma: [2.4, 2.4, 2.4, 1], offset: "
                             "[0.055, 0.055, 0.055, 0], direction: inverse}"),
               std::string::npos)
         << c.config;
-    o.display = o.source;
-    EXPECT_THROW((void)make_ocio_config(o), Error);
     o.display = color_space("lab");
     EXPECT_THROW((void)make_ocio_config(o), Error);
+    o.display = color_space("srgb");
+    o.methods = {ClipMethod::smits, ClipMethod::smits};
+    EXPECT_THROW((void)make_ocio_config(o), Error);
+    o.methods = {ClipMethod::clamp};
+    o.size = ocio_look_min_size - 1;
+    EXPECT_THROW((void)make_ocio_config(o), Error);
+}
+
+TEST(OcioConfig, LookNodesAreLaidOutForEverySizeAndPair) {
+    for (const char* source : {"acescg-linear", "acescg", "aces2065-1", "srgb", "srgb-linear", "display-p3"}) {
+        for (const char* display : {"srgb", "srgb-linear", "rec2020", "acescg"}) {
+            for (int size = ocio_look_min_size; size <= lut_max_size; size += 31) {
+                OcioConfigOptions o;
+                o.source = color_space(source);
+                o.display = color_space(display);
+                o.size = size;
+                const LutDomain d = ocio_look_domain(o);
+                EXPECT_NO_THROW(check_lut_domain(d, size)) << source << " " << display << " " << size;
+                EXPECT_NE(std::find(d.nodes.begin(), d.nodes.end(), 0.0), d.nodes.end());
+                EXPECT_NE(std::find(d.nodes.begin(), d.nodes.end(), 1.0), d.nodes.end());
+            }
+        }
+    }
+}
+
+TEST(LutShaper, NodesShaperIsPiecewiseLinearThroughTheNodes) {
+    LutDomain d;
+    d.shaper = LutShaper::nodes;
+    d.step = 1.0 / 64;
+    d.min = -2.0;
+    d.max = 8.0;
+    d.nodes = {-2.0, -0.5, 0.0, 0.25, 1.0, 3.0, 8.0};
+    ASSERT_NO_THROW(check_lut_domain(d, 7));
+    EXPECT_THROW(check_lut_domain(d, 8), Error);
+    for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+        EXPECT_DOUBLE_EQ(lut_shape(d, d.nodes[i]), static_cast<double>(i) / 6.0);
+        EXPECT_DOUBLE_EQ(lut_unshape(d, static_cast<double>(i) / 6.0), d.nodes[i]);
+    }
+    EXPECT_DOUBLE_EQ(lut_shape(d, 2.0), (4.0 + 0.5) / 6.0);  // halfway from 1 to 3
+    EXPECT_DOUBLE_EQ(lut_unshape(d, (4.0 + 0.5) / 6.0), 2.0);
+    LutDomain off = d;
+    off.nodes[3] = 0.26;  // not a whole step
+    EXPECT_THROW(check_lut_domain(off), Error);
+    off = d;
+    off.nodes[3] = 0.0;  // not increasing
+    EXPECT_THROW(check_lut_domain(off), Error);
+    // .cube and .spi3d cannot carry it; the .clf's LUT1D samples every step.
+    Lut3D lut;
+    lut.size = 7;
+    lut.domain = d;
+    lut.values.assign(3 * 7 * 7 * 7, 0.5f);
+    EXPECT_THROW((void)lut_text(lut, LutFormat::cube), Error);
+    EXPECT_THROW((void)lut_text(lut, LutFormat::spi3d), Error);
+    const std::string clf = lut_text(lut, LutFormat::clf);
+    EXPECT_NE(clf.find("<Array dim=\"641 1\">"), std::string::npos);
+}
+
+TEST(LutDomain, RangesFloat32ReadersCannotTellApartAreRefused) {
+    EXPECT_THROW(check_lut_domain(LutDomain{LutShaper::log2, 0.0, 1e-10, 14}), Error);
+    EXPECT_THROW(check_lut_domain(LutDomain{LutShaper::none, 0.0, 1e-7, 14}), Error);
+    EXPECT_THROW(check_lut_domain(LutDomain{LutShaper::none, 1e5, 1e5 + 0.01, 14}), Error);
+    EXPECT_NO_THROW(check_lut_domain(LutDomain{LutShaper::none, 0.0, 1e-5, 14}));
 }
 
 }  // namespace

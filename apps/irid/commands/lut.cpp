@@ -32,13 +32,6 @@ struct LutOptions : PipelineArgs {
     const CLI::Option* stops_option = nullptr;
 };
 
-std::optional<double> parse_number(std::string_view s) {
-    double v = 0.0;
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
-    return v;
-}
-
 LutDomain make_domain(const LutOptions& o) {
     LutDomain d;
     if (o.shaper == "log2") {
@@ -52,17 +45,7 @@ LutDomain make_domain(const LutOptions& o) {
     d.stops = o.stops;
     d.max = o.max;
     if (!o.domain.empty()) {
-        const std::size_t comma = o.domain.find(',');
-        const std::optional<double> lo =
-            comma == std::string::npos ? std::nullopt : parse_number(o.domain.substr(0, comma));
-        const std::optional<double> hi =
-            comma == std::string::npos ? std::nullopt : parse_number(o.domain.substr(comma + 1));
-        if (!lo || !hi) {
-            throw UsageError("--domain " + quote_untrusted(o.domain) +
-                             ": give the inputs covered as LO,HI (two numbers, e.g. 0,16)");
-        }
-        d.min = *lo;
-        d.max = *hi;
+        std::tie(d.min, d.max) = parse_number_pair("--domain", o.domain, "the inputs covered", "0,16");
     }
     try {
         check_lut_domain(d);

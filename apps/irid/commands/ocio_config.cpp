@@ -31,6 +31,7 @@ struct OcioConfigArgs {
     std::string to = "srgb";
     std::string methods;
     int size = 33;
+    std::string range;
     std::string adaptation = "bradford";
     int threads = 0;
 };
@@ -48,11 +49,9 @@ int run_ocio_config(const OcioConfigArgs& a) {
     OcioConfigOptions o;
     o.source = rgb_space_option("--from", a.from);
     o.display = rgb_space_option("--to", a.to);
-    if (color_space_name(o.source) == color_space_name(o.display)) {
-        throw UsageError("--from and --to are one space (" + a.from + "): nothing to clip");
-    }
     o.size = a.size;
     o.threads = a.threads;
+    if (!a.range.empty()) o.source_range = parse_number_pair("--range", a.range, "the source values covered", "-1,16");
     try {
         o.adaptation = parse_chromatic_adaptation(a.adaptation);
         std::size_t start = 0;
@@ -67,10 +66,20 @@ int run_ocio_config(const OcioConfigArgs& a) {
     if (std::filesystem::exists(a.out) && !std::filesystem::is_directory(a.out)) {
         throw UsageError("-o " + quote_untrusted(a.out, 200) + " exists and is not a folder");
     }
-    const OcioConfig config = make_ocio_config(o);
+    OcioConfig config;
+    try {
+        config = make_ocio_config(o);
+    } catch (const UnknownNameError&) {
+        throw;
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
     write_ocio_config(a.out, config);
-    fmt::print("{}/config.ocio: {} looks on the display '{} display' ({} LUTs in {}/luts)\n", a.out,
-               config.luts.size(), a.to, config.luts.size(), a.out);
+    // The folder as given, or quoted with escapes when it holds what a terminal would act on.
+    const std::string quoted = quote_untrusted(a.out, 1000);
+    const std::string shown = quoted == "'" + a.out + "'" ? a.out : quoted;
+    fmt::print("{}/config.ocio: {} looks on the display '{} display' ({} LUTs in {}/luts)\n", shown,
+               config.luts.size(), color_space_name(o.display), config.luts.size(), shown);
     return exit_success;
 }
 
@@ -88,10 +97,14 @@ void add_ocio_config_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--to", a->to, "The display's space, whose cube is the gamut")->capture_default_str();
     cmd->add_option("--methods", a->methods,
                     "The methods offered, comma-separated (default: all): " + clip_method_names());
-    cmd->add_option("--size", a->size, "The LUTs' nodes per axis (a log2 shaper over [0, 16] for a "
-                                       "linear source, [0, 1] otherwise)")
-        ->check(whole_number_in(lut_min_size, lut_max_size))
+    cmd->add_option("--size", a->size, "The LUTs' nodes per axis, in the display's linear space (0 and 1 "
+                                       "among them; the range a source colour in [0, 16]³, or [0, 1]³ "
+                                       "encoded, reaches there)")
+        ->check(whole_number_in(ocio_look_min_size, lut_max_size))
         ->capture_default_str();
+    cmd->add_option("--range", a->range,
+                    "The source values the looks cover, LO,HI (default -1,16 for a linear source, "
+                    "0,1 for an encoded one); beyond them inputs clamp");
     cmd->add_option("--adaptation", a->adaptation,
                     "Chromatic adaptation where whites differ: bradford, cat02, von-kries, none")
         ->capture_default_str();

@@ -14,6 +14,11 @@
 //   s(x) = (log2(x − min + e) − log2(e)) / (log2(max − min + e) − log2(e)), e = (max − min) ·
 //   2^−stops, which spends the nodes evenly over `stops` stops below max and still puts the first
 //   node at min. Linear and HDR sources need it: a uniform cube spends its nodes on highlights.
+// - nodes at given positions (.clf only: a Range node that clamps, then a LUT1D that carries each
+//   input to its place between the nodes, ahead of the cube): a rectilinear grid, the same on
+//   every axis. Between two nodes the shaper is linear, so a function that is affine on every
+//   cell (the identity on the nodes of a gamut's cube) is reproduced exactly. The LUT1D samples
+//   the shaper every `step`, on which every node lies.
 // Inputs beyond the domain clamp to it (every client does).
 //
 // The nodes are written in each format's order: .cube red fastest, .clf blue fastest (CLF 3,
@@ -38,7 +43,7 @@ enum class LutFormat { cube, clf, spi3d };
 [[nodiscard]] LutFormat lut_format_for(const std::filesystem::path& path);
 [[nodiscard]] std::string_view lut_format_name(LutFormat format) noexcept;
 
-enum class LutShaper { none, log2 };
+enum class LutShaper { none, log2, nodes };
 
 struct LutDomain {
     LutShaper shaper = LutShaper::none;
@@ -47,10 +52,16 @@ struct LutDomain {
     double max = 1.0;
     /// The log2 shaper's stops below max (1..40).
     int stops = 14;
+    /// LutShaper::nodes: the node positions, increasing, from min to max, one per node of the
+    /// LUT, each a whole multiple of `step` (2^-20 to 1; (max − min) / step at most 2^20).
+    std::vector<double> nodes{};
+    double step = 0.0;
 };
 
 /// Throws irid::Error unless the domain is valid.
 void check_lut_domain(const LutDomain& domain);
+/// The same, and for LutShaper::nodes one node per node of a LUT of `size`.
+void check_lut_domain(const LutDomain& domain, int size);
 /// The shaper s: [min, max] → [0, 1] (clamping) and its inverse ((x − min) / (max − min) for no
 /// shaper).
 [[nodiscard]] double lut_shape(const LutDomain& domain, double x) noexcept;
@@ -87,7 +98,7 @@ inline constexpr int lut_max_size = 129;
 [[nodiscard]] std::string_view irid_version() noexcept;
 
 /// Throws irid::Error when `format` cannot carry the domain (.spi3d: [0, 1] without a shaper;
-/// .cube: no shaper), saying which format can.
+/// .cube: no shaper; .clf: any), saying which format can.
 void check_lut_format(LutFormat format, const LutDomain& domain);
 
 /// The LUT as a file of `format`; throws irid::Error as check_lut_format.

@@ -3,15 +3,20 @@
 // A small OpenColorIO 2 config that offers irid's clip methods as looks, for a chosen source
 // and display space: what `irid ocio-config -o DIR` writes.
 //
-// DIR/config.ocio and, beside it, DIR/luts/irid-<method>.clf. The reference space is the source;
-// the display's colour space is defined from it by one matrix (irid's, with the chosen
+// DIR/config.ocio and, beside it, DIR/luts/irid-<method>.clf. The reference space (and the
+// scene_linear role) is the source's linear form; an encoded source is a colour space decoded
+// from it. The display's colour space is one matrix from the reference (irid's, with the chosen
 // adaptation) and the display's transfer function as an OCIO transform (sRGB:
 // ExponentWithLinear γ 2.4, offset 0.055; BT.709 and BT.2020: γ 1/0.45, offset 0.099 and
 // 0.0993 (OCIO puts the break where the two pieces meet smoothly, within 3e-4 of the
-// standards' 0.018 / 4.5); a pure power: Exponent). Each look runs in the source space: its
-// LUT takes a source colour to the method's result in the display's gamut, expressed again in
-// the source space, so that the display's view only has to encode it. One view per method and
-// an "unclipped" view (what the display does without a look) are offered on one display.
+// standards' 0.018 / 4.5); a pure power: Exponent).
+//
+// Each look runs in the display's linear space, where the gamut is the cube [0, 1]³: its LUT
+// takes a colour to the method's result. The LUT's nodes (ocio_look_domain) include 0 and 1 on
+// every axis and its shaper is linear between nodes, so a colour inside the gamut interpolates
+// between nodes inside the gamut only: a method that leaves such colours alone (every hard one)
+// leaves them alone through the LUT too, to float rounding. One view per method and an
+// "unclipped" view (what the display does without a look) are offered on one display.
 
 #include <irid/color/adaptation.h>
 #include <irid/color/convert.h>
@@ -26,21 +31,39 @@
 namespace irid {
 
 struct OcioConfigOptions {
-    /// The scene's space (the config's reference): an RGB space, linear or encoded.
+    /// The scene's space: an RGB space, linear or encoded; its linear form is the reference.
     ColorSpace source = color_space("acescg-linear");
     /// The display: an encoded or linear RGB space whose cube is the gamut.
     ColorSpace display = color_space("srgb");
     /// The methods offered, in order (default: every method).
     std::vector<ClipMethod> methods;
-    /// The LUTs' size and domain (default: log2 over [0, 16], 14 stops, for a linear source;
-    /// uniform over [0, 1] for an encoded one: ocio_config_default_domain).
+    /// The LUTs' nodes per axis (at least ocio_look_min_size).
     int size = 33;
-    std::optional<LutDomain> domain;
+    /// The source values the looks cover on each channel: every source colour in [min, max]³
+    /// lies inside the LUTs' domain (beyond it, inputs clamp). Default: [-1, 16] for a linear
+    /// source (scene-linear: 4 stops above diffuse white, and the negatives of colours beyond
+    /// the source's own gamut), [0, 1] for an encoded one (its code values).
+    std::optional<std::pair<double, double>> source_range;
     ChromaticAdaptation adaptation = ChromaticAdaptation::bradford;
     int threads = 0;
 };
 
-[[nodiscard]] LutDomain ocio_config_default_domain(const ColorSpace& source) noexcept;
+/// The smallest LUT size ocio_look_domain lays out (a node below 0, at 0, at 1, above 1).
+inline constexpr int ocio_look_min_size = 5;
+
+/// The source range of the options, or its default (OcioConfigOptions::source_range).
+[[nodiscard]] std::pair<double, double> ocio_source_range(const OcioConfigOptions& options);
+
+/// The nodes of the looks' LUTs, in the display's linear space, the same on every axis: from the
+/// lowest to the highest value a source colour of the source range takes there (0 and 1 at
+/// least), with nodes at 0 and 1. The size − 1 cells are shared by [0, 1] (at least 3/8 of
+/// them, spaced as 0.5 − 0.5 cos: denser near 0 and 1, where soft methods bend), the range
+/// below 0 (spaced evenly in log2(1 + |x| / w), w the first cell of [0, 1]) and above 1 (evenly
+/// in log2 x), in proportion to 1, log2(1 + |min|) and log2(max). Nodes lie on whole steps of a
+/// power of two small enough to keep them apart. Throws irid::Error for a size below
+/// ocio_look_min_size or above lut_max_size, or a source range that is not finite with
+/// -1e5 <= min < max <= 1e5 and max > 0.
+[[nodiscard]] LutDomain ocio_look_domain(const OcioConfigOptions& options);
 
 struct OcioConfig {
     /// The text of config.ocio.

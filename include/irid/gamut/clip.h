@@ -158,6 +158,13 @@ struct ClipSettings {
     ClipSettings& set(std::string_view name_equals_value);
 };
 
+/// The settings of a method whose result goes to a display or an integer file, which hold the
+/// cube and nothing beyond it: `given`, with aces-rgc's clip=true unless `given` sets clip
+/// (ACES 1.3's compression alone leaves colours past the cube's faces). The one place this
+/// policy lives: images (irid clip IN OUT, Python's clip_image), the renderer, the figures and
+/// the clip report, and the looks of an OCIO config.
+[[nodiscard]] ClipSettings display_clip_settings(ClipMethod method, ClipSettings given = {});
+
 /// A display gamut: linear RGB of a space in [0, max]³.
 class Gamut {
 public:
