@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import functools
 import numbers
+import warnings
 import os
 
 import numpy as np
@@ -213,7 +214,8 @@ def convert(a, source, target, white="D65", adaptation="bradford", out=None):
 
 
 def delta_e(a, b, metric="ciede2000"):
-    """Colour differences of pairs: ``a`` and ``b`` broadcast against each other, shape (..., 3).
+    """Colour differences of pairs: ``a`` and ``b`` broadcast against each other, shape (..., 3)
+    (each a triple or an array of triples; a scalar raises ValueError).
 
     metric: "ciede2000" (CIE 142:2001) or "cie76" on CIELAB, "cieuv" (ΔE*uv) on CIELUV,
         "oklab" (ΔEOK) on Oklab.
@@ -226,6 +228,10 @@ def delta_e(a, b, metric="ciede2000"):
                              f"and would drop the mask: pass {name}.filled(value) or {name}.data")
     a = np.asarray(a, dtype=np.float64)
     b = np.asarray(b, dtype=np.float64)
+    for name, v in (("a", a), ("b", b)):
+        # A colour is a triple: a scalar broadcast into (v, v, v) would be a guess.
+        if v.ndim == 0 or v.shape[-1] != 3:
+            raise ValueError(f"{name}: shape {v.shape}; colours are (..., 3) triples")
     try:
         a, b = np.broadcast_arrays(a, b)
     except ValueError:
@@ -313,6 +319,22 @@ def _pipeline(method, source, target, peak, white, adaptation, params, inverse, 
                               list(params), inverse, display)
 
 
+def _method_parameters(method, params):
+    """The keyword arguments of a call as the method's parameters ("-" for "_"). A name the
+    method does not take (a mistyped keyword, whatever its value) is an unknown name: KeyError
+    naming it and what the method takes, before its value is looked at."""
+    known = {p["name"] for p in _irid.clip_parameters(method)}
+    values = {}
+    for key, value in params.items():
+        name = key.replace("_", "-")
+        if name not in known:
+            takes = ", ".join(sorted(n.replace("-", "_") for n in known)) or "none"
+            raise KeyError(f"{key!r} is neither an argument nor a parameter of the method "
+                           f"{method} (its parameters: {takes})")
+        values[name] = _parameter_value(key, value)
+    return values
+
+
 def _parameter_value(name, value):
     if isinstance(value, (bool, np.bool_)):
         return 1.0 if value else 0.0
@@ -397,7 +419,7 @@ def _clip_pipeline(method, source, target, max, white, adaptation, inverse, para
     _name(target, "target")
     if not isinstance(max, numbers.Real) or isinstance(max, bool):
         raise ValueError(f"max: {max!r} is not a number")
-    values = {k.replace("_", "-"): _parameter_value(k, v) for k, v in params.items()}
+    values = _method_parameters(method, params)
     # image: a file holds what a display shows (display_clip_settings in irid/gamut/clip.h).
     return _pipeline(method, source, target, float(max), _white(white),
                      _name(adaptation, "adaptation"), tuple(sorted(values.items())),
@@ -490,7 +512,10 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
         returned as it was.
     source: the colour's space; default "srgb-linear", or "xyz" for X, Y, Z channels (which
         allow no other). Or the metadata :func:`read_image` returned: the space the file says it
-        holds (:func:`image_space`), as ``irid clip IN OUT`` takes it without ``--from``.
+        holds (:func:`image_space`), as ``irid clip IN OUT`` takes it without ``--from``; a
+        damaged or unusable profile, or CMYK samples without one, raise ValueError. What
+        ``irid clip`` notes on stderr (an untagged integer file taken as sRGB, encoded values
+        taken as linear light) is a UserWarning here.
     premultiplied: the colour is premultiplied by A (an EXR's, the OpenEXR convention): it is
         clipped unpremultiplied (a pixel of alpha 0 keeps its values).
     premultiplied_out: premultiply the result by A again (default: as ``premultiplied``; False
@@ -501,28 +526,26 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
     """
     names = [_text(c, "channels") for c in channels]
     xyz_channels = _irid.image_colour_channels(names)[3]
-    file_space = None
+    # Where the colours come from is the library's decision (irid/exchange/image_source.h), as
+    # for irid clip IN OUT; what irid clip notes on stderr is a warning here.
     if isinstance(source, dict):
-        if xyz_channels:
-            raise ValueError("channels X, Y, Z hold CIE XYZ; a file's RGB space does not apply")
-        file_space = _file_space(source)
-        target = "srgb-linear" if target is None else target
-        _name(target, "target")
-        values = {k.replace("_", "-"): _parameter_value(k, v) for k, v in params.items()}
-        if not isinstance(max, numbers.Real) or isinstance(max, bool):
-            raise ValueError(f"max: {max!r} is not a number")
-        wx, wy = _white(white)
-        p = _irid.ClipPipeline(_name(method, "method"), file_space, target, float(max), wx, wy,
-                               _name(adaptation, "adaptation"), sorted(values.items()),
-                               _flag(inverse, "inverse"), True)
-    elif source is None:
-        source = "xyz" if xyz_channels else "srgb-linear"
-    elif xyz_channels and source != "xyz":
-        raise ValueError(f"channels X, Y, Z hold CIE XYZ but source is {source!r}; give "
-                         f"source='xyz' or leave it out")
-    if file_space is None:
-        p = _clip_pipeline(method, source, target, max, white, adaptation, inverse, params,
-                           image=True)
+        decided = _irid.ImageSource(_file_facts(source), xyz_channels, None)
+        given = None
+    else:
+        given = None if source is None else _name(source, "source")
+        decided = _irid.ImageSource({}, xyz_channels, given)
+    for note in decided.notes:
+        warnings.warn(note, stacklevel=2)
+    if target is None:
+        target = given if given in _RGB_SPACES else "srgb-linear"
+    _name(target, "target")
+    if not isinstance(max, numbers.Real) or isinstance(max, bool):
+        raise ValueError(f"max: {max!r} is not a number")
+    wx, wy = _white(white)
+    p = _irid.ClipPipeline(_name(method, "method"), decided, target, float(max), wx, wy,
+                           _name(adaptation, "adaptation"),
+                           sorted(_method_parameters(method, params).items()),
+                           _flag(inverse, "inverse"), True)
     if isinstance(pixels, np.ma.MaskedArray):
         raise ValueError("pixels: a masked array (numpy.ma); irid has no masked operations and "
                          "would drop the mask: pass pixels.filled(value) or pixels.data")
@@ -532,11 +555,12 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
     pre_in = _flag(premultiplied, "premultiplied")
     pre_out = pre_in if premultiplied_out is None else _flag(premultiplied_out, "premultiplied_out")
     names = _irid.clip_image(out, names, p, pre_in, pre_out, _flag(encode, "encode"),
-                             _whole(threads, "threads", 0, 1 << 20), file_space)
+                             _whole(threads, "threads", 0, 1 << 20), decided)
     return out, names
 
 
-def _file_space(metadata):
+def _file_facts(metadata):
+    """read_image's metadata, its types checked, for the library's decisions."""
     try:
         icc = metadata.get("icc_profile")
         chroma = metadata.get("chromaticities")
@@ -546,13 +570,20 @@ def _file_space(metadata):
                          "'icc_profile' and 'chromaticities')") from None
     if icc is not None and not isinstance(icc, (bytes, bytearray)):
         raise ValueError("source: 'icc_profile' must be bytes or None")
-    return _irid.FileSpace(None if icc is None else bytes(icc),
-                           None if chroma is None else _floats(chroma, "source: 'chromaticities'"),
-                           _flag(integer, "source: 'integer'"),
-                           _flag(metadata.get("icc_profile_rejected", False),
-                                 "source: 'icc_profile_rejected'"),
-                           _text(metadata.get("icc_profile_damage") or "",
-                                 "source: 'icc_profile_damage'"))
+    bits = metadata.get("bits", 32)
+    if isinstance(bits, bool) or not isinstance(bits, numbers.Integral) or not 1 <= bits <= 64:
+        raise ValueError(f"source: 'bits' {bits!r} is not a whole number of bits")
+    return {
+        "icc_profile": None if icc is None else bytes(icc),
+        "chromaticities": None if chroma is None else _floats(chroma, "source: 'chromaticities'"),
+        "integer": _flag(integer, "source: 'integer'"),
+        "bits": int(bits),
+        "icc_profile_rejected": _flag(metadata.get("icc_profile_rejected", False),
+                                      "source: 'icc_profile_rejected'"),
+        "icc_profile_damage": _text(metadata.get("icc_profile_damage") or "",
+                                    "source: 'icc_profile_damage'"),
+        "cmyk": _flag(metadata.get("cmyk", False), "source: 'cmyk'"),
+    }
 
 
 def _floats(values, what):
@@ -574,7 +605,7 @@ def image_space(metadata):
     "exact" (matrix/TRC or chromaticities, not through Little CMS). Raises ValueError for a
     profile irid cannot use (corrupt, CMYK, a device link, ...).
     """
-    f = _file_space(metadata)
+    f = _irid.FileSpace(_file_facts(metadata))
     return {"space": f.space, "origin": f.origin, "assumed": f.assumed, "encoded": f.encoded,
             "exact": f.exact}
 
@@ -622,14 +653,21 @@ def write_image(path, array, channels=None, color_space="", description="", bits
     .png, .tif/.tiff: ``bits`` 8 or 16, encoded values in [0, 1]; .jpg/.jpeg: 8 bits, 1 or 3
     channels, quality 95 unless ``compression="jpeg:Q"``).
 
-    array: (height, width) or (height, width, channels), any real dtype (written from float32).
+    array: (height, width) or (height, width, channels). Floats are values (encoded in [0, 1] for
+        PNG, TIFF and JPEG; linear for EXR), written from float32. Integers are code values:
+        uint8 is divided by 255 and uint16 by 65535 (so 128 is 128/255, not white), for PNG,
+        TIFF and JPEG only; other integer and bool dtypes raise ValueError, as does an integer
+        array for EXR (code values are encoded: decode them to linear floats first).
     channels: names, default Y / Y,A / R,G,B / R,G,B,A by count.
-    color_space, description: stored as attributes (irid:ColorSpace, ImageDescription). When
-        color_space names one of irid's RGB spaces and ``tag`` is true, the file also says so to
-        other programs: PNG and TIFF get the space's ICC profile (:func:`icc_profile`), EXR its
-        chromaticities (and adoptedNeutral when the white is not D65).
+    color_space, description: stored as attributes (irid:ColorSpace, ImageDescription).
+        color_space is "" or one of irid's space names (:func:`color_spaces`; another raises
+        KeyError). When ``tag`` is true the file also says so to other programs, which needs an
+        RGB space (ValueError otherwise): PNG and TIFF get the space's ICC profile
+        (:func:`icc_profile`), EXR its chromaticities (and adoptedNeutral when the white is not
+        D65). With ``tag=False`` the name alone is written.
     icc_profile: bytes of a profile to embed instead (PNG, TIFF; checked as a file's would be).
     chromaticities: 8 values (red, green, blue, white x, y) to write instead (EXR).
+        Either must describe the space color_space names, when both are given (ValueError).
     compression: OpenImageIO's name for the format, or "" for its default. EXR: none, rle, zip,
         zips, piz, pxr24, b44, b44a, dwaa, dwab (zip, zips, dwaa and dwab take a level, "dwaa:45");
         TIFF: none, lzw, zip, packbits, jpeg (lossy); PNG: default, filtered, huffman, rle, fixed
@@ -640,6 +678,7 @@ def write_image(path, array, channels=None, color_space="", description="", bits
     """
     if isinstance(bits, bool) or bits not in (8, 16):
         raise ValueError(f"bits: {bits!r}; valid values are 8 and 16")
+    array = _code_values_scaled(array, _path(path))
     names = [_text(c, "channels") for c in (channels or [])]
     _check_compression(_text(compression, "compression"), _path(path))
     if icc_profile is not None and not isinstance(icc_profile, (bytes, bytearray)):
@@ -650,6 +689,25 @@ def write_image(path, array, channels=None, color_space="", description="", bits
                              _text(description, "description"), int(bits),
                              _text(compression, "compression"), _flag(tag, "tag"),
                              None if icc_profile is None else bytes(icc_profile), chromaticities)
+
+
+def _code_values_scaled(array, path):
+    """uint8 and uint16 arrays as the values their codes stand for; other integers refused."""
+    if isinstance(array, np.ma.MaskedArray):
+        raise ValueError("array: a masked array (numpy.ma); irid would drop the mask: pass "
+                         "array.filled(value) or array.data")
+    a = np.asarray(array)
+    if a.dtype.kind not in "uib":
+        return array
+    top = {np.dtype(np.uint8): 255.0, np.dtype(np.uint16): 65535.0}.get(a.dtype)
+    if top is None:
+        raise ValueError(f"array: dtype {a.dtype}; integer arrays are code values, given as uint8 "
+                         f"(0-255) or uint16 (0-65535), or pass floats (encoded values in [0, 1])")
+    if os.path.splitext(path)[1].lower() == ".exr":
+        raise ValueError(f"array: dtype {a.dtype} holds encoded code values, and EXR holds linear "
+                         f"floats: decode them first, e.g. irid.convert(a / {top:g}, 'srgb', "
+                         f"'srgb-linear')")
+    return a.astype(np.float32) / np.float32(top)
 
 
 # The compressions OpenImageIO 2.4 writes per format (its OpenEXR, TIFF and PNG plugins), and

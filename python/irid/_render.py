@@ -79,6 +79,9 @@ def render(scene, width=None, height=None, spp=None, seed=None, set=None, clip=N
     Raises ValueError for a bad scene or value (the message names the key path and what is
     allowed), KeyError for an unknown built-in name, OSError for an unreadable scene file.
     """
+    if set is not None and not isinstance(set, dict):
+        raise ValueError(f"set: {type(set).__name__}; give a dict of key paths to values, such as "
+                         f"{{'oil.k1': 2}}")
     overrides = []
     for key, value in (set or {}).items():
         if not isinstance(key, str) or not key or "=" in key or "\0" in key:
@@ -86,7 +89,10 @@ def render(scene, width=None, height=None, spp=None, seed=None, set=None, clip=N
         overrides.append(f"{key}={_json_value(key, value)}")
     w, h = _size(width, "width"), _size(height, "height")
     if spp is not None:
-        overrides.append(f"image.spp={_json_value('spp', _size(spp, 'spp'))}")
+        # Its range is the scene reader's (render::max_spp), which names it.
+        if isinstance(spp, bool) or not isinstance(spp, numbers.Integral):
+            raise ValueError(f"spp: {spp!r} is not a whole number")
+        overrides.append(f"image.spp={int(spp)}")
     if seed is not None:
         if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or seed < 0:
             raise ValueError(f"seed: {seed!r} is not a whole number >= 0")

@@ -10,6 +10,7 @@
 #include <irid/gamut/pipeline.h>
 #include <irid/gamut/report.h>
 #include <irid/exchange/icc.h>
+#include <irid/exchange/image_source.h>
 #include <irid/exchange/image_clip.h>
 #include <irid/figures/clip_sets.h>
 #include <irid/io/image.h>
@@ -26,6 +27,25 @@
 namespace irid::python {
 namespace {
 
+
+/// What read_image's metadata dict says about a file's space, as the io::Image the library's
+/// decisions read (the keys irid.read_image returns; absent ones are as for a float file that
+/// says nothing). Python's irid/__init__.py checks the values' types first.
+io::Image image_facts(const py::dict& m) {
+    io::Image image;
+    const auto get = [&m](const char* key) { return m.contains(key) ? py::object(m[key]) : py::object(py::none()); };
+    if (const py::object icc = get("icc_profile"); !icc.is_none()) {
+        const std::string bytes = icc.cast<py::bytes>();
+        image.icc_profile.assign(bytes.begin(), bytes.end());
+    }
+    if (const py::object c = get("chromaticities"); !c.is_none()) image.chromaticities = c.cast<std::vector<float>>();
+    if (const py::object v = get("integer"); !v.is_none()) image.stored_integer = v.cast<bool>();
+    if (const py::object v = get("bits"); !v.is_none()) image.stored_bits = v.cast<int>();
+    if (const py::object v = get("icc_profile_rejected"); !v.is_none()) image.icc_profile_rejected = v.cast<bool>();
+    if (const py::object v = get("icc_profile_damage"); !v.is_none()) image.icc_profile_damage = v.cast<std::string>();
+    if (const py::object v = get("cmyk"); !v.is_none()) image.stored_cmyk = v.cast<bool>();
+    return image;
+}
 
 /// The pipeline of ClipPipeline's Python constructors (the arguments as irid._pipeline passes them).
 ClipPipeline make_pipeline(const std::string& method, const ColorSpace& from, const std::string& target,
@@ -146,23 +166,10 @@ void add_gamut(py::module_& m) {
         return py::make_tuple(c.index[0], c.index[1], c.index[2], c.xyz);
     });
 
-    // What an image file says about its space (irid/exchange/icc.h), kept at a fixed address so
-    // that the pipelines built on it can point at its RgbSpace.
+    // What an image file says about its space (irid/exchange/icc.h), from read_image's metadata.
     py::class_<ImageSpace, std::shared_ptr<ImageSpace>>(m, "FileSpace")
-        .def(py::init([](const std::optional<py::bytes>& icc, const std::optional<std::vector<float>>& chromaticities,
-                         bool integer, bool rejected, const std::string& damage) {
-                 io::Image image;
-                 if (icc) {
-                     const std::string bytes = *icc;
-                     image.icc_profile.assign(bytes.begin(), bytes.end());
-                 }
-                 if (chromaticities) image.chromaticities = *chromaticities;
-                 image.stored_integer = integer;
-                 image.icc_profile_rejected = rejected;
-                 image.icc_profile_damage = damage;
-                 return std::make_shared<ImageSpace>(image_space(image, "image"));
-             }),
-             py::arg("icc_profile"), py::arg("chromaticities"), py::arg("integer"), py::arg("rejected"), py::arg("damage"))
+        .def(py::init([](const py::dict& facts) { return std::make_shared<ImageSpace>(image_space(image_facts(facts), "image")); }),
+             py::arg("facts"))
         .def_property_readonly("space", [](const ImageSpace& f) {
             if (f.builtin == nullptr) return py::object(py::none());
             return py::object(py::str(color_space_name(ColorSpace{f.colour_space().family, f.builtin})));
@@ -171,6 +178,19 @@ void add_gamut(py::module_& m) {
         .def_property_readonly("assumed", [](const ImageSpace& f) { return f.assumed; })
         .def_property_readonly("encoded", [](const ImageSpace& f) { return f.encoded; })
         .def_property_readonly("exact", [](const ImageSpace& f) { return !f.profile; });
+
+    // Where an image's colours come from (irid/exchange/image_source.h), kept at a fixed address
+    // so that the pipelines built on it can point at its RgbSpace.
+    py::class_<ImageSource, std::shared_ptr<ImageSource>>(m, "ImageSource")
+        .def(py::init([](const py::dict& facts, bool xyz_channels, const std::optional<std::string>& given) {
+                 std::optional<ColorSpace> space;
+                 if (given) space = color_space(*given);
+                 return std::make_shared<ImageSource>(
+                     decide_image_source(image_facts(facts), xyz_channels, space, "image", "source="));
+             }),
+             py::arg("facts"), py::arg("xyz_channels"), py::arg("given"))
+        .def_property_readonly("notes", [](const ImageSource& s) { return s.notes; })
+        .def_property_readonly("described", [](const ImageSource& s) { return s.described; });
 
     py::class_<ClipPipeline>(m, "ClipPipeline")
         .def(py::init([](const std::string& method, const std::string& source,
@@ -183,14 +203,14 @@ void add_gamut(py::module_& m) {
              py::arg("method"), py::arg("source"), py::arg("target"), py::arg("max"), py::arg("wx"),
              py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"),
              py::arg("display") = false)
-        .def(py::init([](const std::string& method, const ImageSpace& source, const std::string& target,
+        .def(py::init([](const std::string& method, const ImageSource& source, const std::string& target,
                          double max, double wx, double wy, const std::string& adaptation,
                          const std::vector<std::pair<std::string, double>>& params, bool inverse,
                          bool display) {
-                 return make_pipeline(method, source.colour_space(), target, max, wx, wy, adaptation, params,
+                 return make_pipeline(method, source.space, target, max, wx, wy, adaptation, params,
                                       inverse, display);
              }),
-             py::keep_alive<1, 3>(),  // the pipeline points at the file space's RgbSpace
+             py::keep_alive<1, 3>(),  // the pipeline points at the source's RgbSpace
              py::arg("method"), py::arg("source"), py::arg("target"), py::arg("max"), py::arg("wx"),
              py::arg("wy"), py::arg("adaptation"), py::arg("params"), py::arg("inverse"),
              py::arg("display") = false)
@@ -259,7 +279,7 @@ void add_gamut(py::module_& m) {
     m.def(
         "clip_image",
         [](py::array_t<float> pixels, std::vector<std::string> channels, const ClipPipeline& p,
-           bool premultiplied_in, bool premultiplied_out, bool encode, int threads, const ImageSpace* file) {
+           bool premultiplied_in, bool premultiplied_out, bool encode, int threads, const ImageSource* source) {
             if (pixels.ndim() != 3 || !(pixels.flags() & py::array::c_style) || !pixels.writeable()) {
                 throw py::value_error("pixels: a writeable C-contiguous float32 (height, width, channels) array is needed");
             }
@@ -282,7 +302,8 @@ void add_gamut(py::module_& m) {
                                             .premultiplied_out = premultiplied_out,
                                             .encode = encode,
                                             .threads = threads,
-                                            .profile = file != nullptr ? file->profile.get() : nullptr},
+                                            .profile = source != nullptr && source->file ? source->file->profile.get()
+                                                                                         : nullptr},
                            "image");
                 std::memcpy(data, image.pixels.data(), image.pixels.size() * sizeof(float));
             }

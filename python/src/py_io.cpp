@@ -59,6 +59,7 @@ void add_io(py::module_& m) {
                                       : py::object(py::bytes(reinterpret_cast<const char*>(image.icc_profile.data()),
                                                              image.icc_profile.size()));
             meta["icc_profile_rejected"] = image.icc_profile_rejected;
+            meta["cmyk"] = image.stored_cmyk;
             meta["icc_profile_damage"] = image.icc_profile_damage.empty() ? py::object(py::none())
                                                                           : py::object(py::str(image.icc_profile_damage));
             meta["chromaticities"] = image.chromaticities.empty() ? py::object(py::none())
@@ -119,10 +120,16 @@ void add_io(py::module_& m) {
             } catch (const Error& e) {
                 throw FileError(e.what());
             }
-            if (tag) {
-                if (const std::optional<ColorSpace> s = find_color_space(color_space); s && s->is_rgb()) {
-                    tag_image(image, as_named(*s), format);
+            // color_space names one of irid's spaces (UnknownNameError: KeyError). With tag, the
+            // file also says so to other programs, which only an RGB space can.
+            std::optional<ColorSpace> named;
+            if (!color_space.empty()) named = irid::color_space(color_space);
+            if (tag && named) {
+                if (!named->is_rgb()) {
+                    throw py::value_error("color_space '" + color_space + "' is not an RGB space: no ICC profile or "
+                                          "chromaticities describe it; give tag=False to write its name alone");
                 }
+                tag_image(image, as_named(*named), format);
             }
             image.color_space = color_space;
             if (icc_profile) {
@@ -140,6 +147,9 @@ void add_io(py::module_& m) {
                 (void)rgb_space_from_chromaticities(*chromaticities, "chromaticities", "chromaticities");
                 image.chromaticities = *chromaticities;
                 image.adopted_neutral.clear();
+            }
+            if (named && named->is_rgb() && (icc_profile || chromaticities)) {
+                check_tags_agree(image, as_named(*named), color_space);
             }
             image.description = description;
             image.pixels.assign(a.data(), a.data() + a.size());

@@ -473,6 +473,20 @@ RgbSpace rgb_space_from_chromaticities(std::span<const float> c, const std::stri
     for (const float v : c) {
         if (!std::isfinite(v)) throw Error(what + ": chromaticities: a value is not finite");
     }
+    // Primaries of real encodings lie within [-1, 2] (the widest camera gamuts reach y = 1.32
+    // and -0.12, DaVinci Wide Gamut); a white is a real colour, inside the triangle x, y > 0,
+    // x + y < 1.
+    static constexpr const char* names[] = {"red", "green", "blue"};
+    for (std::size_t i = 0; i < 6; ++i) {
+        if (c[i] < -1.0f || c[i] > 2.0f) {
+            throw Error(what + ": chromaticities: " + names[i / 2] + " " + (i % 2 == 0 ? "x" : "y") + " = " +
+                        fmt::format("{}", c[i]) + "; primaries lie within [-1, 2]");
+        }
+    }
+    if (!(c[6] > 0.0f && c[7] > 0.0f && c[6] + c[7] < 1.0f)) {
+        throw Error(what + ": chromaticities: white (" + fmt::format("{}, {}", c[6], c[7]) +
+                    ") is not a real colour (x > 0, y > 0, x + y < 1)");
+    }
     const auto at = [&](std::size_t i) { return Xy{double{c[i]}, double{c[i + 1]}}; };
     try {
         return RgbSpace(name, {at(0), at(2), at(4)}, at(6), TransferFunction(TransferFunction::Kind::linear));
@@ -504,6 +518,37 @@ const RgbSpace* matching_builtin_space(const RgbSpace& space, double tolerance, 
     return nullptr;
 }
 
+void check_tags_agree(const io::Image& image, const RgbSpace& space, const std::string& name) {
+    const auto near = [](const Xy& a, const Xy& b) {
+        return std::abs(a.x - b.x) <= 2e-4 && std::abs(a.y - b.y) <= 2e-4;
+    };
+    const auto same_chromaticities = [&](const RgbSpace& other) {
+        const RgbPrimaries& p = other.primaries();
+        const RgbPrimaries& q = space.primaries();
+        return near(p.red, q.red) && near(p.green, q.green) && near(p.blue, q.blue) &&
+               near(other.white(), space.white());
+    };
+    if (!image.icc_profile.empty()) {
+        const IccProfile profile = IccProfile::parse(image.icc_profile, "icc_profile");
+        if (!profile.rgb_space()) {
+            throw Error("icc_profile is " + profile.summary() + ", which cannot be compared with color_space '" +
+                        name + "'; give one of them");
+        }
+        const RgbSpace& other = *profile.rgb_space();
+        if (!same_chromaticities(other) || other.transfer().max_difference(space.transfer()) > 2e-4) {
+            throw Error("icc_profile is " + profile.summary() + ", and color_space says '" + name +
+                        "': they contradict each other; give one of them");
+        }
+    }
+    if (!image.chromaticities.empty()) {
+        const RgbSpace other = rgb_space_from_chromaticities(image.chromaticities, "chromaticities", "chromaticities");
+        if (!same_chromaticities(other)) {
+            throw Error("chromaticities describe other primaries or another white than color_space '" + name +
+                        "': they contradict each other; give one of them");
+        }
+    }
+}
+
 ImageSpace image_space(const io::Image& image, const std::string& what) {
     ImageSpace s;
     if (image.icc_profile_rejected) {
@@ -522,6 +567,11 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
             s.profile = std::move(profile);
         }
         return s;
+    }
+    if (image.stored_cmyk) {
+        throw Error(what + ": holds CMYK samples without an ICC profile; OpenImageIO converted them to "
+                           "RGB without one (R = (1 - C)(1 - K), ...), which is no colour space: convert "
+                           "the file to RGB with its press profile, or name a space to take that RGB as");
     }
     if (!image.chromaticities.empty()) {
         const RgbSpace exr = rgb_space_from_chromaticities(image.chromaticities, "exr-chromaticities", what);

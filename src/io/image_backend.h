@@ -16,7 +16,7 @@
 namespace irid::io {
 
 /// Bumped whenever ImageBackend, Image or ImageEncoding change layout.
-inline constexpr int image_backend_abi_version = 3;
+inline constexpr int image_backend_abi_version = 4;
 
 struct ImageBackend {
     int abi_version;

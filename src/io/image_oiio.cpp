@@ -174,6 +174,8 @@ Image oiio_read(const fs::path& path, const ImageLimits& limits) {
     image.chromaticities = floats("chromaticities");
     image.adopted_neutral = floats("adoptedNeutral");
     image.stored_integer = !spec.format.is_floating_point();
+    image.stored_cmyk = spec.get_string_attribute("jpeg:ColorSpace") == "CMYK" ||
+                        spec.get_string_attribute("tiff:ColorSpace") == "CMYK";
     image.stored_bits =
         spec.get_int_attribute("oiio:BitsPerSample", static_cast<int>(spec.format.size() * 8));
 

@@ -110,6 +110,10 @@ expect_stderr_has "min < max"
 run '' lut --method smits --domain 0 -o "$TMP/x.clf"
 expect_status 2
 expect_stderr_has "LO,HI"
+# A range float32 readers cannot tell apart (OpenColorIO: "maxInValue is too close to minInValue").
+run '' lut --method smits --shaper log2 --domain 0,1e-10 -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "max - min must be at least"
 run '' lut --method smits --stops 8 -o "$TMP/x.clf"
 expect_status 2
 expect_stderr_has "--shaper log2"
@@ -147,14 +151,27 @@ expect_stderr_has "valid RGB spaces"
 run '' ocio-config --methods smits,nope -o "$TMP/cfg2"
 expect_status 2
 expect_stderr_has "nope"
-run '' ocio-config --from srgb --to srgb -o "$TMP/cfg2"
+run '' ocio-config --methods smits,smits -o "$TMP/cfg2"
 expect_status 2
-expect_stderr_has "one space"
+expect_stderr_has "named twice"
+run '' ocio-config --range 4,1 -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "source range"
+run '' ocio-config --range x -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "LO,HI"
+run '' ocio-config --size 4 -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "--size"
 printf x >"$TMP/plain"
 run '' ocio-config -o "$TMP/plain"
 expect_status 2
 expect_stderr_has "not a folder"
 [[ ! -e $TMP/cfg2 ]] && pass || fail "no folder after a refusal" "$(ls "$TMP")"
+# One space as source and display: scene-linear negatives and values above 1 still need the clip.
+run '' ocio-config --from srgb-linear --to srgb-linear --methods clamp --size 5 -o "$TMP/same"
+expect_status 0
+expect_stdout_has "1 looks"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

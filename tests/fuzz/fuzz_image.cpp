@@ -1,7 +1,7 @@
 // Fuzz harness: images through irid_io (irid::io::read_image, include/irid/io/image.h, which
 // loads the OpenImageIO module libirid_oiio.so), then what `irid clip IN OUT` does with what
-// OpenImageIO returns (apps/irid/commands/clip.cpp, re-created here from the same library calls
-// until that pipeline moves into the library): the colour channels (R, G, B by name, else X, Y,
+// OpenImageIO returns (apps/irid/commands/clip.cpp: decide_image_source, then the steps of
+// clip_image re-created here from the same library calls): the colour channels (R, G, B by name, else X, Y,
 // Z), alpha (EXR colour is taken as
 // premultiplied), the decoding of an encoded source, clip_batch, the re-encoding and
 // premultiplication of the output and write_image to a scratch file, which is read back.
@@ -24,6 +24,7 @@
 #include <irid/color/rgb.h>
 #include <irid/error.h>
 #include <irid/exchange/icc.h>
+#include <irid/exchange/image_source.h>
 #include <irid/gamut/batch.h>
 #include <irid/gamut/clip.h>
 #include <irid/io/image.h>
@@ -33,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -104,10 +106,8 @@ void clip_like_the_cli(io::Image image, bool exr_in, std::uint64_t h) {
         if (rgb[0] < 0 || rgb[1] < 0 || rgb[2] < 0) return;
         xyz = true;
     }
-    // As irid clip does for images: aces-rgc with its final clip (clip=true).
-    irid::ClipSettings settings;
-    if (method == irid::ClipMethod::aces_rgc) settings.set("clip", 1.0);
-    const irid::GamutClipper clipper(method, irid::Gamut(dest, max), settings);
+    // As irid clip does for images: what a display gets (aces-rgc's clip=true).
+    const irid::GamutClipper clipper(method, irid::Gamut(dest, max), irid::display_clip_settings(method));
     const std::size_t pixels = image.pixel_count();
     const auto stride = static_cast<std::size_t>(image.channels);
     const int alpha = image.channel_index("A");
@@ -195,12 +195,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     check_read(image);
-    // What the file says about its space (its ICC profile, its EXR chromaticities), as irid
-    // clip reads it: refused with irid::Error, or a space.
+    // Where its colours come from, as irid clip decides it without --from (the channels, the
+    // file's ICC profile or EXR chromaticities): refused with irid::Error, or a space.
     try {
-        const irid::ImageSpace space = irid::image_space(image, "fuzz");
-        IRID_FUZZ_REQUIRE(space.rgb.has_value() != (space.profile != nullptr),
-                          "an image space is exact or goes through Little CMS");
+        const bool xyz = image.channel_index("R") < 0 && image.channel_index("X") >= 0;
+        const irid::ImageSource source = irid::decide_image_source(image, xyz, std::nullopt, "fuzz", "--from");
+        if (source.file) {
+            IRID_FUZZ_REQUIRE(source.file->rgb.has_value() != (source.file->profile != nullptr),
+                              "an image space is exact or goes through Little CMS");
+        }
     } catch (const irid::Error&) {
     }
     clip_like_the_cli(std::move(image), exr_in, fnv1a(data, size));

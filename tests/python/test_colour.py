@@ -183,3 +183,21 @@ def test_primaries_transform_reproduces_cie_1931_rgb():
     big = np.abs(cie) > 0.005
     scale = (ours[big] / cie[big]).mean()
     np.testing.assert_allclose(ours[big] / scale, cie[big], rtol=6e-3)
+
+
+def test_delta_e_takes_triples_not_scalars():
+    lab = np.array([50.0, 10.0, -10.0])
+    for bad in (5.0, np.float64(5.0), [1.0, 2.0]):
+        with pytest.raises(ValueError, match="triples"):
+            irid.delta_e(bad, lab)
+        with pytest.raises(ValueError, match="triples"):
+            irid.delta_e(lab, bad)
+    assert irid.delta_e(lab, lab) == 0.0
+
+
+def test_a_mistyped_keyword_is_an_unknown_name_whatever_its_value():
+    # Not "parameter shapr: 'log2' is not a number": the name is what is wrong.
+    with pytest.raises(KeyError, match="'shapr' is neither an argument nor a parameter"):
+        irid.bake_lut("smits", "srgb-linear", "srgb", size=5, shapr="log2")
+    with pytest.raises(KeyError, match="'strenght'.*smits-soft"):
+        irid.clip([[2.0, 0.5, 0.1]], "smits-soft", strenght=0.5)

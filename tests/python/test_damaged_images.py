@@ -284,3 +284,49 @@ def test_a_tiff_profile_tag_past_the_file_is_refused(irid_cli, tmp_path, field, 
     r = subprocess.run([irid_cli, "clip", "--method", "clamp", "--from", "adobe-rgb", path,
                         tmp_path / "out.png"], capture_output=True, text=True)
     assert r.returncode == 0 and "overrides" in r.stderr, r.stderr
+
+
+# --- files whose space cannot be known --------------------------------------------------------
+
+@pytest.mark.parametrize("fmt", ["JPEG", "TIFF"])
+def test_cmyk_without_a_profile_is_refused_and_from_overrides_it(irid_cli, tmp_path, fmt):
+    from PIL import Image
+    path = tmp_path / ("cmyk.jpg" if fmt == "JPEG" else "cmyk.tif")
+    Image.new("CMYK", (4, 4), (10, 200, 30, 40)).save(path, fmt)
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", path, tmp_path / "out.png"],
+                       capture_output=True, text=True)
+    assert r.returncode == 1 and "CMYK samples without an ICC profile" in r.stderr, r.stderr
+    _, meta = irid.read_image(path)
+    assert meta["cmyk"]
+    with pytest.raises(ValueError, match="CMYK"):
+        irid.image_space(meta)
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", "--from", "srgb", path,
+                        tmp_path / "out.png"], capture_output=True, text=True)
+    assert r.returncode == 0 and "--from srgb overrides" in r.stderr and "CMYK" in r.stderr, \
+        r.stderr
+
+
+@pytest.mark.parametrize("value,reason", [(1e30, "red x = 1e+30"), (-3.0, "red x = -3"),
+                                          (float("nan"), "not finite")])
+def test_exr_chromaticities_outside_any_real_encoding_are_refused(irid_cli, tmp_path, value,
+                                                                  reason):
+    irid.write_image(tmp_path / "a.exr", np.full((2, 2, 3), 0.5, np.float32),
+                     color_space="rec2020-linear")
+    data = (tmp_path / "a.exr").read_bytes()
+    red_x = struct.pack("<f", 0.708)
+    assert data.count(red_x) == 1
+    (tmp_path / "b.exr").write_bytes(data.replace(red_x, struct.pack("<f", value)))
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", tmp_path / "b.exr",
+                        tmp_path / "out.exr"], capture_output=True, text=True)
+    assert r.returncode == 1 and "chromaticities" in r.stderr and reason in r.stderr, r.stderr
+
+
+def test_notes_are_warnings_in_python(tmp_path):
+    (tmp_path / "plain.png").write_bytes(pil_bytes(random_rgb(4, 4), "PNG"))
+    px, meta = irid.read_image(tmp_path / "plain.png")
+    with pytest.warns(UserWarning, match="no ICC profile; its values are taken as sRGB"):
+        irid.clip_image(px, meta["channels"], "clamp", source=meta)
+    # An integer file whose chromaticities say linear sRGB: its codes are taken as linear light.
+    tagged = dict(meta, chromaticities=(0.64, 0.33, 0.3, 0.6, 0.15, 0.06, 0.3127, 0.329))
+    with pytest.warns(UserWarning, match="source='srgb-linear' takes them as linear light"):
+        irid.clip_image(px, meta["channels"], "clamp", source=tagged)

@@ -111,3 +111,54 @@ def test_compression_is_written_and_unknown_names_refused(tmp_path):
         with pytest.raises(KeyError, match="valid"):
             irid.write_image(tmp_path / name, a, compression=compression)
         assert not (tmp_path / name).exists()
+
+
+# --- write_image writes what is asked, or refuses ---------------------------------------------
+
+@pytest.mark.parametrize("name", ["display_p3", "Display-P3", "nope"])
+def test_an_unknown_space_name_is_a_key_error(tmp_path, name):
+    with pytest.raises(KeyError, match="unknown"):
+        irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space=name)
+    assert not (tmp_path / "a.png").exists()
+
+
+def test_a_space_that_is_not_rgb_cannot_tag_a_file(tmp_path):
+    with pytest.raises(ValueError, match="not an RGB space"):
+        irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space="lab")
+    irid.write_image(tmp_path / "a.exr", np.zeros((2, 2, 3)), color_space="lab", tag=False)
+    _, meta = irid.read_image(tmp_path / "a.exr")
+    assert meta["color_space"] == "lab" and meta["chromaticities"] is None
+
+
+def test_integer_arrays_are_code_values(tmp_path):
+    codes = np.array([[[0, 128, 255]]], np.uint8)
+    irid.write_image(tmp_path / "a.png", codes)
+    back, _ = irid.read_image(tmp_path / "a.png")
+    np.testing.assert_array_equal(np.round(back * 255), codes)       # 128 stays 128, not white
+    words = np.array([[[0, 32768, 65535]]], np.uint16)
+    irid.write_image(tmp_path / "b.png", words, bits=16)
+    back, _ = irid.read_image(tmp_path / "b.png")
+    np.testing.assert_array_equal(np.round(back * 65535), words)
+    for bad in (np.int64, np.int32, np.bool_):
+        with pytest.raises(ValueError, match="uint8"):
+            irid.write_image(tmp_path / "c.png", np.zeros((1, 1, 3), bad))
+    with pytest.raises(ValueError, match="EXR holds linear"):
+        irid.write_image(tmp_path / "c.exr", codes)
+
+
+def test_tags_that_contradict_each_other_are_refused(tmp_path):
+    p3 = irid.icc_profile("display-p3")
+    with pytest.raises(ValueError, match="contradict"):
+        irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space="srgb",
+                         icc_profile=p3)
+    with pytest.raises(ValueError, match="contradict"):
+        irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space="display-p3-linear",
+                         icc_profile=p3)     # the same primaries, another curve
+    irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space="display-p3",
+                     icc_profile=p3)
+    rec2020 = (0.708, 0.292, 0.170, 0.797, 0.131, 0.046, 0.3127, 0.3290)
+    with pytest.raises(ValueError, match="contradict"):
+        irid.write_image(tmp_path / "a.exr", np.zeros((2, 2, 3)), color_space="srgb-linear",
+                         chromaticities=rec2020)
+    irid.write_image(tmp_path / "a.exr", np.zeros((2, 2, 3)), color_space="rec2020-linear",
+                     chromaticities=rec2020)

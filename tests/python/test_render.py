@@ -170,3 +170,13 @@ def test_gallery_rejects_bad_options(tmp_path):
     (tmp_path / "file").write_text("x")
     with pytest.raises(OSError):
         irid.gallery(tmp_path / "file" / "sub", width=32, height=24, spp=1, figure_width=320)
+
+
+def test_render_arguments_refused_as_the_library_says():
+    with pytest.raises(ValueError, match="set: list"):
+        irid.render("oil-slick", set=[("oil.k1", 2)], width=8, height=8)
+    # The samples' range is the scene reader's, said once: [1, 1024].
+    with pytest.raises(ValueError, match="1024"):
+        irid.render("oil-slick", spp=2000, width=8, height=8)
+    with pytest.raises(ValueError, match="spp"):
+        irid.render("oil-slick", spp=1.5, width=8, height=8)

@@ -15,6 +15,7 @@
 #include <irid/color.h>
 #include <irid/exchange/icc.h>
 #include <irid/exchange/image_clip.h>
+#include <irid/exchange/image_source.h>
 #include <irid/gamut/clip.h>
 #include <irid/gamut/pipeline.h>
 #include <irid/io/image.h>
@@ -162,74 +163,37 @@ int run_clip_image(const ClipOptions& o, const ClipPipeline& p) {
 
     io::Image image = io::read_image(o.in);
     const ImageColourChannels channels = image_colour_channels(image, o.in);
-    const bool from_given = o.from_option->count() > 0;
-    // An image's channel names say what it holds: X, Y, Z is CIE XYZ. --from may say so too
-    // (or be left out); naming an RGB space for it would clip XYZ as RGB.
-    std::optional<ClipPipeline> file_pipeline;
-    std::string from_text = o.from;
-    // Otherwise the file's ICC profile or EXR chromaticities say what its RGB is, unless --from
-    // says otherwise; an untagged file is sRGB (linear when it holds floats).
-    std::optional<ImageSpace> tagged;
-    std::optional<ColorSpace> tagged_space;
-    if (channels.xyz && p.from().family != Family::xyz) {
-        if (from_given) {
-            throw UsageError(o.in + " holds X, Y and Z channels (CIE XYZ) but --from is " + o.from +
-                             "; give --from xyz, or leave --from out");
-        }
-        ClipOptions as_xyz = o;
-        as_xyz.from = from_text = "xyz";
-        file_pipeline.emplace(make_pipeline(as_xyz, true));
-    } else if (!channels.xyz && from_given) {
-        if (!image.icc_profile.empty() || image.icc_profile_rejected || !image.chromaticities.empty()) {
-            std::string said;
-            try {
-                said = image_space(image, o.in).origin;
-            } catch (const Error& e) {
-                said = std::string("an ICC profile irid cannot use (") + e.what() + ")";
-            }
-            fmt::print(stderr, "irid clip: note: --from {} overrides what {} says: {}\n", o.from, o.in, said);
-        }
-    } else if (!channels.xyz) {
-        tagged = image_space(image, o.in);
-        if (tagged->assumed && image.stored_integer) {
-            fmt::print(stderr,
-                       "irid clip: note: {} has no ICC profile; its values are taken as sRGB "
-                       "(give --from to say otherwise)\n",
-                       o.in);
-        }
-        tagged_space = tagged->colour_space();
-        from_text = tagged->profile   ? tagged->origin
-                    : tagged->assumed ? color_space_name(*tagged_space)
-                                      : fmt::format("{} ({})", color_space_name(*tagged_space), tagged->origin);
-        file_pipeline.emplace(make_clip_pipeline(o, true, &*tagged_space));
+    // Where the colours come from is the library's decision (irid/exchange/image_source.h):
+    // the channels, --from, the file's profile or chromaticities; this prints its notes.
+    std::optional<ColorSpace> given;
+    if (o.from_option->count() > 0) given = p.from();
+    ImageSource source;
+    try {
+        source = decide_image_source(image, channels.xyz, given, o.in, "--from");
+    } catch (const ImageSourceConflict& e) {
+        throw UsageError(e.what());
     }
-    const ClipPipeline& pipe = file_pipeline ? *file_pipeline : p;
+    for (const std::string& note : source.notes) fmt::print(stderr, "irid clip: note: {}\n", note);
+    const ClipPipeline pipe = make_clip_pipeline(o, true, &source.space);
     // PNG and TIFF keep a 16-bit input's depth unless --bits says otherwise; JPEG holds 8.
     const int bits =
         o.bits_option->count() > 0 ? o.bits
         : (format != io::ImageFormat::jpeg && image.stored_integer && image.stored_bits > 8) ? 16
                                                                                             : 8;
-    if (image.stored_integer && pipe.from().family == Family::rgb_linear) {
-        fmt::print(
-            stderr,
-            "irid clip: note: {} holds {}-bit encoded values; --from {} takes them as linear "
-            "light (give --from {} to decode them)\n",
-            o.in, image.stored_bits, o.from, pipe.from().rgb->name());
-    }
     const bool alpha = image.channel_index("A") >= 0;
     clip_image(image, channels, pipe,
                ImageClipOptions{.premultiplied_in = alpha && is_exr(o.in),
                                 .premultiplied_out = alpha && is_exr(o.out),
                                 .encode = encoded_out,
                                 .threads = o.threads,
-                                .profile = tagged && tagged->profile ? tagged->profile.get() : nullptr},
+                                .profile = source.file && source.file->profile ? source.file->profile.get() : nullptr},
                o.in);
 
     // The output says what it holds: an ICC profile (PNG, TIFF) or chromaticities (EXR).
     tag_image(image, p.destination(), format);
     image.description = fmt::format(
         "irid clip --method {}{} --from {} --to {} --max {}; colour space {} ({})", o.method,
-        describe_clip_settings(p.clipper()), from_text, o.to, format_shortest(max), image.color_space,
+        describe_clip_settings(p.clipper()), source.described, o.to, format_shortest(max), image.color_space,
         encoded_out ? "encoded" : "linear");
     io::write_image(o.out, image, io::ImageEncoding{.bits = bits, .compression = {}});
     return exit_success;

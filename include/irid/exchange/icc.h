@@ -131,6 +131,13 @@ struct ImageSpace {
 /// EXR chromaticities, else assumed (see ImageSpace). `what` names the file in errors.
 [[nodiscard]] ImageSpace image_space(const io::Image& image, const std::string& what);
 
+/// Throws irid::Error when what `image` carries (its ICC profile, its EXR chromaticities)
+/// describes another space than `space`, whose name is `name`: other primaries or white (beyond
+/// 2e-4 in x or y), for a profile another curve (beyond 2e-4 decoded), or a profile that is not
+/// matrix/TRC with one curve (which cannot be compared). For a caller given both a space's name
+/// and a profile or chromaticities to write (Python's write_image).
+void check_tags_agree(const io::Image& image, const RgbSpace& space, const std::string& name);
+
 /// Marks `image`, about to be written to a file of `format`, as holding values of `space`:
 /// color_space = the space's name (with "-linear" for EXR), and for PNG and TIFF the space's
 /// ICC profile (make_icc_profile), for EXR its chromaticities and, when the white is not D65's

@@ -62,6 +62,9 @@ struct Image {
     /// Set by read_image; ignored by write_image.
     int stored_bits = 32;
     bool stored_integer = false;
+    /// The file holds CMYK (a JPEG or TIFF), which OpenImageIO converted to RGB without a profile
+    /// (R = (1 - C)(1 - K) and so on): its RGB is no colour space. Set by read_image.
+    bool stored_cmyk = false;
 
     /// An image of this size with every sample 0. Channel names default to R, G, B, A for up to
     /// four channels and to "channel<i>" beyond. Throws irid::Error when a dimension is < 1.
