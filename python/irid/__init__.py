@@ -570,7 +570,8 @@ def _file_facts(metadata):
                          "'icc_profile' and 'chromaticities')") from None
     if icc is not None and not isinstance(icc, (bytes, bytearray)):
         raise ValueError("source: 'icc_profile' must be bytes or None")
-    bits = metadata.get("bits", 32)
+    # Older metadata without "bits": an integer file's 8, a float file's 32.
+    bits = metadata.get("bits", 8 if metadata.get("integer") else 32)
     if isinstance(bits, bool) or not isinstance(bits, numbers.Integral) or not 1 <= bits <= 64:
         raise ValueError(f"source: 'bits' {bits!r} is not a whole number of bits")
     return {
@@ -660,11 +661,12 @@ def write_image(path, array, channels=None, color_space="", description="", bits
         array for EXR (code values are encoded: decode them to linear floats first).
     channels: names, default Y / Y,A / R,G,B / R,G,B,A by count.
     color_space, description: stored as attributes (irid:ColorSpace, ImageDescription).
-        color_space is "" or one of irid's space names (:func:`color_spaces`; another raises
-        KeyError). When ``tag`` is true the file also says so to other programs, which needs an
-        RGB space (ValueError otherwise): PNG and TIFF get the space's ICC profile
-        (:func:`icc_profile`), EXR its chromaticities (and adoptedNeutral when the white is not
-        D65). With ``tag=False`` the name alone is written.
+        With ``tag`` true (the default) color_space is "" or one of irid's space names
+        (:func:`color_spaces`; another raises KeyError), and the file also says so to other
+        programs, which needs an RGB space (ValueError otherwise): PNG and TIFF get the space's
+        ICC profile (:func:`icc_profile`), EXR its chromaticities (and adoptedNeutral when the
+        white is not D65). With ``tag=False`` the text alone is written, whatever it is (an
+        OpenColorIO name, or the "sRGB" OpenImageIO reports in read_image's metadata).
     icc_profile: bytes of a profile to embed instead (PNG, TIFF; checked as a file's would be).
     chromaticities: 8 values (red, green, blue, white x, y) to write instead (EXR).
         Either must describe the space color_space names, when both are given (ValueError).
@@ -699,7 +701,7 @@ def _code_values_scaled(array, path):
     a = np.asarray(array)
     if a.dtype.kind not in "uib":
         return array
-    top = {np.dtype(np.uint8): 255.0, np.dtype(np.uint16): 65535.0}.get(a.dtype)
+    top = {1: 255.0, 2: 65535.0}.get(a.dtype.itemsize) if a.dtype.kind == "u" else None
     if top is None:
         raise ValueError(f"array: dtype {a.dtype}; integer arrays are code values, given as uint8 "
                          f"(0-255) or uint16 (0-65535), or pass floats (encoded values in [0, 1])")

@@ -120,10 +120,23 @@ void add_io(py::module_& m) {
             } catch (const Error& e) {
                 throw FileError(e.what());
             }
-            // color_space names one of irid's spaces (UnknownNameError: KeyError). With tag, the
-            // file also says so to other programs, which only an RGB space can.
+            // With tag, color_space names one of irid's spaces (UnknownNameError: KeyError) and
+            // the file also says so to other programs, which only an RGB space can; without, it
+            // is a text attribute.
             std::optional<ColorSpace> named;
-            if (!color_space.empty()) named = irid::color_space(color_space);
+            if (!color_space.empty()) {
+                if (tag) {
+                    try {
+                        named = irid::color_space(color_space);
+                    } catch (const UnknownNameError& e) {
+                        throw UnknownNameError(std::string(e.what()) +
+                                                   " (give tag=False to store another name as a text attribute)",
+                                               e.valid());
+                    }
+                } else {
+                    named = find_color_space(color_space);
+                }
+            }
             if (tag && named) {
                 if (!named->is_rgb()) {
                     throw py::value_error("color_space '" + color_space + "' is not an RGB space: no ICC profile or "

@@ -141,12 +141,22 @@ LutDomain ocio_look_domain(const OcioConfigOptions& o) {
     for (int j = 1; j <= above && hi > 1.0; ++j) x.push_back(std::exp2(std::log2(hi) * j / above));
 
     // The step of the shaper's samples: a power of two at most a quarter of the closest two
-    // nodes, but no finer than 2^16 samples over the domain (about 1 MB of text); nodes are
-    // rounded to it and, where two would meet, the upper is moved up one step.
+    // nodes, but no finer than 2^18 samples over the domain (2.5 MB of text) and no coarser than
+    // 1/64 (0, 1 and the nodes between them must lie on it); nodes are rounded to it and, where
+    // two would meet, the upper is moved up one step.
     double closest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 1; i < x.size(); ++i) closest = std::min(closest, x[i] - x[i - 1]);
-    const double step = std::exp2(std::max(std::floor(std::log2(closest / 4.0)),
-                                           std::ceil(std::log2((hi - lo) / 65536.0))));
+    constexpr double max_samples = 262144.0, max_step = 1.0 / 64.0;
+    const double finest = std::exp2(std::ceil(std::log2((hi - lo) / max_samples)));
+    const double step = std::max(std::min(std::exp2(std::floor(std::log2(closest / 4.0))), max_step), finest);
+    const auto too_wide = [&] {
+        return Error(fmt::format("the source range [{}, {}] reaches [{:.6g}, {:.6g}] in {}, wider than the looks' "
+                                 "LUT can place {} nodes in with 0 and 1 among them (at most {:g} wide); "
+                                 "narrow the range",
+                                 format_shortest(bottom), format_shortest(top), lo, hi,
+                                 color_space_name(o.display.linear()), o.size, max_samples * max_step));
+    };
+    if (step > max_step) throw too_wide();
     LutDomain d;
     d.shaper = LutShaper::nodes;
     d.step = step;
@@ -156,6 +166,7 @@ LutDomain ocio_look_domain(const OcioConfigOptions& o) {
     x.front() = d.min;
     x.back() = d.max;
     for (std::size_t i = 1; i + 1 < x.size(); ++i) x[i] = std::max(x[i], x[i - 1] + step);
+    if (x[x.size() - 2] >= d.max) throw too_wide();
     d.nodes = std::move(x);
     check_lut_domain(d, o.size);
     return d;

@@ -71,7 +71,13 @@ void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limit
     std::vector<std::vector<unsigned char>> chunk_data;
     std::uint64_t pos = 2;
     unsigned char m[4];
-    while (first_scan == 0 && file.read(pos, m, 2) && m[0] == 0xFF) {
+    while (first_scan == 0 && file.read(pos, m, 2)) {
+        // Between segments libjpeg skips any bytes up to the next marker (next_marker(), with
+        // only a warning): so does this, or one stray byte would hide the frame header.
+        if (m[0] != 0xFF || m[1] == 0x00) {
+            ++pos;
+            continue;
+        }
         const unsigned marker = m[1];
         if (marker == 0xFF) {  // a fill byte
             ++pos;

@@ -21,6 +21,7 @@ class Reader {
 public:
     Reader(int fd, std::uint64_t size) : m_fd(fd), m_size(size) {}
     [[nodiscard]] std::uint64_t size() const noexcept { return m_size; }
+    [[nodiscard]] int fd() const noexcept { return m_fd; }
     /// `n` bytes at `offset` (n <= buffer size), or false when the file ends first.
     bool read(std::uint64_t offset, void* out, std::size_t n) {
         if (offset > m_size || n > m_size - offset) return false;
@@ -77,7 +78,7 @@ void check_icc(const std::string& shown, const std::vector<unsigned char>& profi
 /// to facts.icc_damage (header_jpeg.cpp).
 void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts);
 
-/// Classic TIFF (TIFF 6.0): the first directory's size against `limits`, its strips or tiles
+/// TIFF (TIFF 6.0, and BigTIFF): the first directory's size against `limits`, its strips or tiles
 /// against the file and what they can expand to, and its ICC profile tag (header_tiff.cpp).
 void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts);
 

@@ -1,24 +1,26 @@
-// A classic TIFF's first directory read before libtiff sees the file (header_reader.h).
+// A TIFF's first directory read before libtiff sees the file (header_reader.h): classic TIFF
+// (TIFF 6.0) and BigTIFF (8-byte offsets and counts).
 //
 // libtiff trusts a directory's strip (or tile) offsets and byte counts, and OpenImageIO fills
 // what a strip lacks with black. The directory says how many bytes the image data take and how
 // many the pixels need; a compression expands its data by at most a known factor, so a file of a
-// few hundred bytes cannot declare gigabytes of pixels.
+// few hundred bytes cannot declare gigabytes of pixels. The offset and count arrays are read as
+// streams (they may hold a value per byte of the file), never stored.
 #include "header_reader.h"
 
 #include <irid/error.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace irid::io::header {
 namespace {
 
 /// The most a TIFF compression expands its data, or nothing when irid knows no bound.
-std::optional<double> max_expansion(std::uint32_t compression) {
+std::optional<double> max_expansion(std::uint64_t compression) {
     switch (compression) {
         case 1:  // none
             return 1.0;
@@ -34,7 +36,7 @@ std::optional<double> max_expansion(std::uint32_t compression) {
     }
 }
 
-const char* compression_name(std::uint32_t compression) {
+const char* compression_name(std::uint64_t compression) {
     switch (compression) {
         case 1: return "uncompressed data";
         case 5: return "LZW";
@@ -45,122 +47,196 @@ const char* compression_name(std::uint32_t compression) {
     }
 }
 
-class Directory {
+/// Bytes of one value of a TIFF field type (TIFF 6.0 §2 and BigTIFF's 16-18), 0 for an unknown one.
+std::uint64_t type_size(std::uint32_t type) {
+    static constexpr std::uint64_t sizes[] = {0, 1, 1, 2, 4, 8, 1, 1, 2, 4, 8, 4, 8, 4, 0, 0, 8, 8, 8};
+    return type < 19 ? sizes[type] : 0;
+}
+
+/// The integer types (BYTE, SHORT, LONG, SBYTE, SSHORT, SLONG, IFD, LONG8, SLONG8, IFD8).
+bool is_integer_type(std::uint32_t type) {
+    return type == 1 || type == 3 || type == 4 || type == 6 || type == 8 || type == 9 || type == 13 ||
+           type == 16 || type == 17 || type == 18;
+}
+bool is_signed_type(std::uint32_t type) { return type == 6 || type == 8 || type == 9 || type == 17; }
+
+/// The layout of a directory entry: classic TIFF (12 bytes, 4-byte count and value) or BigTIFF
+/// (20 bytes, 8-byte count and value).
+struct Layout {
+    bool little = true;
+    bool big = false;
+
+    [[nodiscard]] std::uint64_t uint(const unsigned char* q, int bytes) const {
+        std::uint64_t v = 0;
+        for (int i = 0; i < bytes; ++i) {
+            const std::uint64_t b = q[little ? i : bytes - 1 - i];
+            v |= b << (8 * i);
+        }
+        return v;
+    }
+    [[nodiscard]] int entry_size() const { return big ? 20 : 12; }
+    [[nodiscard]] int field_size() const { return big ? 8 : 4; }
+    [[nodiscard]] std::uint64_t count(const unsigned char* e) const { return uint(e + 4, field_size()); }
+    [[nodiscard]] const unsigned char* value(const unsigned char* e) const { return e + 4 + field_size(); }
+};
+
+/// One entry's integer values, read one at a time from the entry or from the file.
+class Values {
 public:
-    Directory(Reader& file, bool little) : m_file(file), m_little(little) {}
-
-    std::uint32_t u16(const unsigned char* q) const {
-        return m_little ? static_cast<std::uint32_t>(q[0] | q[1] << 8) : static_cast<std::uint32_t>(q[0] << 8 | q[1]);
+    /// `reader` reads the file (a reader of its own per array read side by side with another).
+    Values(const Layout& layout, Reader& reader, const unsigned char* entry, std::uint64_t entry_at)
+        : m_layout(layout),
+          m_type(static_cast<std::uint32_t>(layout.uint(entry + 2, 2))),
+          m_count(layout.count(entry)),
+          m_size(type_size(m_type)),
+          m_reader(reader) {
+        const std::uint64_t bytes = m_count * m_size;
+        const bool inline_values = m_size != 0 && m_count <= 64 && bytes <= static_cast<std::uint64_t>(layout.field_size());
+        m_at = inline_values ? entry_at + 4 + static_cast<std::uint64_t>(layout.field_size())
+                             : layout.uint(layout.value(entry), layout.field_size());
     }
-    std::uint32_t u32(const unsigned char* q) const { return m_little ? little_endian32(q) : big_endian32(q); }
-
-    /// Bytes of one value of a TIFF field type (TIFF 6.0 §2, "Types"), 0 for an unknown one.
-    static std::uint64_t type_size(std::uint32_t type) {
-        static constexpr std::uint64_t sizes[] = {0, 1, 1, 2, 4, 8, 1, 1, 2, 4, 8, 4, 8};
-        return type < 13 ? sizes[type] : 0;
+    [[nodiscard]] bool integers() const { return is_integer_type(m_type) && m_size != 0; }
+    [[nodiscard]] std::uint64_t count() const { return m_count; }
+    [[nodiscard]] std::uint64_t at() const { return m_at; }
+    /// The values lie inside the file (count × size bytes from at()).
+    [[nodiscard]] bool inside() const {
+        return m_count <= m_reader.size() && m_at <= m_reader.size() && m_count * m_size <= m_reader.size() - m_at;
     }
-
-    /// An entry's integer values (BYTE, SHORT or LONG), or nothing when they lie past the file.
-    std::optional<std::vector<std::uint64_t>> integers(const unsigned char* e) const {
-        const std::uint32_t type = u16(e + 2);
-        const std::uint64_t count = u32(e + 4), size = type_size(type);
-        if (type != 1 && type != 3 && type != 4) return std::vector<std::uint64_t>{};
-        std::vector<unsigned char> bytes;
-        if (count * size <= 4) {
-            bytes.assign(e + 8, e + 8 + count * size);
-        } else {
-            bytes = read_bytes(m_file, u32(e + 8), count * size);
-            if (bytes.size() != count * size) return std::nullopt;
-        }
-        std::vector<std::uint64_t> out(count);
-        for (std::uint64_t i = 0; i < count; ++i) {
-            const unsigned char* q = bytes.data() + i * size;
-            out[i] = size == 1 ? q[0] : size == 2 ? u16(q) : u32(q);
-        }
-        return out;
+    /// The i-th value (i < count(), inside()); a negative signed one as nothing.
+    [[nodiscard]] std::optional<std::uint64_t> get(std::uint64_t i) {
+        unsigned char q[8];
+        if (!m_reader.read(m_at + i * m_size, q, static_cast<std::size_t>(m_size))) return std::nullopt;
+        const std::uint64_t v = m_layout.uint(q, static_cast<int>(m_size));
+        if (is_signed_type(m_type) && (v >> (8 * m_size - 1)) != 0) return std::nullopt;
+        return v;
     }
 
 private:
-    Reader& m_file;
-    bool m_little;
+    Layout m_layout;
+    std::uint32_t m_type;
+    std::uint64_t m_count;
+    std::uint64_t m_size;
+    Reader& m_reader;
+    std::uint64_t m_at = 0;
 };
 
 }  // namespace
 
 void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts) {
-    unsigned char head[8];
-    if (!file.read(0, head, sizeof head)) return;
-    const Directory dir(file, head[0] == 'I');
-    const std::uint64_t ifd = dir.u32(head + 4);
-    unsigned char count_bytes[2];
-    if (!file.read(ifd, count_bytes, 2)) return;  // libtiff names it
-    const std::uint32_t entries = dir.u16(count_bytes);
+    unsigned char head[16];
+    if (!file.read(0, head, 8)) return;
+    Layout layout;
+    layout.little = head[0] == 'I';
+    layout.big = layout.uint(head + 2, 2) == 43;
+    std::uint64_t ifd = 0;
+    if (layout.big) {
+        if (!file.read(0, head, 16)) return;
+        ifd = layout.uint(head + 8, 8);
+    } else {
+        ifd = layout.uint(head + 4, 4);
+    }
+    unsigned char count_bytes[8];
+    const int count_size = layout.big ? 8 : 2;
+    if (!file.read(ifd, count_bytes, static_cast<std::size_t>(count_size))) return;  // libtiff names it
+    const std::uint64_t entries = layout.uint(count_bytes, count_size);
+    const std::uint64_t first = ifd + static_cast<std::uint64_t>(count_size);
 
-    std::uint64_t width = 0, height = 0, samples = 1, bits = 1, compression = 1;
-    std::vector<std::uint64_t> offsets, counts;
+    std::uint64_t width = 0, height = 0, samples = 1, bits = 1, compression = 1, photometric = 2;
+    std::uint64_t sub_h = 2, sub_v = 2;  // YCbCrSubsampling's default (TIFF 6.0 §21)
+    std::optional<std::uint64_t> offsets_entry, counts_entry;
     const char* unit = "strip";
-    for (std::uint32_t i = 0; i < entries; ++i) {
-        unsigned char e[12];
-        if (!file.read(ifd + 2 + 12 * std::uint64_t{i}, e, sizeof e)) return;
-        const std::uint32_t tag = dir.u16(e);
+    unsigned char e[20];
+    for (std::uint64_t i = 0; i < entries; ++i) {
+        const std::uint64_t at = first + static_cast<std::uint64_t>(layout.entry_size()) * i;
+        if (!file.read(at, e, static_cast<std::size_t>(layout.entry_size()))) return;
+        const auto tag = static_cast<std::uint32_t>(layout.uint(e, 2));
+        Values values(layout, file, e, at);
         if (tag == 34675) {  // the ICC profile (TIFF/EP, ICC.1 Annex B.3)
-            const std::uint64_t size = Directory::type_size(dir.u16(e + 2)) * dir.u32(e + 4);
-            const std::uint64_t at = size <= 4 ? ifd + 2 + 12 * std::uint64_t{i} + 8 : dir.u32(e + 8);
-            if (size == 0 || at > file.size() || size > file.size() - at) {
-                facts.icc_damage = "its ICC profile tag (34675) declares " + std::to_string(size) +
-                                   " bytes at byte " + std::to_string(at) + ", and the file holds " +
+            const std::uint64_t size = type_size(static_cast<std::uint32_t>(layout.uint(e + 2, 2))) * values.count();
+            if (size == 0 || values.count() > file.size() || !values.inside()) {
+                facts.icc_damage = "its ICC profile tag (34675) declares " +
+                                   (values.count() > file.size() ? std::to_string(values.count()) + " values"
+                                                                 : std::to_string(size) + " bytes") +
+                                   " at byte " + std::to_string(values.at()) + ", and the file holds " +
                                    std::to_string(file.size());
             } else {
-                check_icc(shown, read_bytes(file, at, size));
+                check_icc(shown, read_bytes(file, values.at(), size));
             }
             continue;
         }
-        if (tag != 256 && tag != 257 && tag != 258 && tag != 259 && tag != 277 && tag != 273 &&
-            tag != 279 && tag != 324 && tag != 325) {
-            continue;
-        }
-        const std::optional<std::vector<std::uint64_t>> values = dir.integers(e);
-        if (!values) {
-            corrupt(shown, "its TIFF tag " + std::to_string(tag) + " declares " + std::to_string(dir.u32(e + 4)) +
-                               " values at byte " + std::to_string(dir.u32(e + 8)) + ", past the file's " +
+        const bool array = tag == 273 || tag == 279 || tag == 324 || tag == 325;
+        const bool scalar = tag == 256 || tag == 257 || tag == 258 || tag == 259 || tag == 262 || tag == 277 || tag == 530;
+        if (!array && !scalar) continue;
+        if (!values.integers() || values.count() == 0) continue;  // libtiff names a wrong type
+        if (!values.inside()) {
+            corrupt(shown, "its TIFF tag " + std::to_string(tag) + " declares " + std::to_string(values.count()) +
+                               " values at byte " + std::to_string(values.at()) + ", past the file's " +
                                std::to_string(file.size()) + " bytes");
         }
-        if (values->empty()) continue;  // libtiff names a wrong type
-        const std::uint64_t first = values->front();
+        if (array) {
+            (tag == 273 || tag == 324 ? offsets_entry : counts_entry) = at;
+            if (tag == 324 || tag == 325) unit = "tile";
+            continue;
+        }
+        const std::optional<std::uint64_t> v = values.get(0);
+        if (!v) continue;
         switch (tag) {
-            case 256: width = first; break;
-            case 257: height = first; break;
-            case 258: bits = first; break;
-            case 259: compression = first; break;
-            case 277: samples = first; break;
-            case 273: offsets = *values; break;
-            case 279: counts = *values; break;
-            case 324: offsets = *values; unit = "tile"; break;
-            case 325: counts = *values; unit = "tile"; break;
+            case 256: width = *v; break;
+            case 257: height = *v; break;
+            case 258: bits = *v; break;
+            case 259: compression = *v; break;
+            case 262: photometric = *v; break;
+            case 277: samples = *v; break;
+            case 530:
+                sub_h = std::max<std::uint64_t>(*v, 1);
+                if (const auto w = values.count() > 1 ? values.get(1) : std::nullopt) sub_v = std::max<std::uint64_t>(*w, 1);
+                break;
             default: break;
         }
     }
     if (width == 0 || height == 0) return;
     check_declared_pixels(shown, width, height, limits);
+    if (!offsets_entry || !counts_entry) return;
 
+    // Every strip (or tile) inside the file, its bytes summed, both arrays read side by side.
+    Reader offsets_file(file.fd(), file.size()), counts_file(file.fd(), file.size());
+    unsigned char offsets_bytes[20], counts_bytes[20];
+    if (!file.read(*offsets_entry, offsets_bytes, static_cast<std::size_t>(layout.entry_size())) ||
+        !file.read(*counts_entry, counts_bytes, static_cast<std::size_t>(layout.entry_size()))) {
+        return;
+    }
+    Values offsets(layout, offsets_file, offsets_bytes, *offsets_entry);
+    Values counts(layout, counts_file, counts_bytes, *counts_entry);
     std::uint64_t coded = 0;
-    for (std::size_t i = 0; i < std::min(offsets.size(), counts.size()); ++i) {
-        if (offsets[i] > file.size() || counts[i] > file.size() - offsets[i]) {
+    const std::uint64_t n = std::min(offsets.count(), counts.count());
+    for (std::uint64_t i = 0; i < n; ++i) {
+        const std::optional<std::uint64_t> offset = offsets.get(i), count = counts.get(i);
+        if (!offset || !count) {
+            corrupt(shown, std::string("its ") + unit + " " + std::to_string(i) + " has a negative offset or byte count");
+        }
+        if (*offset > file.size() || *count > file.size() - *offset) {
             corrupt(shown, std::string("its ") + unit + " " + std::to_string(i) + " declares " +
-                               std::to_string(counts[i]) + " bytes at byte " + std::to_string(offsets[i]) +
+                               std::to_string(*count) + " bytes at byte " + std::to_string(*offset) +
                                ", and the file holds " + std::to_string(file.size()));
         }
-        coded += counts[i];
+        coded += *count;
     }
-    const std::optional<double> expansion = max_expansion(static_cast<std::uint32_t>(compression));
-    if (!expansion || counts.empty()) return;
-    const double needed = static_cast<double>(width) * static_cast<double>(height) *
-                          static_cast<double>(samples) * static_cast<double>(bits) / 8.0;
+    const std::optional<double> expansion = max_expansion(compression);
+    if (!expansion || n == 0) return;
+    // Bytes the pixels take uncompressed; subsampled YCbCr (photometric 6) stores each block of
+    // h × v pixels as h v luma and 2 chroma samples (TIFF 6.0 §21).
+    const auto w = static_cast<double>(width), h = static_cast<double>(height);
+    const double bytes_per_sample = static_cast<double>(bits) / 8.0;
+    const bool subsampled = photometric == 6 && samples == 3 && (sub_h > 1 || sub_v > 1);
+    const double needed = subsampled
+                              ? std::ceil(w / static_cast<double>(sub_h)) * std::ceil(h / static_cast<double>(sub_v)) *
+                                    static_cast<double>(sub_h * sub_v + 2) * bytes_per_sample
+                              : w * h * static_cast<double>(samples) * bytes_per_sample;
     if (needed > *expansion * static_cast<double>(coded) + 1024.0) {
         corrupt(shown, declared_size_text(width, height) + " of " + std::to_string(samples) + " samples at " +
                            std::to_string(bits) + " bits need " +
                            std::to_string(static_cast<std::uint64_t>(needed)) + " bytes, and its " +
-                           std::to_string(coded) + " bytes of " + compression_name(static_cast<std::uint32_t>(compression)) +
+                           std::to_string(coded) + " bytes of " + compression_name(compression) +
                            " cannot hold them" +
                            (compression == 1 ? std::string()
                                              : " (they expand at most " + std::to_string(static_cast<int>(*expansion)) + "-fold)"));

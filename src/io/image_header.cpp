@@ -300,7 +300,8 @@ HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLim
     if (!file.read(0, magic, sizeof magic)) return facts;
     if (std::memcmp(magic, "\x89PNG\r\n\x1a\n", 8) == 0) check_png(shown, file, limits, facts);
     if (std::memcmp(magic, "\x76\x2f\x31\x01", 4) == 0) check_exr(shown, file, limits);
-    if (std::memcmp(magic, "II*\0", 4) == 0 || std::memcmp(magic, "MM\0*", 4) == 0) {
+    if (std::memcmp(magic, "II*\0", 4) == 0 || std::memcmp(magic, "MM\0*", 4) == 0 ||
+        std::memcmp(magic, "II+\0", 4) == 0 || std::memcmp(magic, "MM\0+", 4) == 0) {
         check_tiff(shown, file, limits, facts);
     }
     if (std::memcmp(magic, "\xff\xd8\xff", 3) == 0) check_jpeg(shown, file, limits, facts);

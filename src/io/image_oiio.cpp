@@ -46,6 +46,32 @@ std::string message_or(std::string message, const char* fallback) {
     return message.empty() ? std::string(fallback) : message;
 }
 
+/// The lines of a decoder's complaint that do not mean lost or made-up pixels. libjpeg's
+/// warnings reach OpenImageIO 2.4's error state too, and some concern the headers only (jerror.h:
+/// JWRN_EXTRANEOUS_DATA, bytes skipped before a marker; JWRN_JFIF_MAJOR; JWRN_NOT_SEQUENTIAL,
+/// odd but decodable SOS parameters; JWRN_ADOBE_XFORM; JWRN_JFIF_BADTHUMBNAILSIZE). At close,
+/// after every row was read, "Premature end of JPEG file" means only that the EOI marker is
+/// missing (libjpeg's finish_decompress looks for it).
+std::string drop_harmless(const std::string& complaint, bool at_close) {
+    static constexpr const char* harmless[] = {
+        "extraneous bytes before marker", "unknown JFIF revision number",
+        "Invalid SOS parameters for sequential JPEG", "Unknown Adobe color transform code",
+        "thumbnail image size does not match data length"};
+    std::string kept;
+    std::size_t start = 0;
+    while (start < complaint.size()) {
+        std::size_t end = complaint.find('\n', start);
+        if (end == std::string::npos) end = complaint.size();
+        const std::string line = complaint.substr(start, end - start);
+        bool drop = line.find_first_not_of(" ") == std::string::npos ||
+                    (at_close && line.find("Premature end of JPEG file") != std::string::npos);
+        for (const char* h : harmless) drop = drop || line.find(h) != std::string::npos;
+        if (!drop) kept += (kept.empty() ? "" : "\n") + line;
+        start = end + 1;
+    }
+    return kept;
+}
+
 /// The first line of a message, with how many more there were (libtiff repeats its complaint for
 /// every strip that follows a short one).
 std::string first_line(const std::string& message) {
@@ -201,14 +227,14 @@ Image oiio_read(const fs::path& path, const ImageLimits& limits) {
         // OpenImageIO 2.4 reports a decoder's complaint (libjpeg's "Premature end of JPEG file",
         // libtiff's short strip) through geterror() while the read itself returns true and
         // has_error() false, and fills what is missing with grey or black.
-        std::string complaint = in->geterror();
+        std::string complaint = drop_harmless(in->geterror(), false);
         if (!ok || !complaint.empty()) {
             throw Error(shown + ": cannot read the pixels (damaged or truncated): " +
                         first_line(message_or(std::move(complaint), "OpenImageIO gave no reason")));
         }
     }
     const bool closed = in->close();
-    if (std::string complaint = in->geterror(); !closed || !complaint.empty()) {
+    if (std::string complaint = drop_harmless(in->geterror(), true); !closed || !complaint.empty()) {
         throw Error(shown + ": cannot read the pixels (damaged or truncated): " +
                     first_line(message_or(std::move(complaint), "closing the file failed")));
     }

@@ -1,10 +1,10 @@
 // Fuzz harness: images through irid_io (irid::io::read_image, include/irid/io/image.h, which
 // loads the OpenImageIO module libirid_oiio.so), then what `irid clip IN OUT` does with what
 // OpenImageIO returns (apps/irid/commands/clip.cpp: decide_image_source, then the steps of
-// clip_image re-created here from the same library calls): the colour channels (R, G, B by name, else X, Y,
-// Z), alpha (EXR colour is taken as
-// premultiplied), the decoding of an encoded source, clip_batch, the re-encoding and
-// premultiplication of the output and write_image to a scratch file, which is read back.
+// clip_image re-created here from the same library calls): the colour channels (R, G, B by
+// name, else X, Y, Z), alpha (EXR colour is taken as premultiplied), the decoding of an encoded
+// source, clip_batch, the re-encoding and premultiplication of the output and write_image to a
+// scratch file, which is read back.
 //
 // Input: the file's bytes. Its name's extension follows its magic number (PNG, TIFF, EXR, JPEG,
 // HDR, BMP, GIF, PNM; else none, and OpenImageIO probes the content). The clip's parameters

@@ -97,47 +97,70 @@ def test_corrupt_jpeg_data_is_refused(tmp_path):
         irid.read_image(tmp_path / "bad.jpg")
 
 
-def jpeg_declaring(width, height, progressive=False):
-    """A JPEG's headers with the frame's size patched, and 20 bytes of coded data."""
+def jpeg_declaring(width, height, progressive=False, stray=False):
+    """A JPEG's headers with the frame's size patched, and 20 bytes of coded data; with `stray`
+    a byte that is no marker ahead of the frame header (libjpeg skips it, with a warning)."""
     data = bytearray(pil_bytes(random_rgb(16, 16), "JPEG", quality=90, progressive=progressive))
     i = 2
     while True:
         marker, length = data[i + 1], struct.unpack(">H", data[i + 2:i + 4])[0]
         if marker in (0xC0, 0xC2):
             data[i + 5:i + 9] = struct.pack(">HH", height, width)
+            if stray:
+                data[i:i] = b"\x00"
+                i += 1
         if marker == 0xDA:
             return bytes(data[:i + 2 + length + 20]) + b"\xff\xd9"
         i += 2 + length
 
 
-def tiff_declaring(width, height, compression=1, strip_bytes=None, bits=32, sample_format=3):
+def tiff_declaring(width, height, compression=1, strip_bytes=None, bits=32, sample_format=3,
+                   counts_type=4, offsets_type=4):
     """A classic little-endian TIFF directory of 3 samples, one strip of `strip_bytes` at the
-    end of a file of a few hundred bytes (none: as many as the pixels need uncompressed)."""
+    end of a file of a few hundred bytes (none: as many as the pixels need uncompressed); the
+    strip's offset and byte count of the given TIFF types (4 LONG, 9 SLONG, 8 SSHORT, 16 LONG8)."""
     need = width * height * 3 * bits // 8
+    count = need if strip_bytes is None else strip_bytes
     entries = [(256, 4, 1, width), (257, 4, 1, height), (258, 3, 3, None), (259, 3, 1, compression),
-               (262, 3, 1, 2), (273, 4, 1, None), (277, 3, 1, 3), (278, 4, 1, height),
-               (279, 4, 1, need if strip_bytes is None else strip_bytes), (284, 3, 1, 1),
-               (339, 3, 3, None)]
+               (262, 3, 1, 2), (273, offsets_type, 1, None), (277, 3, 1, 3), (278, 4, 1, height),
+               (279, counts_type, 1, count), (284, 3, 1, 1), (339, 3, 3, None)]
     after = 8 + 2 + 12 * len(entries) + 4
     extra = struct.pack("<3H", bits, bits, bits) + struct.pack("<3H", *(3 * [sample_format]))
+    long8_at = after + len(extra)
+    extra += struct.pack("<Q", count)
     strip_at = after + len(extra)
     out = b""
-    for tag, typ, count, value in entries:
+    for tag, typ, n, value in entries:
         if tag == 258:
-            out += struct.pack("<HHII", tag, typ, count, after)
+            out += struct.pack("<HHII", tag, typ, n, after)
         elif tag == 339:
-            out += struct.pack("<HHII", tag, typ, count, after + 6)
+            out += struct.pack("<HHII", tag, typ, n, after + 6)
         elif tag == 273:
-            out += struct.pack("<HHII", tag, typ, count, strip_at)
-        elif typ == 3:
-            out += struct.pack("<HHIHH", tag, typ, count, value, 0)
+            out += struct.pack("<HHII", tag, typ, n, strip_at)
+        elif typ == 16:
+            out += struct.pack("<HHII", tag, typ, n, long8_at)
+        elif typ in (3, 8):
+            out += struct.pack("<HHIHH", tag, typ, n, value, 0)
         else:
-            out += struct.pack("<HHII", tag, typ, count, value)
+            out += struct.pack("<HHII", tag, typ, n, value)
     body = b"II*\0" + struct.pack("<I", 8) + struct.pack("<H", len(entries)) + out + b"\0\0\0\0"
     body += extra
     if strip_bytes is not None:
         body += bytes(strip_bytes)
     return body
+
+
+def bigtiff_declaring(width, height, compression, strip_bytes):
+    """The same as tiff_declaring in BigTIFF (8-byte offsets and counts, 20-byte entries)."""
+    entries = [(256, 4, 1, width), (257, 4, 1, height), (258, 3, 1, 32), (259, 3, 1, compression),
+               (262, 3, 1, 1), (273, 16, 1, None), (277, 3, 1, 1), (278, 4, 1, height),
+               (279, 16, 1, strip_bytes), (339, 3, 1, 3)]
+    strip_at = 16 + 8 + 20 * len(entries) + 8
+    out = b""
+    for tag, typ, n, value in entries:
+        out += struct.pack("<HHQQ", tag, typ, n, strip_at if tag == 273 else value)
+    return (b"II+\0" + struct.pack("<HHQ", 8, 0, 16) + struct.pack("<Q", len(entries)) + out +
+            struct.pack("<Q", 0) + bytes(strip_bytes))
 
 
 # A few hundred bytes that declare 8000 x 8000 or 8192 x 8192: refused from the header, within
@@ -151,6 +174,13 @@ def tiff_declaring(width, height, compression=1, strip_bytes=None, bits=32, samp
     ("huge-lzw.tif", tiff_declaring(8192, 8192, 5, 200), "expand at most 3640-fold"),
     ("huge-packbits.tif", tiff_declaring(8192, 8192, 32773, 200), "expand at most 64-fold"),
     ("huge-raw.tif", tiff_declaring(8192, 8192, 1, 200), "bytes of uncompressed data cannot"),
+    ("huge-slong.tif", tiff_declaring(8192, 8192, 8, 200, counts_type=9), "expand at most 1032"),
+    ("huge-long8.tif", tiff_declaring(8192, 8192, 8, 200, counts_type=16), "expand at most 1032"),
+    ("huge-sshort.tif", tiff_declaring(8192, 8192, 1, 200, counts_type=8), "uncompressed data"),
+    ("huge-slong-offsets.tif", tiff_declaring(8192, 8192, 1, 200, offsets_type=9),
+     "uncompressed data"),
+    ("huge-big.tif", bigtiff_declaring(8192, 8192, 8, 200), "expand at most 1032"),
+    ("huge-stray-byte.jpg", jpeg_declaring(8000, 8000, True, stray=True), "bytes of coded data"),
 ], ids=lambda v: v if isinstance(v, str) and v.startswith("huge") else "")
 def test_a_small_file_declaring_a_huge_image_costs_what_it_holds(irid_cli, tmp_path, name, data,
                                                                  reason):
@@ -168,6 +198,53 @@ def test_a_small_image_reads_within_the_data_limit_of_the_test_above(irid_cli, t
     status, err = run_limited(irid_cli, "clip", "--method", "clamp", "--from", "srgb",
                               tmp_path / "small.jpg", tmp_path / "out.exr", data_mb=384)
     assert status == 0, err
+
+
+def ycbcr_tiff(size):
+    """An uncompressed TIFF of YCbCr subsampled 2 x 2 (TIFF 6.0 §21): 6 bytes per 2 x 2 block."""
+    data = bytes([100, 110, 120, 130, 128, 128]) * ((size // 2) * (size // 2))
+    entries = [(256, 3, 1, size), (257, 3, 1, size), (258, 3, 3, None), (259, 3, 1, 1),
+               (262, 3, 1, 6), (273, 4, 1, None), (277, 3, 1, 3), (278, 3, 1, size),
+               (279, 4, 1, len(data)), (284, 3, 1, 1), (530, 3, 2, None)]
+    after = 8 + 2 + 12 * len(entries) + 4
+    extra = struct.pack("<3H", 8, 8, 8)
+    out = b""
+    for tag, typ, n, value in entries:
+        if tag == 258:
+            out += struct.pack("<HHII", tag, typ, n, after)
+        elif tag == 273:
+            out += struct.pack("<HHII", tag, typ, n, after + len(extra))
+        elif tag == 530:
+            out += struct.pack("<HHIHH", tag, typ, n, 2, 2)
+        elif typ == 3:
+            out += struct.pack("<HHIHH", tag, typ, n, value, 0)
+        else:
+            out += struct.pack("<HHII", tag, typ, n, value)
+    return b"II*\0" + struct.pack("<IH", 8, len(entries)) + out + b"\0\0\0\0" + extra + data
+
+
+def jpeg_header_variants():
+    """Whole JPEGs whose headers make libjpeg warn without losing a pixel."""
+    plain = bytearray(pil_bytes(random_rgb(32, 40), "JPEG", quality=90))
+    sos = plain.index(b"\xff\xda")
+    length = struct.unpack(">H", plain[sos + 2:sos + 4])[0]
+    odd_sos = bytearray(plain)
+    odd_sos[sos + 2 + length - 2] = 0                 # Se = 0: "Invalid SOS parameters"
+    jfif2 = bytearray(plain)
+    jfif2[11] = 2                                     # JFIF 2.01: "unknown JFIF revision"
+    app0_end = 4 + struct.unpack(">H", plain[4:6])[0]
+    padded = plain[:app0_end] + b"\x00" + plain[app0_end:]   # "1 extraneous bytes before marker"
+    return {"odd-sos.jpg": bytes(odd_sos), "jfif2.jpg": bytes(jfif2), "padded.jpg": bytes(padded)}
+
+
+def test_valid_files_the_checks_must_not_refuse(tmp_path):
+    (tmp_path / "ycbcr.tif").write_bytes(ycbcr_tiff(64))
+    px, _ = irid.read_image(tmp_path / "ycbcr.tif")
+    assert px.shape == (64, 64, 3)
+    for name, data in jpeg_header_variants().items():
+        (tmp_path / name).write_bytes(data)
+        px, _ = irid.read_image(tmp_path / name)
+        assert px.shape == (32, 40, 3), name
 
 
 def test_the_bounds_pass_real_files_of_every_compression(tmp_path):

@@ -115,11 +115,15 @@ def test_compression_is_written_and_unknown_names_refused(tmp_path):
 
 # --- write_image writes what is asked, or refuses ---------------------------------------------
 
-@pytest.mark.parametrize("name", ["display_p3", "Display-P3", "nope"])
+@pytest.mark.parametrize("name", ["display_p3", "Display-P3", "nope", "sRGB"])
 def test_an_unknown_space_name_is_a_key_error(tmp_path, name):
-    with pytest.raises(KeyError, match="unknown"):
+    with pytest.raises(KeyError, match="unknown.*tag=False"):
         irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space=name)
     assert not (tmp_path / "a.png").exists()
+    # Without tagging it is a text attribute, whatever it says (read_image's "sRGB" round trips).
+    irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space=name, tag=False)
+    _, meta = irid.read_image(tmp_path / "a.png")
+    assert meta["color_space"] == name and meta["icc_profile"] is None
 
 
 def test_a_space_that_is_not_rgb_cannot_tag_a_file(tmp_path):
@@ -135,10 +139,11 @@ def test_integer_arrays_are_code_values(tmp_path):
     irid.write_image(tmp_path / "a.png", codes)
     back, _ = irid.read_image(tmp_path / "a.png")
     np.testing.assert_array_equal(np.round(back * 255), codes)       # 128 stays 128, not white
-    words = np.array([[[0, 32768, 65535]]], np.uint16)
-    irid.write_image(tmp_path / "b.png", words, bits=16)
-    back, _ = irid.read_image(tmp_path / "b.png")
-    np.testing.assert_array_equal(np.round(back * 65535), words)
+    for order in ("<u2", ">u2"):
+        words = np.array([[[0, 32768, 65535]]], order)
+        irid.write_image(tmp_path / "b.png", words, bits=16)
+        back, _ = irid.read_image(tmp_path / "b.png")
+        np.testing.assert_array_equal(np.round(back * 65535), words)
     for bad in (np.int64, np.int32, np.bool_):
         with pytest.raises(ValueError, match="uint8"):
             irid.write_image(tmp_path / "c.png", np.zeros((1, 1, 3), bad))

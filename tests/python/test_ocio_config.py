@@ -122,3 +122,10 @@ def test_bad_requests_are_refused(irid_cli, tmp_path):
     odd = tmp_path / "a\x1b[31mb"
     r = run("--methods", "clamp", "--size", "5", "-o", str(odd))
     assert r.returncode == 0 and "\x1b" not in r.stdout and "\\x1b" in r.stdout, r.stdout
+
+
+def test_a_source_range_too_wide_for_the_looks_is_refused_with_the_reason(irid_cli, tmp_path):
+    r = subprocess.run([irid_cli, "ocio-config", "--range", "0,30000", "--methods", "clamp",
+                        "-o", str(tmp_path / "w")], capture_output=True, text=True)
+    assert r.returncode == 2 and "narrow the range" in r.stderr and "4096" in r.stderr, r.stderr
+    assert not (tmp_path / "w").exists()

@@ -60,9 +60,10 @@ inline constexpr int ocio_look_min_size = 5;
 /// them, spaced as 0.5 − 0.5 cos: denser near 0 and 1, where soft methods bend), the range
 /// below 0 (spaced evenly in log2(1 + |x| / w), w the first cell of [0, 1]) and above 1 (evenly
 /// in log2 x), in proportion to 1, log2(1 + |min|) and log2(max). Nodes lie on whole steps of a
-/// power of two small enough to keep them apart. Throws irid::Error for a size below
-/// ocio_look_min_size or above lut_max_size, or a source range that is not finite with
-/// -1e5 <= min < max <= 1e5 and max > 0.
+/// power of two (at most 1/64, at most 2^18 steps) small enough to keep them apart. Throws
+/// irid::Error for a size below ocio_look_min_size or above lut_max_size, a source range that is
+/// not finite with -1e5 <= min < max <= 1e5 and max > 0, or one that reaches more than 4096
+/// wide in the display's linear space.
 [[nodiscard]] LutDomain ocio_look_domain(const OcioConfigOptions& options);
 
 struct OcioConfig {
