@@ -114,32 +114,53 @@ PreparedFilm::Sample PreparedFilm::prepare(const SingleFilm& film, double cos_th
         // r_p = (N_i² q_t − N_t² q_i)/(N_i² q_t + N_t² q_i) (Born & Wolf §1.5.2; the sign
         // convention cancels in |r|²).
         const double b = n1.real(), c = n2.real(), p1 = q1.real(), p2 = q2.real();
-        return {(q0 - p1) / (q0 + p1), (p1 - p2) / (p1 + p2),
-                (a * a * p1 - b * b * q0) / (a * a * p1 + b * b * q0),
-                (b * b * p2 - c * c * p1) / (b * b * p2 + c * c * p1), two_i * (phase_scale * p1),
-                true};
+        Sample out{(q0 - p1) / (q0 + p1), (p1 - p2) / (p1 + p2),
+                   (a * a * p1 - b * b * q0) / (a * a * p1 + b * b * q0),
+                   (b * b * p2 - c * c * p1) / (b * b * p2 + c * c * p1), two_i * (phase_scale * p1),
+                   true, {}, {}, {}};
+        // Each face's amplitude is (U − V)/(U + V) with U, V >= 0 (s: U = N cos θ of the
+        // incident side, V of the other; p: the tangential-field forms above). Then
+        // 1 − r² = 4UV/(U + V)² and 1 + r01 r12 = 2(U U' + V V') / ((U + V)(U' + V')): sums of
+        // products of non-negative numbers, exact to rounding even where r → ±1.
+        const double faces[2][4] = {{q0, p1, p1, p2}, {a * a * p1, b * b * q0, b * b * p2, c * c * p1}};
+        for (int k = 0; k < 2; ++k) {
+            const double u = faces[k][0], v = faces[k][1], u2 = faces[k][2], v2 = faces[k][3];
+            const double s01 = u + v, s12 = u2 + v2;
+            const double r01 = (u - v) / s01, r12 = (u2 - v2) / s12;
+            const double one_plus_x = 2.0 * (u * u2 + v * v2) / (s01 * s12);
+            out.x[k] = r01 * r12;
+            out.transmitted[k] = (4.0 * u * v / (s01 * s01)) * (4.0 * u2 * v2 / (s12 * s12));
+            out.one_plus_x_sq[k] = one_plus_x * one_plus_x;
+        }
+        return out;
     }
     // The same amplitudes in complex form (absorbing media, evanescent waves).
     const Complex a2(a * a, 0.0), b2 = n1 * n1, c2 = n2 * n2;
     return {(q0 - q1) / (q0 + q1), (q1 - q2) / (q1 + q2), (a2 * q1 - b2 * q0) / (a2 * q1 + b2 * q0),
-            (b2 * q2 - c2 * q1) / (b2 * q2 + c2 * q1), two_i * phase_scale * q1, false};
+            (b2 * q2 - c2 * q1) / (b2 * q2 + c2 * q1), two_i * phase_scale * q1, false, {}, {}, {}};
 }
 
 double PreparedFilm::airy_reflectance(const Sample& s, double thickness_nm) noexcept {
     if (s.real) {
-        const double cos_phi = std::cos(s.phase_per_nm.imag() * thickness_nm);
-        const auto airy = [cos_phi](double r01, double r12) {
-            const double cross = 2.0 * r01 * r12 * cos_phi;
-            return (r01 * r01 + r12 * r12 + cross) / (1.0 + r01 * r01 * r12 * r12 + cross);
+        // 1 + x² + 2x cos φ = (1 + x)² − 4x sin²(φ/2): no cancellation where x → −1.
+        const double h = std::sin(0.5 * s.phase_per_nm.imag() * thickness_nm);
+        const double h2 = 4.0 * h * h;
+        const auto transmitted = [&s, h2](int k) {
+            const double den = s.one_plus_x_sq[k] - s.x[k] * h2;
+            // den >= (1 − |x|)² > 0 for real amplitudes; it is 0 only where a face is a perfect
+            // mirror (grazing incidence exactly), whose transmittance is 0.
+            return den > 0.0 ? s.transmitted[k] / den : 0.0;
         };
-        return 0.5 * (airy(s.r01_s.real(), s.r12_s.real()) + airy(s.r01_p.real(), s.r12_p.real()));
+        return std::clamp(1.0 - 0.5 * (transmitted(0) + transmitted(1)), 0.0, 1.0);
     }
     const std::complex<double> z = std::exp(s.phase_per_nm * thickness_nm);
     const auto airy = [&](std::complex<double> r01, std::complex<double> r12) {
         const std::complex<double> r12z = r12 * z;
         return std::norm(r01 + r12z) / std::norm(1.0 + r01 * r12z);
     };
-    return 0.5 * (airy(s.r01_s, s.r12_s) + airy(s.r01_p, s.r12_p));
+    // Passive media reflect at most what arrives; rounding where a face reflects totally (|r01|
+    // = 1) may give 1 + 1e-12.
+    return std::clamp(0.5 * (airy(s.r01_s, s.r12_s) + airy(s.r01_p, s.r12_p)), 0.0, 1.0);
 }
 
 namespace {

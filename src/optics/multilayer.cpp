@@ -126,9 +126,9 @@ Complex cos_theta(Complex n, double snell_invariant) noexcept {
     return normal_index(n, snell_invariant) / n;
 }
 
-FresnelCoefficients fresnel(Complex n_i, Complex n_t, double snell_invariant) noexcept {
-    const Complex q_i = normal_index(n_i, snell_invariant);
-    const Complex q_t = normal_index(n_t, snell_invariant);
+namespace {
+
+FresnelCoefficients fresnel_of(Complex n_i, Complex n_t, Complex q_i, Complex q_t) noexcept {
     const auto coefficients = [&](Polarization polarization) {
         const Admittance a = admittance(n_i, q_i, polarization);
         const Admittance b = admittance(n_t, q_t, polarization);
@@ -137,6 +137,16 @@ FresnelCoefficients fresnel(Complex n_i, Complex n_t, double snell_invariant) no
     const auto [r_s, t_s] = coefficients(Polarization::s);
     const auto [r_p, t_p] = coefficients(Polarization::p);
     return {r_s, r_p, t_s, t_p};
+}
+
+}  // namespace
+
+FresnelCoefficients fresnel(Complex n_i, Complex n_t, double snell_invariant) noexcept {
+    return fresnel_of(n_i, n_t, normal_index(n_i, snell_invariant), normal_index(n_t, snell_invariant));
+}
+
+FresnelCoefficients fresnel_from(Complex n_i, Complex n_t, double n0, double q0) noexcept {
+    return fresnel_of(n_i, n_t, normal_index_from(n_i, n0, q0), normal_index_from(n_t, n0, q0));
 }
 
 Optics airy_film(double n0, Complex n1, Complex n2, double thickness_nm, double lambda_nm,

@@ -53,10 +53,14 @@ struct Series {
 Series series(double R12, double R23) noexcept {
     // Belcour & Barla 2017, eq. 10 and the supplemental shader: T121 = 1 - R12,
     // Rs = T121² R23 / (1 - R12 R23), C0 = R12 + Rs, C_m = (Rs - T121) (R12 R23)^{m/2}.
+    // 1 − R12 R23 is written (1 − R12) + R12 (1 − R23), which loses no digit where both faces
+    // reflect almost totally (grazing incidence); where both do exactly, Rs → 0 (T121² vanishes
+    // faster than the denominator).
     const double T121 = 1.0 - R12;
     const double R123 = R12 * R23;
     const double r123 = std::sqrt(R123);
-    const double Rs = T121 * T121 * R23 / (1.0 - R123);
+    const double den = T121 + R12 * (1.0 - R23);
+    const double Rs = den > 0.0 ? T121 * T121 * R23 / den : 0.0;
     return {R12 + Rs, (Rs - T121) * r123, r123};
 }
 
@@ -72,9 +76,12 @@ struct Faces {
     double R12, R23;
     Complex phasor;
 };
-std::array<Faces, 2> exact_faces(double n0, double n1, Complex n2, double snell) noexcept {
-    const FresnelCoefficients top = fresnel(n0, n1, snell);
-    const FresnelCoefficients bottom = fresnel(n1, n2, snell);
+std::array<Faces, 2> exact_faces(double n0, double n1, Complex n2, double cos_theta) noexcept {
+    // From q0 = n0 cos θ0, not from the Snell invariant: at grazing incidence sin θ0 rounds to 1,
+    // and a film blended to the ambient's index would get N cos θ = 0 on both sides (0/0).
+    const double q0 = n0 * cos_theta;
+    const FresnelCoefficients top = fresnel_from(n0, n1, n0, q0);
+    const FresnelCoefficients bottom = fresnel_from(n1, n2, n0, q0);
     const auto faces = [](Complex r12, Complex r23) {
         return Faces{std::norm(r12), std::norm(r23), unit(-r12) * unit(r23)};
     };
@@ -319,7 +326,7 @@ Rgb belcour_iridescence(double ambient_ior, double film_ior, const ChannelIndice
     Rgb out;
     for (int c = 0; c < channels; ++c) {
         Xyz I;
-        for (const Faces& f : exact_faces(ambient_ior, n1, base[static_cast<std::size_t>(c)], snell)) {
+        for (const Faces& f : exact_faces(ambient_ior, n1, base[static_cast<std::size_t>(c)], cos_theta)) {
             const Series s = series(f.R12, f.R23);
             const double phi = std::arg(f.phasor);
             // depol(): the mean of s and p.
@@ -359,7 +366,7 @@ Rgb cycles_iridescence(double ambient_ior, double film_ior, const ChannelIndices
     Rgb out;
     for (int c = 0; c < 3; ++c) {
         double sum = 0.0;
-        for (const Faces& f : exact_faces(ambient_ior, n1, base[static_cast<std::size_t>(c)], snell)) {
+        for (const Faces& f : exact_faces(ambient_ior, n1, base[static_cast<std::size_t>(c)], cos_theta)) {
             // iridescence_airy_summation: R = C0 + Σ_{m=1}^{3} C_m 2 Re(e^{imφ} conj(S(m OPD))).
             const Series s = series(f.R12, f.R23);
             double R = s.c0;

@@ -108,8 +108,13 @@ public:
         /// 2i × 2π N1 cos θ1 / λ: z = exp(phase_per_nm × d).
         std::complex<double> phase_per_nm;
         /// Every amplitude real and the phase purely imaginary (lossless, no total reflection):
-        /// then R = (r01² + r12² + 2 r01 r12 cos φ) / (1 + r01² r12² + 2 r01 r12 cos φ).
+        /// then, per polarisation, with x = r01 r12, R = 1 − (1 − r01²)(1 − r12²) / ((1 + x)² −
+        /// 4 x sin²(φ/2)), which is (r01² + r12² + 2x cos φ) / (1 + x² + 2x cos φ) written so
+        /// that no digit is lost where both faces reflect almost totally (grazing incidence,
+        /// extreme indices): each factor is formed from the media's N cos θ directly.
         bool real;
+        /// For a real sample, s then p: x, (1 − r01²)(1 − r12²) and (1 + x)².
+        double x[2], transmitted[2], one_plus_x_sq[2];
     };
     /// The amplitudes and phase at the i-th wavelength for an angle of incidence of cosine
     /// cos_theta in the ambient; `degenerate` when the film is within |N1 cos θ1| < 1e-3 |N1| of

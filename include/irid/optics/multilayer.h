@@ -62,6 +62,10 @@ void check_incidence_angle(double angle_rad);
 /// |r|² is the reflectance and Re(η_t)/Re(η_i) |t|² the transmittance.
 [[nodiscard]] FresnelCoefficients fresnel(Complex n_i, Complex n_t,
                                           double snell_invariant) noexcept;
+/// The same for a stack lit from a lossless ambient n0 at q0 = n0 cos θ0: each N cos θ from q0
+/// rather than from the Snell invariant, which keeps its digits at grazing incidence (where
+/// sin θ0 rounds to 1 and N² − s² would be 0 for a medium of the ambient's index).
+[[nodiscard]] FresnelCoefficients fresnel_from(Complex n_i, Complex n_t, double n0, double q0) noexcept;
 
 /// One film of index n1 and thickness [nm] on a substrate n2, lit from a lossless ambient n0, by
 /// the Airy summation of all internal reflections (Born & Wolf §1.6.4 and §7.6.1):
