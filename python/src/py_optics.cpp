@@ -350,14 +350,14 @@ void add_optics(py::module_& m) {
               need(std::isfinite(lambda_nm) && lambda_nm > 0.0, "wavelength", lambda_nm, "finite and > 0 nm");
               need(std::isfinite(effective_thickness_nm) && effective_thickness_nm >= 0.0, "effective thickness",
                    effective_thickness_nm, "finite and >= 0 nm");
-              need(periods >= 0 && periods <= thesis_max_periods, "periods", periods, "in 0..1000000");
+              check_thesis_periods(periods);
               need(std::isfinite(k) && k >= 0.0, "k", k, "finite and >= 0");
               return thesis_multilayer_reflectance(lambda_nm, effective_thickness_nm, periods, k);
           }));
     m.def("thesis_multilayer_effective_thickness",
           py::vectorize([](double thickness_nm, double n, double theta_rad) {
               need(std::isfinite(thickness_nm) && thickness_nm >= 0.0, "thickness", thickness_nm, "finite and >= 0 nm");
-              need(std::isfinite(n) && n >= 1.0, "n", n, "finite and >= 1 (eq. 26 assumes air around)");
+              check_thesis_air_index(n, "n");
               need(std::isfinite(theta_rad) && theta_rad >= 0.0 && theta_rad < 1.5707963267948966, "angle",
                    theta_rad, "in [0, pi/2) rad");
               return thesis_multilayer_effective_thickness_nm(thickness_nm, n, theta_rad);
@@ -376,7 +376,7 @@ void add_optics(py::module_& m) {
           },
           py::arg("ambient"), py::arg("film"), py::arg("substrate"), py::arg("wavelength"));
     m.def("thesis_unit_peak_k", [](int periods) {
-        need(periods >= 0 && periods <= thesis_max_periods, "periods", periods, "in 0..1000000");
+        check_thesis_periods(periods);
         return thesis_unit_peak_k(periods);
     });
 

@@ -224,13 +224,8 @@ ThesisMultilayerFilm::ThesisMultilayerFilm(Material film, double thickness_nm, i
                                            std::optional<double> k)
     : m_film(std::move(film)), m_thickness_nm(thickness_nm), m_periods(periods) {
     check_thesis_material(m_film, "film");
-    if (real_index(m_film, 555.0) < 1.0) {
-        throw Error("eq. 26 needs the film's index >= 1 (air around it); '" + m_film.name() + "' has " +
-                    format_shortest(real_index(m_film, 555.0)) + " at 555 nm");
-    }
-    if (periods < 0 || periods > thesis_max_periods) {
-        throw Error("periods " + std::to_string(periods) + " must be in 0.." + std::to_string(thesis_max_periods));
-    }
+    check_thesis_air_index(real_index(m_film, 555.0), "'" + m_film.name() + "' at 555 nm");
+    check_thesis_periods(periods);
     check_film_thickness(thickness_nm);
     if (k) check_k(*k);
     m_k = k ? *k : thesis_unit_peak_k(periods);

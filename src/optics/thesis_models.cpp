@@ -40,8 +40,11 @@ void require_positive(std::string_view model, std::string_view name, double valu
 }
 
 void require_periods(std::string_view model, int periods) {
-    if (periods < 0 || periods > thesis_max_periods)
-        reject(model, "periods", periods, "", "in [0, " + std::to_string(thesis_max_periods) + "]");
+    try {
+        check_thesis_periods(periods);
+    } catch (const Error& e) {
+        throw Error(std::string(model) + ": " + e.what());
+    }
 }
 
 /// Angles are in the ambient medium, measured from the normal: grazing (90°) is excluded.
@@ -185,6 +188,20 @@ double ThesisFilmTable::max_effective_thickness_nm() const noexcept {
 }
 
 // --- Multiple films ------------------------------------------------------------------------
+
+void check_thesis_periods(int periods) {
+    if (periods < thesis_min_periods || periods > thesis_max_periods) {
+        throw Error("periods " + std::to_string(periods) + " must be in " + std::to_string(thesis_min_periods) +
+                    ".." + std::to_string(thesis_max_periods) + " (l, the number of films of eq. 25)");
+    }
+}
+
+void check_thesis_air_index(double n, std::string_view what) {
+    if (!(std::isfinite(n) && n >= 1.0)) {
+        throw Error("eq. 26 needs the film's index >= 1 (air around it); " + std::string(what) + " has " +
+                    format_shortest(n));
+    }
+}
 
 void validate_thesis_multilayer(const ThesisMultilayerParameters& stack) {
     constexpr std::string_view model = "thesis multilayer";

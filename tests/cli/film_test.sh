@@ -252,11 +252,13 @@ expect_eq25 '100 * sqrt(1.56 ^ 2 - 0.25)' 12 1 1e-9 81
 POLE=$(num '2 * 100 * sqrt(1.56 ^ 2 - 0.25)')
 run film --model thesis-multilayer --layer 1.56:100 --periods 12 --angle 30 --wavelengths "$POLE:$POLE:1" --K 1
 expect_rows 'w[2] = 84.5' 1e-9 1 rel
-# No period beyond the first film: K / 2 everywhere.
+# No film is no multilayer (eq. 25 would be one interface, a perfect mirror with the default K).
 run film --model thesis-multilayer --layer 1.56:100 --periods 0 --K 1
-expect_rows 'w[2] = 0.5' 1e-12 81
-run film --model thesis-multilayer --layer 1.56:100 --periods 0 --K 0.5
-expect_rows 'w[2] = 0.25' 1e-12 81
+expect_usage_error "--periods" "1..1000000"
+run film --model morpho --periods 0
+expect_usage_error "--periods" "1..1000000"
+run film --model thesis-multilayer --layer 0.9:100 --periods 3
+expect_usage_error "eq. 26" ">= 1"
 
 # === 4. Morpho (eq. 25 with eq. 29) ========================================================
 
@@ -525,7 +527,7 @@ expect_usage_error "--d1" "[0, 1e6]"
 run film --model morpho --n 0.5
 expect_usage_error "--n" ">= 1"
 run film --model morpho --periods -1
-expect_usage_error "--periods" "0..1000000"
+expect_usage_error "--periods" "1..1000000"
 
 # ===========================================================================================
 

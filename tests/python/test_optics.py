@@ -361,3 +361,27 @@ def test_renderer_film_agrees_with_the_cli(irid_cli):
     c = irid.renderer_film_color("belcour", 1.33, 350.0, angle=30.0, substrate="water")
     np.testing.assert_allclose(c.rgb, [float(row[k]) for k in ("R_linear", "G_linear", "B_linear")], rtol=1e-12)
     np.testing.assert_allclose(c.xyz, [float(row[k]) for k in ("X", "Y", "Z")], rtol=1e-12)
+
+
+@pytest.mark.parametrize("integration", ["sum", "fourier"])
+def test_film_colours_are_finite_up_to_grazing_incidence(integration):
+    # The cases: a film of zero thickness at 89.9999999°, an index of 1e6 at 89.9°.
+    angles = np.array([0.0, 45.0, 89.0, 89.9, 89.99999, 89.9999999])
+    for layer, substrate in [("1.33", "air"), ("1e6", "air"), ("2.4", "1.5"), ("1.0001", "1e6")]:
+        for t in (0.0, 1e-12, 300.0, 5000.0):
+            c = irid.film_color([(layer, t)], thickness=t, angle=angles, substrate=substrate,
+                                integration=integration)
+            assert np.all(np.isfinite(c.xyz)) and np.all(np.isfinite(c.rgb)), (layer, t)
+    # Zero thickness between like media is no interface at all; at grazing a real film mirrors.
+    zero = irid.film_color([("1.33", 0.0)], thickness=0.0, angle=89.9999999, integration=integration)
+    np.testing.assert_allclose(zero.xyz, 0.0, atol=1e-9)
+    mirror = irid.film_color([("1.33", 300.0)], thickness=300.0, angle=89.9999999,
+                             integration=integration)
+    assert abs(mirror.xyz[..., 1] - 1.0) < 1e-6
+
+
+def test_a_multilayer_of_no_film_is_refused():
+    with pytest.raises(ValueError, match="1..1000000"):
+        irid.Film.thesis_multilayer("1.56", 100.0, 0)
+    with pytest.raises(ValueError, match="1..1000000"):
+        irid.thesis_unit_peak_k(0)

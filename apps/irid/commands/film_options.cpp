@@ -77,9 +77,6 @@ FilmModelKind parse_model(const std::string& name) {
     }
 }
 
-/// Real part of an index at a wavelength: the thesis' models take real indices.
-double real_index(const Material& m, double lambda_nm) { return m.index(lambda_nm).real(); }
-
 }  // namespace
 
 std::size_t Range::count() const {
@@ -208,9 +205,10 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
     const auto layer_option = [&](std::size_t i) {
         return "--layer " + std::to_string(i + 1) + " '" + a.layers[i] + "'";
     };
-    if (a.periods < 0 || a.periods > thesis_max_periods) {
-        throw UsageError("--periods " + std::to_string(a.periods) + " must be in 0.." +
-                         std::to_string(thesis_max_periods));
+    try {
+        check_thesis_periods(a.periods);
+    } catch (const Error& e) {
+        throw UsageError(std::string("--") + e.what());
     }
     // Options of another model are refused rather than silently ignored.
     const auto refuse = [&](std::initializer_list<const char*> options) {
@@ -272,9 +270,6 @@ Film parse_film(const FilmArguments& a, bool thickness_required) {
             need_layers(1, "thesis-multilayer");
             if (!given("--periods")) throw UsageError("--periods is required with --model thesis-multilayer");
             thesis_material(layers.front().material, "film", layer_option(0));
-            if (real_index(layers.front().material, 555.0) < 1.0) {
-                throw UsageError("--layer: eq. 26 needs the film's index >= 1 (air around it)");
-            }
             f.model = std::make_shared<ThesisMultilayerFilm>(
                 layers.front().material, layers.front().thickness_nm.value_or(0.0), a.periods,
                 given("--K") ? std::optional<double>(a.k) : std::nullopt);

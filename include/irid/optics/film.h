@@ -158,7 +158,8 @@ class ThesisMultilayerFilm final : public FilmModel {
 public:
     /// K defaults to thesis_unit_peak_k(periods) (peak 1; K = 1 is the thesis as written).
     /// Throws irid::Error for an absorbing film, an index below 1 at 555 nm (eq. 26 assumes air
-    /// around), periods outside 0..thesis_max_periods, a bad thickness or K <= 0.
+    /// around), periods outside thesis_min_periods..thesis_max_periods (check_thesis_periods), a
+    /// bad thickness or K <= 0.
     ThesisMultilayerFilm(Material film, double thickness_nm, int periods,
                          std::optional<double> k = std::nullopt);
     [[nodiscard]] FilmModelKind kind() const noexcept override { return FilmModelKind::thesis_multilayer; }

@@ -49,6 +49,7 @@
 // - The Morpho table is sampled at equal steps over θ ∈ [0°, 90°] (90° is the last node, so a
 //   lookup anywhere in [0°, 90°) interpolates between two nodes).
 
+#include <string_view>
 #include <irid/color/observer.h>
 #include <irid/color/spectrum.h>
 #include <irid/color/types.h>
@@ -147,10 +148,23 @@ struct ThesisMultilayerParameters {
     double K = 1.0;
 };
 
-/// Largest number of periods accepted: far beyond any natural multilayer.
+/// The numbers of periods accepted: at least one film (with none, eq. 25 is one interface, which
+/// K = 2/(l+1)² turns into a perfect mirror), and far beyond any natural multilayer.
+inline constexpr int thesis_min_periods = 1;
 inline constexpr int thesis_max_periods = 1'000'000;
 
-/// Throws irid::Error naming the parameter unless 1 ≤ n (finite), 0 ≤ periods ≤ 1e6, K ≥ 0.
+/// Throws irid::Error "periods N must be in 1..1000000 (...)" unless periods is in
+/// [thesis_min_periods, thesis_max_periods]: the one check of every caller (models, command
+/// line, Python).
+void check_thesis_periods(int periods);
+
+/// Throws irid::Error unless n is finite and >= 1: eq. 26 and 29 take the films to be in air,
+/// so a film's index below the ambient's has no meaning there. `what` names the film ("'chitin'
+/// has 1.56 at 555 nm" style detail is the caller's `what`).
+void check_thesis_air_index(double n, std::string_view what);
+
+/// Throws irid::Error naming the parameter unless 1 ≤ n (finite), periods within
+/// check_thesis_periods, K ≥ 0.
 void validate_thesis_multilayer(const ThesisMultilayerParameters& stack);
 
 /// Smits 1990, eq. 25 (after Anderson 1942): I = ½K (sin(2π(l+1)t/λ) / sin(2πt/λ))², t the
