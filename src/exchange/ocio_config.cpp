@@ -95,7 +95,9 @@ LutDomain ocio_look_domain(const OcioConfigOptions& o) {
                     std::to_string(ocio_look_min_size) + " to " + std::to_string(lut_max_size) + " nodes");
     }
     const ColorSpace source = canonical(o.source);
-    const auto [bottom, top] = ocio_source_range(o);
+    // Named variables, not structured bindings: a lambda below captures them (clang 14 cannot).
+    const std::pair<double, double> range = ocio_source_range(o);
+    const double bottom = range.first, top = range.second;
     // The corners of the source cube in the display's linear space bound every source colour:
     // the conversion is one matrix, after decoding (which maps [0, 1] onto [0, 1] and keeps
     // order).
