@@ -24,6 +24,11 @@ import irid
 
 COLORD = pathlib.Path("/usr/share/color/icc/colord")   # colord-data (scripts/install-deps)
 
+# AddressSanitizer reserves terabytes of shadow memory as a program starts, which a data limit
+# forbids: in the sanitizer build (whose ctest preset loads libasan) the runs go unlimited and
+# only the refusal itself is checked; the Release build checks the memory too.
+SANITIZED = "libasan" in os.environ.get("LD_PRELOAD", "")
+
 
 def random_rgb(h=96, w=80, seed=3):
     return (np.random.default_rng(seed).random((h, w, 3)) * 255).astype(np.uint8)
@@ -43,7 +48,7 @@ def run_limited(cli, *args, data_mb=None):
         size = data_mb << 20
         resource.setrlimit(resource.RLIMIT_DATA, (size, size))
     r = subprocess.run([cli, *map(str, args)], capture_output=True, text=True,
-                       preexec_fn=limit if data_mb else None)
+                       preexec_fn=limit if data_mb and not SANITIZED else None)
     return r.returncode, r.stderr
 
 
@@ -193,6 +198,7 @@ def test_a_small_file_declaring_a_huge_image_costs_what_it_holds(irid_cli, tmp_p
         irid.read_image(tmp_path / name)
 
 
+@pytest.mark.skipif(SANITIZED, reason="AddressSanitizer's shadow memory exceeds any data limit")
 def test_a_small_image_reads_within_the_data_limit_of_the_test_above(irid_cli, tmp_path):
     (tmp_path / "small.jpg").write_bytes(whole_files()["jpg"])
     status, err = run_limited(irid_cli, "clip", "--method", "clamp", "--from", "srgb",
