@@ -19,31 +19,26 @@
 namespace irid::io::header {
 namespace {
 
-/// The most a TIFF compression expands its data, or nothing when irid knows no bound.
-std::optional<double> max_expansion(std::uint64_t compression) {
+/// A TIFF compression irid bounds: the most it expands its data, and its name for messages.
+struct Expansion {
+    double factor;
+    const char* name;
+};
+
+/// Nothing for a compression irid knows no bound of.
+std::optional<Expansion> max_expansion(std::uint64_t compression) {
     switch (compression) {
-        case 1:  // none
-            return 1.0;
+        case 1:
+            return Expansion{1.0, "uncompressed data"};
         case 8:
         case 32946:  // deflate: at most 1032-fold (zlib's FAQ, "What's the maximum compression ratio?")
-            return 1032.0;
+            return Expansion{1032.0, "deflate"};
         case 5:  // LZW (TIFF 6.0 §13): a code of at least 9 bits stands for at most 4096 bytes
-            return 4096.0 * 8.0 / 9.0;
+            return Expansion{4096.0 * 8.0 / 9.0, "LZW"};
         case 32773:  // PackBits (TIFF 6.0 §9): two bytes repeat one byte at most 128 times
-            return 64.0;
+            return Expansion{64.0, "PackBits"};
         default:
             return std::nullopt;
-    }
-}
-
-const char* compression_name(std::uint64_t compression) {
-    switch (compression) {
-        case 1: return "uncompressed data";
-        case 5: return "LZW";
-        case 8:
-        case 32946: return "deflate";
-        case 32773: return "PackBits";
-        default: return "its compression";
     }
 }
 
@@ -221,7 +216,7 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
         }
         coded += *count;
     }
-    const std::optional<double> expansion = max_expansion(compression);
+    const std::optional<Expansion> expansion = max_expansion(compression);
     if (!expansion || n == 0) return;
     // Bytes the pixels take uncompressed; subsampled YCbCr (photometric 6) stores each block of
     // h × v pixels as h v luma and 2 chroma samples (TIFF 6.0 §21).
@@ -232,14 +227,14 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
                               ? std::ceil(w / static_cast<double>(sub_h)) * std::ceil(h / static_cast<double>(sub_v)) *
                                     static_cast<double>(sub_h * sub_v + 2) * bytes_per_sample
                               : w * h * static_cast<double>(samples) * bytes_per_sample;
-    if (needed > *expansion * static_cast<double>(coded) + 1024.0) {
+    if (needed > expansion->factor * static_cast<double>(coded) + 1024.0) {
         corrupt(shown, declared_size_text(width, height) + " of " + std::to_string(samples) + " samples at " +
                            std::to_string(bits) + " bits need " +
                            std::to_string(static_cast<std::uint64_t>(needed)) + " bytes, and its " +
-                           std::to_string(coded) + " bytes of " + compression_name(compression) +
+                           std::to_string(coded) + " bytes of " + expansion->name +
                            " cannot hold them" +
                            (compression == 1 ? std::string()
-                                             : " (they expand at most " + std::to_string(static_cast<int>(*expansion)) + "-fold)"));
+                                             : " (they expand at most " + std::to_string(static_cast<int>(expansion->factor)) + "-fold)"));
     }
 }
 

@@ -44,28 +44,34 @@ def test_ociocheck_passes_for_every_source(irid_cli, tmp_path, display):
         assert ok, f"--from {source} --to {display}:\n{out}"
 
 
-def test_aliases_and_encoded_sources_are_what_they_say(irid_cli, tmp_path):
+def load_config(irid_cli, folder, source, display, methods, size=None):
     import PyOpenColorIO as ocio
-    config = ocio.Config.CreateFromFile(str(write_config(irid_cli, tmp_path / "a", "acescg",
-                                                          "srgb", ["clamp"], size=5)))
+    return ocio.Config.CreateFromFile(str(write_config(irid_cli, folder, source, display, methods,
+                                                       size=size)))
+
+
+def applied(config, rgb, *processor_args):
+    """rgb (float32) through config.getProcessor(*processor_args) on the CPU."""
+    out = np.array(rgb, np.float32)
+    config.getProcessor(*processor_args).getDefaultCPUProcessor().applyRGB(out)
+    return out
+
+
+def test_aliases_and_encoded_sources_are_what_they_say(irid_cli, tmp_path):
+    config = load_config(irid_cli, tmp_path / "a", "acescg", "srgb", ["clamp"], size=5)
     # The alias is the linear space: scene_linear, values above 1 kept (no [0, 1] clamp).
     assert config.getColorSpace("scene_linear").getName() == "acescg-linear"
     assert config.getColorSpace("acescg").getName() == "acescg-linear"
     assert config.getColorSpace("acescg-linear").getEncoding() == "scene-linear"
-    p = config.getProcessor("acescg", "srgb-linear").getDefaultCPUProcessor()
-    bright = np.array([[4.0, 2.0, 1.5]], np.float32)
-    p.applyRGB(bright)
-    np.testing.assert_allclose(bright, irid.convert([[4.0, 2.0, 1.5]], "acescg-linear",
-                                                    "srgb-linear"), rtol=1e-5)
+    bright = [[4.0, 2.0, 1.5]]
+    np.testing.assert_allclose(applied(config, bright, "acescg", "srgb-linear"),
+                               irid.convert(bright, "acescg-linear", "srgb-linear"), rtol=1e-5)
     # An encoded source decodes to its linear form, the reference.
-    config = ocio.Config.CreateFromFile(str(write_config(irid_cli, tmp_path / "p3",
-                                                          "display-p3", "srgb", ["clamp"], size=5)))
+    config = load_config(irid_cli, tmp_path / "p3", "display-p3", "srgb", ["clamp"], size=5)
     assert config.getColorSpace("scene_linear").getName() == "display-p3-linear"
-    p = config.getProcessor("display-p3", "display-p3-linear").getDefaultCPUProcessor()
-    codes = np.array([[0.2, 0.5, 0.9]], np.float32)
-    p.applyRGB(codes)
-    np.testing.assert_allclose(codes, irid.convert([[0.2, 0.5, 0.9]], "display-p3",
-                                                   "display-p3-linear"), atol=2e-6)
+    codes = [[0.2, 0.5, 0.9]]
+    np.testing.assert_allclose(applied(config, codes, "display-p3", "display-p3-linear"),
+                               irid.convert(codes, "display-p3", "display-p3-linear"), atol=2e-6)
 
 
 def test_one_space_as_source_and_display_clips_what_the_cube_cannot_hold(irid_cli, tmp_path):
