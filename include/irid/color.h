@@ -2,6 +2,7 @@
 
 // The spectral colour-science core of irid: one include for all of it.
 #include <irid/color/adaptation.h>
+#include <irid/color/colorimeter.h>
 #include <irid/color/convert.h>
 #include <irid/color/difference.h>
 #include <irid/color/illuminant.h>

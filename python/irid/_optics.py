@@ -163,8 +163,6 @@ class Film:
             raise ValueError(f"blend: {blend!r} is not True or False")
         if not isinstance(blend_vary, str):
             raise ValueError(f"blend_vary: {blend_vary!r} is not a name")
-        if not 0 <= periods <= 1_000_000:
-            raise ValueError(f"periods: {periods} must be in 0..1000000")
         return cls(_irid.film_morpho(_number(d1, "d1"), _number(d2, "d2"), _number(n, "n"), int(periods),
                                      _optional_number(k, "k"), bool(blend), blend_vary,
                                      _number(blend_min, "blend_min"), _number(blend_max, "blend_max"),

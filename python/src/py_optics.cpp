@@ -305,7 +305,8 @@ void add_optics(py::module_& m) {
         "film_morpho",
         [](double d1, double d2, double n, int periods, std::optional<double> k, bool blend,
            const std::string& vary, double blend_min, double blend_max, int blend_samples) -> FilmPtr {
-            const MorphoParameters wing{d1, d2, n, periods, k ? *k : thesis_unit_peak_k(std::max(periods, 0))};
+            check_thesis_periods(periods);
+            const MorphoParameters wing{d1, d2, n, periods, k ? *k : thesis_unit_peak_k(periods)};
             std::optional<MorphoBlend> b;
             if (blend) {
                 if (vary != "d1" && vary != "d2") {

@@ -6,6 +6,7 @@
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
 #include <irid/optics/film.h>
+#include <irid/optics/film_error_study.h>
 #include <irid/optics/material.h>
 
 #include "figure_support.h"

@@ -9,6 +9,7 @@
 #include <irid/gamut/clip.h>
 #include <irid/gamut/report.h>
 #include <irid/optics/film_color.h>
+#include <irid/optics/film_error_study.h>
 #include <irid/optics/thesis_models.h>
 
 #include <span>

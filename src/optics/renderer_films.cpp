@@ -4,6 +4,7 @@
 #include <irid/error.h>
 #include <irid/optics/fourier_film.h>
 #include <irid/optics/renderer_films.h>
+#include <irid/optics/work_limits.h>
 
 #include "statistics.h"
 

@@ -10,6 +10,7 @@
 #include <irid/figures/figures.h>
 #include <irid/gamut/analysis.h>
 #include <irid/optics/film_color.h>
+#include <irid/optics/film_error_study.h>
 #include <irid/optics/material.h>
 #include <irid/optics/thesis_models.h>
 

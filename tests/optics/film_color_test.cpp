@@ -3,6 +3,7 @@
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/optics/film_color.h>
+#include <irid/optics/film_error_study.h>
 #include <irid/optics/thesis_models.h>
 
 #include <gtest/gtest.h>

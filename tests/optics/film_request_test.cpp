@@ -3,7 +3,9 @@
 // closed forms.
 #include <irid/error.h>
 #include <irid/optics/film_color.h>
+#include <irid/optics/film_error_study.h>
 #include <irid/optics/multilayer.h>
+#include <irid/optics/work_limits.h>
 #include <irid/optics/thesis_models.h>
 
 #include <gtest/gtest.h>

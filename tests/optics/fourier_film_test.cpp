@@ -3,6 +3,8 @@
 // thickness and the incoherent sum of the two faces for a thick film.
 #include <irid/color/illuminant.h>
 #include <irid/error.h>
+#include <irid/optics/film_error_study.h>
+#include <irid/optics/fine_sum.h>
 #include <irid/optics/fourier_film.h>
 #include <irid/optics/multilayer.h>
 #include <irid/optics/renderer_films.h>
@@ -32,24 +34,47 @@ std::shared_ptr<const FourierColorimeter> shared_table(const Colorimeter& c, int
 
 struct Error2000 {
     double max = 0.0, mean = 0.0;
+    double worst_thickness = 0.0, worst_angle = 0.0;
 };
 
-/// ΔE2000 between the series and the 1 nm sum over thickness 0..2000 nm × angle 0..85°.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool sanitized = true;
+#else
+constexpr bool sanitized = false;
+#endif
+
+/// What the series stands for: the 1 nm sum (prepared at the angle), or where the 1 nm grid
+/// aliases, a sum fine enough that it does not (fine_sum.h).
+Xyz reference_xyz(const SingleFilm& film, double t, double theta, const Colorimeter& c, const PreparedFilm& prepared) {
+    const double step = alias_free_step_nm(film, t, theta);
+    return step >= 1.0 ? prepared.color(t, c).xyz : finely_summed_film_xyz(film, t, theta, c, std::max(step, 1e-4));
+}
+
+/// ΔE2000 between the series and its reference over thickness 0..max nm × angle 0..max°, and the
+/// share of the grid the series left to the 1 nm sum.
 Error2000 error_over_grid(const SingleFilm& film, const FourierFilm& fourier, const Colorimeter& c,
-                          double thickness_step = 13.0, double angle_step = 8.5) {
+                          double thickness_step = 13.0, double angle_step = 8.5, double max_thickness = 2000.0,
+                          double max_angle = 85.0, double* summed_share = nullptr) {
     Error2000 e;
-    int n = 0;
-    for (double angle = 0.0; angle <= 85.0 + 1e-9; angle += angle_step) {
+    int n = 0, summed = 0;
+    for (double angle = 0.0; angle <= max_angle + 1e-9; angle += angle_step) {
         const double theta = angle * pi / 180.0;
         const PreparedFilm exact(film, theta);
-        for (double t = 0.0; t <= 2000.0; t += thickness_step) {
-            const double d = delta_e_2000_of(c, exact.color(t, c).xyz, fourier.xyz(t, std::cos(theta)));
-            e.max = std::max(e.max, d);
+        for (double t = 0.0; t <= max_thickness + 1e-9; t += thickness_step) {
+            const double d = delta_e_2000_of(c, reference_xyz(film, t, theta, c, exact), fourier.xyz(t, std::cos(theta)));
+            EXPECT_TRUE(std::isfinite(d)) << t << " nm at " << angle;
+            if (!(d <= e.max)) {
+                e.max = d;
+                e.worst_thickness = t;
+                e.worst_angle = angle;
+            }
             e.mean += d;
+            summed += fourier.summed_at(t, std::cos(theta)) ? 1 : 0;
             ++n;
         }
     }
     e.mean /= n;
+    if (summed_share != nullptr) *summed_share = static_cast<double>(summed) / n;
     return e;
 }
 
@@ -64,8 +89,9 @@ TEST(FourierColorimeter, BandsPartitionTheWhite) {
             sum.Z += f.band_white(b).Z;
             // At τ = 0 the transform is the band's white (every phasor is 1).
             const auto v = f.transform(b, 0.0);
-            EXPECT_NEAR(v.y.real(), f.band_white(b).Y, 1e-12);
-            EXPECT_NEAR(v.y.imag(), 0.0, 1e-12);
+            // (The table is single precision.)
+            EXPECT_NEAR(v.y.real(), f.band_white(b).Y, 1e-7);
+            EXPECT_NEAR(v.y.imag(), 0.0, 1e-7);
             EXPECT_GT(f.max_opd_nm(b), 10000.0);
         }
         EXPECT_NEAR(sum.X, c.white().X, 1e-12) << bands;
@@ -207,7 +233,7 @@ TEST(FourierFilm, WhereTheBandModelFailsTheSumIsUsed) {
             const double theta = angle * pi / 180.0;
             const PreparedFilm exact(film, theta);
             for (const double t : thicknesses) {
-                EXPECT_LT(delta_e_2000_of(c, exact.color(t, c).xyz, fourier.xyz(t, std::cos(theta))), bound)
+                EXPECT_LT(delta_e_2000_of(c, reference_xyz(film, t, theta, c, exact), fourier.xyz(t, std::cos(theta))), bound)
                     << film.film.name() << " under " << film.ambient.name() << ", " << t << " nm at " << angle;
             }
         }
@@ -216,7 +242,9 @@ TEST(FourierFilm, WhereTheBandModelFailsTheSumIsUsed) {
     // ambient's dispersion moves it through the spectrum: q1 changes fast across the band.
     within({*find_material("water"), Material::constant("film", 1.2), Material::constant("glass", 1.6)},
            {50.0, 55.0, 60.0, 62.5, 63.0, 63.5}, {5.0, 300.0, 1640.0, 2680.0}, 0.25);
-    // Grazing incidence on a thick film: |q| → 1, and the terms past the table would matter.
+    // Grazing incidence on a thick film: |q| → 1 and the reflections that matter reach past
+    // 100 µm, where the 1 nm sum aliases (it errs by 0.14 to 0.43 here): the reference is the
+    // finer sum.
     within({Material::constant("air", 1.0), Material::constant("film", 1.33), Material::constant("air", 1.0)},
            {88.0, 89.5}, {1500.0, 2930.0, 4000.0}, 0.05);
     // A Sellmeier pole just past the visible (at 880 nm) bends the index across the band.
@@ -297,6 +325,142 @@ TEST(FourierFilm, RefusesAbsorbingFilmsAndModelsItDoesNotCover) {
     EXPECT_EQ(parse_film_integration("fourier"), FilmIntegration::fourier);
     EXPECT_EQ(film_integration_name(FilmIntegration::sum), "sum");
     EXPECT_THROW((void)parse_film_integration("fft"), UnknownNameError);
+}
+
+TEST(FourierFilm, ConstantIndicesWithinTheBoundAtEveryThicknessAndAngle) {
+    // The README's claim for constant indices: within ΔE2000 0.025 of the exact colour over
+    // thickness 0–5000 nm every 10 nm × angle 0–89° every 1°, without falling back. Where the
+    // 1 nm grid aliases (free films at steep angles, any film past ~100 µm of reach) the exact
+    // colour is the finer sum, evaluated at every 10th thickness there to bound the test's time.
+    const Colorimeter c;
+    const auto table = shared_table(c);
+    const double t_step = sanitized ? 50.0 : 10.0, a_step = sanitized ? 89.0 / 22.0 : 1.0;
+    for (const double n1 : {1.2, 1.33, 1.5, 2.0, 2.4}) {
+        for (const Complex n2 : {Complex(1.0), Complex(1.5), Complex(0.12, 3.34)}) {
+            const SingleFilm film = constant_film(1.0, n1, n2);
+            const FourierFilm fourier(film, table);
+            double worst = 0.0, worst_t = 0.0, worst_a = 0.0;
+            int summed = 0;
+            for (double angle = 0.0; angle <= 89.0 + 1e-9; angle += a_step) {
+                const double theta = angle * pi / 180.0;
+                const PreparedFilm exact(film, theta);
+                int k = 0;
+                for (double t = 0.0; t <= 5000.0 + 1e-9; t += t_step, ++k) {
+                    const double step = alias_free_step_nm(film, t, theta);
+                    if (step < 1.0 && k % 10 != 0) continue;
+                    const Xyz ref = step >= 1.0 ? exact.color(t, c).xyz
+                                                : finely_summed_film_xyz(film, t, theta, c, std::max(step, 1e-4));
+                    const double d = delta_e_2000_of(c, ref, fourier.xyz(t, std::cos(theta)));
+                    summed += fourier.summed_at(t, std::cos(theta)) ? 1 : 0;
+                    if (!(d <= worst)) {
+                        worst = d;
+                        worst_t = t;
+                        worst_a = angle;
+                    }
+                }
+            }
+            EXPECT_LE(worst, 0.025) << "film " << n1 << " on " << n2 << ": " << worst_t << " nm at " << worst_a;
+            EXPECT_EQ(summed, 0) << "film " << n1 << " on " << n2;
+        }
+    }
+}
+
+TEST(FourierFilm, ThickFilmsToAMillimetreAgainstAFineEnoughSum) {
+    // Thickness 5 µm to 1 mm (the most the commands accept), log-spaced, at angles to 89°: the
+    // 1 nm sum aliases over most of this range, so the reference is the sum at a step fine
+    // enough for the reflections that matter (skipped where that would take more than 2 million
+    // reflectances: a free film at 89° past 0.5 mm, whose series is the incoherent sum).
+    const Colorimeter c;
+    const auto table = shared_table(c);
+    for (const double n1 : {1.33, 2.4}) {
+        for (const Complex n2 : {Complex(1.0), Complex(1.5)}) {
+            const SingleFilm film = constant_film(1.0, n1, n2);
+            const FourierFilm fourier(film, table);
+            int compared = 0;
+            for (double t = 5000.0; t <= 1e6 * 1.0001; t *= sanitized ? 2.0 : 1.25) {
+                for (const double angle : {0.0, 40.0, 70.0, 85.0, 89.0}) {
+                    const double theta = angle * pi / 180.0;
+                    const double step = alias_free_step_nm(film, t, theta);
+                    if (470.0 / step > 2e6) continue;
+                    const Xyz ref = finely_summed_film_xyz(film, t, theta, c, std::min(step, 0.1));
+                    EXPECT_LE(delta_e_2000_of(c, ref, fourier.xyz(t, std::cos(theta))), 0.025)
+                        << "film " << n1 << " on " << n2 << ": " << t << " nm at " << angle;
+                    EXPECT_FALSE(fourier.summed_at(t, std::cos(theta)));
+                    ++compared;
+                }
+            }
+            EXPECT_GT(compared, sanitized ? 30 : 100);
+        }
+    }
+}
+
+TEST(FourierFilm, TheOneNanometreSumAliasesWhereTheFineSumDoesNot) {
+    // Why the references above switch: a free film of 1.33 at 89.5° and 4 µm. Its reflections
+    // decay slowly (|q| ≈ 0.9) and reach past 100 µm: the 1 nm sum is 0.43 away from sums at
+    // 0.1 and 0.01 nm, which agree with each other and with the series.
+    const Colorimeter c;
+    const SingleFilm film = constant_film(1.0, 1.33, Complex(1.0));
+    const double theta = 89.5 * pi / 180.0;
+    const Xyz coarse = PreparedFilm(film, theta).color(4000.0, c).xyz;
+    const Xyz fine = finely_summed_film_xyz(film, 4000.0, theta, c, 0.1);
+    const Xyz finer = finely_summed_film_xyz(film, 4000.0, theta, c, 0.01);
+    EXPECT_LT(delta_e_2000_of(c, fine, finer), 0.005);
+    EXPECT_GT(delta_e_2000_of(c, coarse, finer), 0.2);
+    EXPECT_LT(alias_free_step_nm(film, 4000.0, theta), 1.0);
+    const FourierFilm fourier(film, shared_table(c));
+    EXPECT_LT(delta_e_2000_of(c, fourier.xyz(4000.0, std::cos(theta)), finer), 0.005);
+    // Where nothing aliases, the fine sum is the 1 nm sum to interpolation error, and the step
+    // is the 1 nm grid's.
+    const SingleFilm glass = constant_film(1.0, 1.5, Complex(1.6));
+    EXPECT_EQ(alias_free_step_nm(glass, 500.0, 0.3), 1.0);
+    EXPECT_LT(delta_e_2000_of(c, PreparedFilm(glass, 0.3).color(500.0, c).xyz,
+                              finely_summed_film_xyz(glass, 500.0, 0.3, c, 0.1)),
+              0.01);
+    EXPECT_THROW((void)finely_summed_film_xyz(glass, 500.0, 0.3, c, 0.0), Error);
+    EXPECT_THROW((void)finely_summed_film_xyz(glass, 500.0, 0.3, c, 2.0), Error);
+}
+
+TEST(FourierFilm, ATotallyReflectingThickFilmIsWhite) {
+    // Under water past a 1.2 film's critical angle (64.4°), a film through which nothing tunnels
+    // (e^{-2κd} < 1e-10) reflects everything: the series gives the white without the 1 nm sum;
+    // a thin one still tunnels and is summed.
+    const Colorimeter c;
+    for (const bool dispersive : {false, true}) {
+        const SingleFilm film{dispersive ? *find_material("water") : Material::constant("water", 1.333),
+                              Material::constant("film", 1.2), Material::constant("glass", 1.6)};
+        const FourierFilm fourier(film, fourier_colorimeter_for(film, c));
+        const double theta = 75.0 * pi / 180.0;
+        const PreparedFilm exact(film, theta);
+        EXPECT_FALSE(fourier.summed_at(5000.0, std::cos(theta)));
+        EXPECT_NEAR(fourier.xyz(5000.0, std::cos(theta)).Y, 1.0, 1e-12);
+        EXPECT_NEAR(exact.color(5000.0, c).xyz.Y, 1.0, 1e-9);
+        EXPECT_TRUE(fourier.summed_at(50.0, std::cos(theta)));
+    }
+}
+
+TEST(FourierFilm, DispersiveFilmsFallBackOnABoundedShare) {
+    // The dispersive films over 0–5000 nm × 0–89°: the share of the grid left to the 1 nm
+    // sum and the error elsewhere, as measured (docs/OPTICS.md); the goal of ΔE2000 0.1 without
+    // falling back is not yet met for the soap film and the film under water.
+    const Colorimeter c;
+    struct Case {
+        SingleFilm film;
+        double max_share, max_error;
+    };
+    const Case cases[] = {
+        {{*find_material("air"), *find_material("water"), *find_material("air")}, 0.27, 0.2},
+        {{*find_material("air"), *find_material("mineral-oil"), *find_material("water")}, 0.0, 0.02},
+        {{*find_material("water"), Material::constant("film", 1.2), Material::constant("glass", 1.6)}, 0.35, 0.3},
+    };
+    for (const Case& k : cases) {
+        const FourierFilm fourier(k.film, fourier_colorimeter_for(k.film, c));
+        double share = 0.0;
+        const Error2000 e = error_over_grid(k.film, fourier, c, sanitized ? 100.0 : 25.0, sanitized ? 89.0 / 11.0 : 89.0 / 44.0,
+                                            5000.0, 89.0, &share);
+        EXPECT_LE(share, k.max_share) << k.film.film.name() << " under " << k.film.ambient.name();
+        EXPECT_LT(e.max, k.max_error) << k.film.film.name() << " under " << k.film.ambient.name() << ": "
+                                      << e.worst_thickness << " nm at " << e.worst_angle;
+    }
 }
 
 }  // namespace

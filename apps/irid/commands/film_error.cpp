@@ -10,6 +10,7 @@
 #include "film_options.h"
 
 #include <irid/color.h>
+#include <irid/optics/film_error_study.h>
 
 #include <fmt/core.h>
 

@@ -17,6 +17,7 @@
 #include <irid/optics/material.h>
 #include <irid/optics/multilayer.h>
 #include <irid/optics/thesis_models.h>
+#include <irid/optics/work_limits.h>
 
 #include <array>
 #include <functional>

@@ -2,15 +2,10 @@
 
 // The colour of a film: spectral reflectance × illuminant → XYZ → RGB, for both families (the
 // thesis' closed forms and the exact optics), colour tables like the thesis' §3.3 (thickness →
-// colour, and thickness × cos θ → colour for the exact model), and the error study of the
-// thesis' single-film model against the exact Airy model.
-//
-// Colours are relative: XYZ under the illuminant with the perfect white reflector at Y = 1
-// (CIE 015:2018 §7); CIELAB relative to that white; linear RGB of a chosen space, unclipped (the
-// gamut step stays separate), after a chromatic adaptation from the illuminant's white to the
-// space's white when they differ (Bradford by default), so a white reflector is RGB (1, 1, 1).
+// colour, and thickness × cos θ → colour for the exact model). Colours are relative, as the
+// Colorimeter (irid/color/colorimeter.h) makes them.
 
-#include <irid/color/adaptation.h>
+#include <irid/color/colorimeter.h>
 #include <irid/color/illuminant.h>
 #include <irid/color/observer.h>
 #include <irid/color/rgb.h>
@@ -27,51 +22,6 @@
 #include <vector>
 
 namespace irid {
-
-/// Turns reflectance spectra into colour. Built once (the illuminant × colour-matching-function
-/// weights and the XYZ → RGB matrix are precomputed); evaluation is noexcept and allocates
-/// nothing.
-class Colorimeter {
-public:
-    explicit Colorimeter(const DenseSpectrum& illuminant = illuminant_d65(),
-                         Observer observer = Observer::cie1931_2deg, const RgbSpace& rgb = srgb(),
-                         ChromaticAdaptation adaptation = ChromaticAdaptation::bradford);
-
-    /// XYZ of a reflectance spectrum (CIE 015:2018 1 nm summation, white Y = 1).
-    [[nodiscard]] Xyz xyz(const DenseSpectrum& reflectance) const noexcept;
-    /// XYZ of a reflectance given as a function of wavelength [nm], sampled at 360, ..., 830 nm.
-    template <class F>
-    [[nodiscard]] Xyz xyz_of(F&& reflectance_at) const {
-        Xyz c;
-        for (int i = 0; i < dense_sample_count; ++i) {
-            const double r = reflectance_at(DenseSpectrum::wavelength_nm(i));
-            c.X += r * m_weight_x[i];
-            c.Y += r * m_weight_y[i];
-            c.Z += r * m_weight_z[i];
-        }
-        return c;
-    }
-    /// Linear RGB in the colorimeter's space, unclipped.
-    [[nodiscard]] Rgb linear_rgb(const Xyz& c) const noexcept;
-    /// CIELAB relative to the illuminant's white.
-    [[nodiscard]] Lab lab(const Xyz& c) const noexcept;
-    /// The illuminant's white, Y = 1.
-    [[nodiscard]] const Xyz& white() const noexcept { return m_white; }
-    [[nodiscard]] const RgbSpace& rgb_space() const noexcept { return m_rgb; }
-    [[nodiscard]] Observer observer() const noexcept { return m_observer; }
-    /// The summation weights S(λ) x̄(λ) / Σ S ȳ, and those of ȳ and z̄, on the 1 nm grid: xyz()
-    /// is the dot product of a reflectance with each.
-    [[nodiscard]] const DenseSpectrum& weight_x() const noexcept { return m_weight_x; }
-    [[nodiscard]] const DenseSpectrum& weight_y() const noexcept { return m_weight_y; }
-    [[nodiscard]] const DenseSpectrum& weight_z() const noexcept { return m_weight_z; }
-
-private:
-    DenseSpectrum m_weight_x, m_weight_y, m_weight_z;  // S(λ) x̄(λ) / Σ S ȳ, ...
-    Xyz m_white;
-    Observer m_observer;
-    RgbSpace m_rgb;
-    Mat3 m_xyz_to_rgb;  // adaptation to the space's white, then the space's matrix
-};
 
 /// A colour with its linear RGB (unclipped).
 struct FilmColor {
@@ -284,107 +234,7 @@ template <class F>
                                              const Colorimeter& colorimeter,
                                              double start_step_nm = 16.0);
 
-/// The error study: CIEDE2000 between the thesis' single-film model (eq. 21/22 with eq. 24, K
-/// from thesis_matched_k unless given) and the exact Airy model, over a thickness × angle grid.
-struct ErrorStudyOptions {
-    double max_thickness_nm = 1500.0;
-    double thickness_step_nm = 5.0;
-    double max_angle_deg = 80.0;
-    double angle_step_deg = 5.0;
-    std::optional<double> k;  // default: thesis_matched_k
-};
-struct ErrorStudyResult {
-    std::string name;
-    double k = 1.0;
-    std::size_t samples = 0;
-    double mean = 0.0, median = 0.0, p95 = 0.0, max = 0.0;
-    double worst_thickness_nm = 0.0, worst_angle_deg = 0.0;
-    /// Mean and maximum ΔE2000 at each angle of the grid, in order.
-    std::vector<double> angles_deg, mean_by_angle, max_by_angle;
-    /// Mean ΔE2000 per thickness band of 100 nm (0-100, 100-200, ...; the last includes the
-    /// maximum thickness).
-    std::vector<double> mean_by_thickness_band;
-};
-/// Throws irid::Error (see validate_error_study) for invalid options or too much work.
-[[nodiscard]] ErrorStudyResult thesis_error_study(const std::string& name, const SingleFilm& film,
-                                                  const Colorimeter& colorimeter,
-                                                  const ErrorStudyOptions& options = {});
-
-// --- Limits on the work of one request ------------------------------------------------------
-//
-// Each parameter of a request (a thickness range, angles, wavelengths, layers) has its own range;
-// these limits bound their product, the work of the whole request, so that values each in range
-// cannot together ask for hours of computing or gigabytes of output. The command line calls the
-// checks before it computes anything (and the Python module is to do the same). The limits come
-// from the costs measured on one core of the development machine (g++ 12 -O2, docs/OPTICS.md,
-// "Limits on the work of one request"); each allows about a minute of work at the measured cost.
-
-/// One factor of a request's size: how many values it has (`count`, of `noun`) and how the
-/// caller names it in messages: a command-line option with its value ("--thickness 0:1500:5")
-/// or a parameter's name. Printed as "<name> (<count> <noun>)".
-struct WorkFactor {
-    std::string name;
-    double count = 1.0;
-    std::string noun = "values";
-};
-
-/// The most film reflectances one request may evaluate at one wavelength each by a closed form
-/// (eq. 21/22, eq. 25 with 26 or 29) or the Airy sum, its colour summed: measured 18–55 ns each
-/// (18 ns the exact single film's table, 37 ns the error study, 40 ns eq. 21 with water's
-/// dispersion, 45–55 ns eq. 25), so 10⁹ take at most about 55 s.
-inline constexpr double max_film_evaluations = 1e9;
-/// The most layer evaluations (one layer's characteristic matrix at one wavelength, s and p) of
-/// transfer-matrix stacks one request may ask for: measured 190 ns (water), 250 ns (a constant
-/// complex index), 280 ns (silver, tabulated), so 2 × 10⁸ take at most about 56 s.
-inline constexpr double max_stack_layer_evaluations = 2e8;
-/// The most lines one request may write: 10⁶ lines of a colour table are about 130 MB of CSV
-/// (measured 131 bytes a line) and 10⁶ lines of a spectrum about 50 MB (49 bytes a line).
-inline constexpr double max_output_rows = 1e6;
-
-/// Throws irid::Error unless the product of the factors' counts, times `cost_each`, is at most
-/// `limit`. The message names the factors and gives the total in `unit` and the limit in the
-/// same unit, floor(limit / cost_each), followed by `limit_note` when there is one:
-/// "--thickness 0:99999:1 (100 000 values) × --angles 0:89:0.01 (8 901 values) asks for
-/// 890 100 000 spectra; the limit is 2 123 142 (use coarser steps)". Counts must be finite and
-/// >= 0, cost_each finite and > 0.
-void check_work_limit(std::span<const WorkFactor> factors, double cost_each, double limit,
-                      std::string_view unit, std::string_view advice,
-                      std::string_view limit_note = {});
-
-/// Colours of films on the 1 nm grid (one spectrum of dense_sample_count = 471 wavelengths per
-/// colour), as many as the product of `spectra` (thickness values × angles × ...): at most
-/// max_film_evaluations in all, so at most 2 123 142 spectra. When each wavelength costs more
-/// than one closed form (the samples of a Morpho blend), `per_wavelength` names and counts them
-/// and the limit shrinks by its count. The message counts spectra.
-void check_color_work(std::span<const WorkFactor> spectra,
-                      const std::optional<WorkFactor>& per_wavelength = std::nullopt);
-/// Reflectances by the closed forms or the Airy sum at the product of `factors` (wavelengths ×
-/// blend samples × ...): at most max_film_evaluations. The message counts film evaluations.
-void check_spectrum_work(std::span<const WorkFactor> factors);
-/// Transfer-matrix stacks: the product of `factors` (wavelengths × layers × ...) at most
-/// max_stack_layer_evaluations. The message counts layer evaluations.
-void check_stack_work(std::span<const WorkFactor> factors);
-/// Lines of output: the product of `factors` at most max_output_rows. The message counts lines.
-void check_output_rows(std::span<const WorkFactor> factors);
-
-/// The thickness values and the angles of the error study's grid, as thesis_error_study samples
-/// them: 0, step, ..., max (within rounding).
-[[nodiscard]] double error_study_thickness_count(const ErrorStudyOptions& options) noexcept;
-[[nodiscard]] double error_study_angle_count(const ErrorStudyOptions& options) noexcept;
-/// Throws irid::Error unless the options are valid (steps > 0, maximum thickness >= 0, maximum
-/// angle in [0, 90), all finite) and the study of `films` films is within the work limit: each
-/// grid point costs two spectra, the thesis' and the exact, of 471 wavelengths each
-/// (check_color_work). `thickness_name` and `angles_name` name the two grids in the message
-/// (the caller's names: a command-line option and its value), `films_name` the films when
-/// there is more than one. thesis_error_study calls it with films = 1.
-void validate_error_study(const ErrorStudyOptions& options, double films = 1.0,
-                          std::string_view thickness_name = "thickness grid",
-                          std::string_view angles_name = "angle grid",
-                          std::string_view films_name = "films");
-
 // --- implementation of the template -------------------------------------------------------
-
-double delta_e_2000_of(const Colorimeter& colorimeter, const Xyz& a, const Xyz& b) noexcept;
 
 template <class F>
 LookupError measure_lookup_error(const FilmColorTable& table, F&& direct, const Colorimeter& colorimeter) {

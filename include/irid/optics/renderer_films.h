@@ -32,6 +32,7 @@
 // Python's renderer_film_color.
 
 #include <irid/optics/film_color.h>
+#include <irid/optics/film_error_study.h>
 
 #include <array>
 #include <complex>

@@ -1,0 +1,31 @@
+#pragma once
+
+// The colour of a single film summed finer than the 1 nm grid: the reference where the 1 nm sum
+// aliases.
+//
+// The 1 nm sum samples the phase 2π OPD/λ once per nanometre. Once the optical path difference
+// of the reflections that matter (OPD times the number of round trips whose amplitude has not yet
+// died away) nears λ²/(1 nm), 144 µm at 380 nm, successive samples step by a whole period and the
+// sum aliases: the 1 nm grid "sees" interference that the continuous spectrum has averaged away
+// (docs/OPTICS.md, "The fast exact film colour"). A finer step moves that limit out in proportion.
+
+#include <irid/optics/film_color.h>
+
+namespace irid {
+
+/// A step [nm] at which the colour of `film` at this thickness and angle does not alias: the
+/// reflections whose amplitude is above 1e-3 of the first (|q|^m, q = r01 r12 at 555 nm, the larger
+/// of s and p) reach m × OPD; the step keeps that below 0.7 λ_min² / step at 380 nm (where the
+/// 1 nm sum departs from a finer one by 1e-4 of the white). At most 1 nm.
+/// Preconditions: thickness finite and >= 0, angle in [0, π/2), a lossless ambient.
+[[nodiscard]] double alias_free_step_nm(const SingleFilm& film, double thickness_nm, double angle_rad) noexcept;
+
+/// XYZ (white Y = 1) of a single film summed every `step_nm` over 360–830 nm: the Airy reflectance
+/// at each wavelength times the colorimeter's 1 nm weights interpolated linearly between their
+/// nanometres, normalised so that a perfect reflector gives the colorimeter's white. Equal to the
+/// 1 nm sum to interpolation error where neither aliases. Throws irid::Error unless
+/// 1e-4 <= step_nm <= 1 (a step of 1e-4 nm is 4.7 million reflectances).
+[[nodiscard]] Xyz finely_summed_film_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
+                                         const Colorimeter& colorimeter, double step_nm);
+
+}  // namespace irid
