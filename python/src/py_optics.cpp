@@ -6,6 +6,7 @@
 
 #include <irid/color.h>
 #include <irid/optics/film.h>
+#include <irid/optics/film_builder.h>
 #include <irid/optics/film_color.h>
 #include <irid/optics/fourier_film.h>
 #include <irid/optics/material.h>
@@ -277,45 +278,72 @@ void add_optics(py::module_& m) {
         py::arg("model"), py::arg("ambient"), py::arg("film"), py::arg("substrate"), py::arg("thickness"),
         py::arg("angle_rad"));
 
+    // The films: each class method of irid.Film fills a FilmSpec and builds through the library
+    // (film_builder.h), which holds the rules; the names are Python's keywords.
     m.def(
         "film_exact",
         [](const Material& ambient, const std::vector<std::pair<Material, double>>& layers,
            const Material& substrate, const std::string& polarization) -> FilmPtr {
-            std::vector<Layer> stack;
-            for (const auto& [material, t] : layers) stack.push_back({material, t});
-            return std::make_shared<ExactFilm>(ambient, std::move(stack), substrate,
-                                               parse_polarization(polarization));
+            FilmSpec spec;
+            spec.ambient = ambient;
+            spec.substrate = substrate;
+            for (const auto& [material, t] : layers) spec.layers.push_back({material, t});
+            spec.polarization = parse_polarization(polarization);
+            return build_film(spec);
         },
         py::arg("ambient"), py::arg("layers"), py::arg("substrate"), py::arg("polarization"));
     m.def(
         "film_thesis",
         [](const Material& ambient, const Material& film, const Material& substrate, double thickness,
            std::optional<double> k, std::optional<bool> phase_change) -> FilmPtr {
-            return std::make_shared<ThesisFilm>(SingleFilm{ambient, film, substrate}, thickness, k, phase_change);
+            FilmSpec spec;
+            spec.model = FilmModelKind::thesis;
+            spec.ambient = ambient;
+            spec.substrate = substrate;
+            spec.layers.push_back({film, thickness});
+            spec.k = k;
+            spec.phase_change = phase_change;
+            FilmSpecNames names;
+            names.layer = [](std::size_t) { return std::string("film"); };
+            return build_film(spec, names);
         },
         py::arg("ambient"), py::arg("film"), py::arg("substrate"), py::arg("thickness"), py::arg("k"),
         py::arg("phase_change"));
     m.def(
         "film_thesis_multilayer",
         [](const Material& film, double thickness, int periods, std::optional<double> k) -> FilmPtr {
-            return std::make_shared<ThesisMultilayerFilm>(film, thickness, periods, k);
+            FilmSpec spec;
+            spec.model = FilmModelKind::thesis_multilayer;
+            spec.layers.push_back({film, thickness});
+            spec.periods = periods;
+            spec.k = k;
+            FilmSpecNames names;
+            names.layer = [](std::size_t) { return std::string("film"); };
+            return build_film(spec, names);
         },
         py::arg("film"), py::arg("thickness"), py::arg("periods"), py::arg("k"));
     m.def(
         "film_morpho",
         [](double d1, double d2, double n, int periods, std::optional<double> k, bool blend,
            const std::string& vary, double blend_min, double blend_max, int blend_samples) -> FilmPtr {
-            check_thesis_periods(periods);
-            const MorphoParameters wing{d1, d2, n, periods, k ? *k : thesis_unit_peak_k(periods)};
-            std::optional<MorphoBlend> b;
+            FilmSpec spec;
+            spec.model = FilmModelKind::morpho;
+            spec.d1_nm = d1;
+            spec.d2_nm = d2;
+            spec.n = n;
+            spec.periods = periods;
+            spec.k = k;
+            spec.blend = blend;
             if (blend) {
                 if (vary != "d1" && vary != "d2") {
                     throw UnknownNameError("blend_vary '" + vary + "' is unknown; valid: d1, d2", {"d1", "d2"});
                 }
-                b = MorphoBlend{blend_min, blend_max, blend_samples,
-                                vary == "d2" ? MorphoBlendThickness::d2 : MorphoBlendThickness::d1};
+                spec.blend_varies = vary == "d2" ? MorphoBlendThickness::d2 : MorphoBlendThickness::d1;
+                spec.blend_min_nm = blend_min;
+                spec.blend_max_nm = blend_max;
+                spec.blend_samples = blend_samples;
             }
-            return std::make_shared<MorphoFilm>(wing, b);
+            return build_film(spec);
         },
         py::arg("d1"), py::arg("d2"), py::arg("n"), py::arg("periods"), py::arg("k"), py::arg("blend"),
         py::arg("blend_vary"), py::arg("blend_min"), py::arg("blend_max"), py::arg("blend_samples"));

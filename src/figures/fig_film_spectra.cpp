@@ -2,9 +2,10 @@
 // Airy model and by the thesis' closed form (Smits 1990, eq. 21/22 with eq. 24), with the
 // colour each spectrum gives.
 
-#include <irid/error.h>
-#include <irid/optics/film_color.h>
 #include <irid/color/spaces.h>
+#include <irid/error.h>
+#include <irid/optics/film_builder.h>
+#include <irid/optics/film_color.h>
 #include <irid/optics/material.h>
 
 #include "figure_data.h"
@@ -44,10 +45,9 @@ FilmSpec parse_film_spec(std::string_view item) {
 DenseValues film_reflectance(const SingleFilm& film, double thickness_nm, double angle_rad,
                              bool thesis, double k) {
     // Through the film models every command uses: the thesis' eq. 21/22 or the exact Airy film.
-    const std::unique_ptr<FilmModel> model =
-        thesis ? std::unique_ptr<FilmModel>(std::make_unique<ThesisFilm>(film, thickness_nm, k))
-               : std::make_unique<ExactFilm>(film.ambient, std::vector<Layer>{{film.film, thickness_nm}},
-                                             film.substrate);
+    irid::FilmSpec spec = single_film_spec(thesis ? FilmModelKind::thesis : FilmModelKind::exact, film, thickness_nm);
+    if (thesis) spec.k = k;
+    const std::shared_ptr<FilmModel> model = build_film(spec);
     DenseValues r;
     model->at_angle(angle_rad)->reflectance(thickness_nm, r);
     return r;

@@ -6,6 +6,7 @@
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
 #include <irid/optics/film.h>
+#include <irid/optics/film_builder.h>
 #include <irid/optics/material.h>
 
 #include "figure_support.h"
@@ -114,10 +115,12 @@ NewtonData newton_data(double max_thickness_nm, double step_nm, double reference
         strip.boundaries_nm = order_boundaries_nm(strip.n_at_reference, strip.phase_change, reference_nm, max_thickness_nm);
         const double k = k_matched ? thesis_matched_k(*spec.film) : 1.0;
         // Through the film models (irid/optics/film.h), prepared once at normal incidence.
-        const std::unique_ptr<FilmModel> model =
-            spec.exact ? std::unique_ptr<FilmModel>(std::make_unique<ExactFilm>(
-                             spec.film->ambient, std::vector<Layer>{{spec.film->film, 0.0}}, spec.film->substrate))
-                       : std::make_unique<ThesisFilm>(*spec.film, 0.0, k, strip.phase_change);
+        FilmSpec film_spec = single_film_spec(spec.exact ? FilmModelKind::exact : FilmModelKind::thesis, *spec.film);
+        if (!spec.exact) {
+            film_spec.k = k;
+            film_spec.phase_change = strip.phase_change;
+        }
+        const std::shared_ptr<FilmModel> model = build_film(film_spec);
         const std::unique_ptr<FilmAtAngle> row = model->at_angle(0.0);
         for (const double t : d.thickness_nm) strip.raw.push_back(row->color(t, colorimeter).xyz);
         strip.shown = strip.raw;

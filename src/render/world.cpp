@@ -3,8 +3,9 @@
 #include <irid/color/illuminant.h>
 #include <irid/error.h>
 #include <irid/io/image.h>
-#include <irid/optics/material.h>
 #include <irid/optics/film.h>
+#include <irid/optics/film_builder.h>
+#include <irid/optics/material.h>
 #include <irid/optics/thesis_models.h>
 
 #include <fmt/core.h>
@@ -376,12 +377,7 @@ void World::build_tables() {
     const Colorimeter& col = m_basis->colorimeter();
     if (m_film) {
         const bool exact = rp.optics == OpticsModel::exact;
-        if (exact) {
-            m_film_model = std::make_shared<ExactFilm>(m_film->ambient, std::vector<Layer>{{m_film->film, 0.0}},
-                                                       m_film->substrate);
-        } else {
-            m_film_model = std::make_shared<ThesisFilm>(*m_film, 0.0);
-        }
+        m_film_model = build_film(single_film_spec(exact ? FilmModelKind::exact : FilmModelKind::thesis, *m_film));
         if (rp.path == ColorPath::fourier) {
             m_fourier_film.emplace(*m_film, fourier_colorimeter_for(*m_film, col));
             return;

@@ -160,153 +160,51 @@ void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) 
 }
 
 Film parse_film(const FilmArguments& a, bool thickness_required) {
-    Film f;
-    const FilmModelKind kind = parse_model(a.model);
-    const Material ambient = parse_medium(a.ambient, "--ambient");
-    const Material substrate = parse_medium(a.substrate, "--substrate");
-    std::vector<LayerArgument> layers;
-    if (!ambient.is_lossless()) {
-        throw UsageError("--ambient '" + a.ambient + "' absorbs (k > 0); the ambient must have k = 0");
-    }
+    // The command line's syntax becomes a FilmSpec; which options each model takes, the layer
+    // counts and the defaults are the library's (build_film).
+    const auto given = [&](const char* option) { return a.command && a.command->count(option) > 0; };
+    FilmSpec spec;
+    spec.model = parse_model(a.model);
+    spec.thickness_required = thickness_required;
+    if (given("--ambient")) spec.ambient = parse_medium(a.ambient, "--ambient");
+    if (given("--substrate")) spec.substrate = parse_medium(a.substrate, "--substrate");
     for (std::size_t i = 0; i < a.layers.size(); ++i) {
-        layers.push_back(parse_layer(a.layers[i], static_cast<int>(i) + 1, thickness_required));
+        LayerArgument l = parse_layer(a.layers[i], static_cast<int>(i) + 1, thickness_required);
+        spec.layers.push_back({std::move(l.material), l.thickness_nm});
     }
     if (!(a.angle_deg >= 0.0 && a.angle_deg < 90.0)) {
         throw UsageError("--angle " + format_shortest(a.angle_deg) + " must be in [0, 90) degrees");
     }
-    f.angle_rad = a.angle_deg * degrees_to_radians;
-    Polarization polarization = Polarization::unpolarized;
-    if (a.polarization == "s") polarization = Polarization::s;
-    else if (a.polarization == "p") polarization = Polarization::p;
-    else if (a.polarization == "unpolarized") polarization = Polarization::unpolarized;
-    else throw UsageError("--polarization '" + a.polarization + "' is unknown; valid: s, p, unpolarized");
+    if (given("--polarization")) {
+        if (a.polarization == "s") spec.polarization = Polarization::s;
+        else if (a.polarization == "p") spec.polarization = Polarization::p;
+        else if (a.polarization == "unpolarized") spec.polarization = Polarization::unpolarized;
+        else throw UsageError("--polarization '" + a.polarization + "' is unknown; valid: s, p, unpolarized");
+    }
     if (a.phase_change && a.no_phase_change) {
         throw UsageError("--phase-change and --no-phase-change exclude each other");
     }
-    std::optional<bool> phase_change;
-    if (a.phase_change) phase_change = true;
-    if (a.no_phase_change) phase_change = false;
-    const auto given = [&](const char* option) {
-        return a.command && a.command->count(option) > 0;
-    };
-    if (given("--K") && !(a.k > 0.0 && std::isfinite(a.k))) {
-        throw UsageError("--K " + format_shortest(a.k) + " must be a finite number > 0");
-    }
-    // The thesis' closed forms take real indices: an absorbing film or substrate is refused, as
-    // the renderer refuses absorbing films, rather than its k silently dropped.
-    const auto thesis_material = [](const Material& m, const char* role,
-                                    const std::string& option) {
-        try {
-            check_thesis_material(m, role);
-        } catch (const Error& e) {
-            throw UsageError(option + ": " + e.what() + "; use --model exact");
+    if (a.phase_change) spec.phase_change = true;
+    if (a.no_phase_change) spec.phase_change = false;
+    if (given("--K")) spec.k = a.k;
+    if (given("--periods")) spec.periods = a.periods;
+    if (given("--d1")) spec.d1_nm = a.d1_nm;
+    if (given("--d2")) spec.d2_nm = a.d2_nm;
+    if (given("--n")) spec.n = a.n;
+    spec.blend = a.blend;
+    if (given("--blend-vary")) {
+        if (a.blend_vary != "d1" && a.blend_vary != "d2") {
+            throw UsageError("--blend-vary '" + a.blend_vary + "' is unknown; valid: d1, d2");
         }
-    };
-    const auto layer_option = [&](std::size_t i) {
-        return "--layer " + std::to_string(i + 1) + " '" + a.layers[i] + "'";
-    };
+        spec.blend_varies = a.blend_vary == "d2" ? MorphoBlendThickness::d2 : MorphoBlendThickness::d1;
+    }
+    FilmSpecNames names = command_line_film_names();
+    if (a.no_phase_change) names.phase_change = "--no-phase-change";
+    names.layer = [&a](std::size_t i) { return "--layer " + std::to_string(i + 1) + " '" + a.layers[i] + "'"; };
+    Film f;
+    f.angle_rad = a.angle_deg * degrees_to_radians;
     try {
-        check_thesis_periods(a.periods);
-    } catch (const Error& e) {
-        throw UsageError(std::string("--") + e.what());
-    }
-    // Options of another model are refused rather than silently ignored.
-    const auto refuse = [&](std::initializer_list<const char*> options) {
-        for (const char* option : options) {
-            if (given(option)) {
-                throw UsageError(std::string(option) + " does not apply to --model " + a.model);
-            }
-        }
-    };
-    switch (kind) {
-        case FilmModelKind::exact:
-            refuse({"--phase-change", "--no-phase-change", "--K", "--periods", "--d1", "--d2", "--n", "--blend",
-                    "--blend-vary"});
-            break;
-        case FilmModelKind::thesis:
-            refuse({"--polarization", "--periods", "--d1", "--d2", "--n", "--blend", "--blend-vary"});
-            break;
-        case FilmModelKind::thesis_multilayer:
-            // Eq. 26 assumes air around the films.
-            refuse({"--ambient", "--substrate", "--polarization", "--phase-change", "--no-phase-change",
-                    "--d1", "--d2", "--n", "--blend", "--blend-vary"});
-            break;
-        case FilmModelKind::morpho:
-            refuse({"--ambient", "--substrate", "--polarization", "--phase-change", "--no-phase-change",
-                    "--layer"});
-            break;
-    }
-
-    const auto need_layers = [&](std::size_t count, const char* model) {
-        if (layers.size() != count) {
-            throw UsageError(std::string("--model ") + model + " takes exactly " +
-                             std::to_string(count) + " --layer, found " + std::to_string(layers.size()));
-        }
-    };
-    // Anything the checks above leave to the library is still an option's error (exit 2).
-    try {
-    switch (kind) {
-        case FilmModelKind::exact:
-            if (layers.empty() && thickness_required) {
-                throw UsageError("--layer is required: give at least one INDEX:THICKNESS");
-            }
-            if (!thickness_required) need_layers(1, "exact (film-table)");
-            {
-                std::vector<Layer> stack;
-                for (const LayerArgument& l : layers) stack.push_back({l.material, l.thickness_nm.value_or(0.0)});
-                f.model = std::make_shared<ExactFilm>(ambient, std::move(stack), substrate, polarization);
-            }
-            break;
-        case FilmModelKind::thesis:
-            need_layers(1, "thesis");
-            thesis_material(layers.front().material, "film", layer_option(0));
-            thesis_material(substrate, "substrate", "--substrate '" + a.substrate + "'");
-            f.model = std::make_shared<ThesisFilm>(
-                SingleFilm{ambient, layers.front().material, substrate},
-                layers.front().thickness_nm.value_or(0.0),
-                given("--K") ? std::optional<double>(a.k) : std::nullopt, phase_change);
-            break;
-        case FilmModelKind::thesis_multilayer:
-            need_layers(1, "thesis-multilayer");
-            if (!given("--periods")) throw UsageError("--periods is required with --model thesis-multilayer");
-            thesis_material(layers.front().material, "film", layer_option(0));
-            f.model = std::make_shared<ThesisMultilayerFilm>(
-                layers.front().material, layers.front().thickness_nm.value_or(0.0), a.periods,
-                given("--K") ? std::optional<double>(a.k) : std::nullopt);
-            break;
-        case FilmModelKind::morpho: {
-            if (!(std::isfinite(a.d1_nm) && a.d1_nm >= 0.0 && a.d1_nm <= 1e6)) {
-                throw UsageError("--d1 " + format_shortest(a.d1_nm) + " must be a thickness in [0, 1e6] nm");
-            }
-            if (!(std::isfinite(a.d2_nm) && a.d2_nm >= 0.0 && a.d2_nm <= 1e6)) {
-                throw UsageError("--d2 " + format_shortest(a.d2_nm) + " must be a thickness in [0, 1e6] nm");
-            }
-            if (!(std::isfinite(a.n) && a.n >= 1.0)) {
-                throw UsageError("--n " + format_shortest(a.n) +
-                                 " must be >= 1 (eq. 29 assumes the wing is in air)");
-            }
-            const MorphoParameters wing{a.d1_nm, a.d2_nm, a.n, a.periods,
-                                        given("--K") ? a.k : thesis_unit_peak_k(a.periods)};
-            try {
-                validate_morpho(wing);
-            } catch (const Error& e) {
-                throw UsageError(e.what());
-            }
-            if (a.blend_vary != "d1" && a.blend_vary != "d2") {
-                throw UsageError("--blend-vary '" + a.blend_vary + "' is unknown; valid: d1, d2");
-            }
-            if (given("--blend-vary") && !a.blend) throw UsageError("--blend-vary needs --blend");
-            std::optional<MorphoBlend> blend;
-            if (a.blend) {
-                blend = MorphoBlend{};
-                blend->varies = a.blend_vary == "d2" ? MorphoBlendThickness::d2 : MorphoBlendThickness::d1;
-            }
-            f.model = std::make_shared<MorphoFilm>(wing, blend);
-            break;
-        }
-    }
-    } catch (const UsageError&) {
-        throw;
+        f.model = build_film(spec, names);
     } catch (const Error& e) {
         throw UsageError(e.what());
     }

@@ -7,6 +7,7 @@
 #include "../cli_common.h"
 
 #include <irid/optics/film.h>
+#include <irid/optics/film_builder.h>
 #include <irid/optics/renderer_films.h>
 
 #include <memory>
