@@ -3,6 +3,7 @@
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/optics/film_color.h>
+#include <irid/optics/fine_sum.h>
 #include <irid/optics/thesis_models.h>
 
 #include "statistics.h"
@@ -35,8 +36,12 @@ DenseSpectrum exact_reflectance_spectrum(const FilmStack& stack, double angle_ra
 
 PreparedFilm::Sample PreparedFilm::prepare(const SingleFilm& film, double cos_theta0, int i,
                                            bool& degenerate) noexcept {
+    return prepare_at(film, cos_theta0, DenseSpectrum::wavelength_nm(i), degenerate);
+}
+
+PreparedFilm::Sample PreparedFilm::prepare_at(const SingleFilm& film, double cos_theta0, double lambda,
+                                              bool& degenerate) noexcept {
     constexpr std::complex<double> two_i{0.0, 2.0};
-    const double lambda = DenseSpectrum::wavelength_nm(i);
     const double a = film.ambient.index(lambda).real();
     const Complex n1 = film.film.index(lambda);
     const Complex n2 = film.substrate.index(lambda);
@@ -157,6 +162,9 @@ DenseSpectrum PreparedFilm::reflectance_spectrum(double thickness_nm) const {
 }
 
 FilmColor PreparedFilm::color(double thickness_nm, const Colorimeter& colorimeter) const noexcept {
+    if (const std::optional<Xyz> fine = alias_free_xyz(m_film, thickness_nm, m_angle_rad, colorimeter)) {
+        return {*fine, colorimeter.linear_rgb(*fine)};
+    }
     int i = 0;
     const Xyz xyz = colorimeter.xyz_of([&](double) { return reflectance(i++, thickness_nm); });
     return {xyz, colorimeter.linear_rgb(xyz)};
@@ -314,6 +322,9 @@ FilmColor exact_film_color(const SingleFilm& film, double thickness_nm, double a
     // One pass: prepare each wavelength and sum its Airy reflectance at once, with no table and
     // no copy of the materials; the same numbers as PreparedFilm.
     check_film_angle(film, angle_rad);
+    if (const std::optional<Xyz> fine = alias_free_xyz(film, thickness_nm, angle_rad, colorimeter)) {
+        return {*fine, colorimeter.linear_rgb(*fine)};
+    }
     const double cos_theta0 = std::cos(angle_rad);
     const Xyz xyz = colorimeter.xyz_of([&](double lambda) {
         const int i = static_cast<int>(lambda) - lambda_min_nm;

@@ -2,6 +2,8 @@
 #include <irid/optics/fine_sum.h>
 #include <irid/optics/multilayer.h>
 
+#include <optional>
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -43,15 +45,21 @@ Xyz finely_summed_film_xyz(const SingleFilm& film, double thickness_nm, double a
     const auto last = static_cast<long>(std::floor((lambda_max_nm - lambda_min_nm) / step_nm));
     const DenseSpectrum* weights[3] = {&colorimeter.weight_x(), &colorimeter.weight_y(), &colorimeter.weight_z()};
     double sum[3] = {0.0, 0.0, 0.0}, white[3] = {0.0, 0.0, 0.0};
+    const double cos_theta0 = std::cos(angle_rad);
     for (long j = 0; j <= last; ++j) {
         const double lambda = lambda_min_nm + static_cast<double>(j) * step_nm;
         const double u = lambda - lambda_min_nm;
         const int i = std::min(dense_sample_count - 2, static_cast<int>(u));
         const double f = u - i;
-        const double r = airy_film(film.ambient.index(lambda).real(), film.film.index(lambda),
-                                   film.substrate.index(lambda), thickness_nm, lambda, angle_rad,
-                                   Polarization::unpolarized)
-                             .R;
+        // PreparedFilm's Airy sum, written without cancellation where both faces reflect almost
+        // totally; the transfer matrix at the film's own critical angle, where it is 0/0.
+        bool degenerate = false;
+        const PreparedFilm::Sample sample = PreparedFilm::prepare_at(film, cos_theta0, lambda, degenerate);
+        const double r = degenerate
+                             ? FilmStack(film.ambient, {Layer{film.film, thickness_nm}}, film.substrate)
+                                   .evaluate(lambda, angle_rad, Polarization::unpolarized)
+                                   .R
+                             : PreparedFilm::airy_reflectance(sample, thickness_nm);
         for (int ch = 0; ch < 3; ++ch) {
             const double w = (*weights[ch])[i] * (1.0 - f) + (*weights[ch])[i + 1] * f;
             sum[ch] += r * w;
@@ -61,6 +69,18 @@ Xyz finely_summed_film_xyz(const SingleFilm& film, double thickness_nm, double a
     const Xyz& w = colorimeter.white();
     return {white[0] > 0.0 ? sum[0] * w.X / white[0] : 0.0, white[1] > 0.0 ? sum[1] * w.Y / white[1] : 0.0,
             white[2] > 0.0 ? sum[2] * w.Z / white[2] : 0.0};
+}
+
+std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
+                                  const Colorimeter& colorimeter) noexcept {
+    if (!(std::isfinite(thickness_nm) && thickness_nm >= 0.0)) return std::nullopt;
+    const double step = alias_free_step_nm(film, thickness_nm, angle_rad);
+    // The step puts about three samples across each interference line. Lines narrower than the
+    // finest step allowed (extreme finesse: grazing incidence, indices of hundreds) would be hit
+    // or missed by chance at any step within reach: there the 1 nm sum stays.
+    if (!(step < 1.0) || step < min_alias_free_step_nm) return std::nullopt;
+    // The step is within finely_summed_film_xyz's range, so it does not throw.
+    return finely_summed_film_xyz(film, thickness_nm, angle_rad, colorimeter, step);
 }
 
 }  // namespace irid

@@ -1,5 +1,4 @@
 #include <irid/error.h>
-#include <irid/optics/fine_sum.h>
 #include <irid/optics/fourier_film.h>
 
 #include <fmt/core.h>
@@ -336,18 +335,12 @@ std::optional<Xyz> FourierFilm::total_reflection(double thickness_nm, double sin
 }
 
 Xyz FourierFilm::exact_sum(double thickness_nm, double cos_theta) const noexcept {
-    // The 1 nm sum (exact_film_color: the Airy sum per wavelength, the transfer matrix where the
-    // film is exactly at its own critical angle). Its arguments are valid here: the ambient was
-    // checked lossless at construction, and the angle stays just below π/2 (cos θ = 0 carries no
-    // light into the film; the colour there is the limit). Where the 1 nm grid aliases (the
-    // reflections that matter reach past 100 µm: thick films near grazing incidence) the sum is
-    // taken at a step fine enough not to, down to fallback_min_step_nm.
+    // The exact colour by summation (exact_film_color: the Airy sum per wavelength, the transfer
+    // matrix where the film is exactly at its own critical angle, and a finer step where the 1 nm
+    // grid aliases). Its arguments are valid here: the ambient was checked lossless at
+    // construction, and the angle stays just below π/2 (cos θ = 0 carries no light into the
+    // film; the colour there is the limit).
     const double angle = std::min(std::acos(std::clamp(cos_theta, 0.0, 1.0)), std::nextafter(pi / 2.0, 0.0));
-    const double step = alias_free_step_nm(m_film, thickness_nm, angle);
-    if (step < 1.0) {
-        return finely_summed_film_xyz(m_film, thickness_nm, angle, m_colorimeter->colorimeter(),
-                                      std::max(step, fallback_min_step_nm));
-    }
     return exact_film_color(m_film, thickness_nm, angle, m_colorimeter->colorimeter()).xyz;
 }
 

@@ -396,12 +396,13 @@ TEST(FourierFilm, ThickFilmsToAMillimetreAgainstAFineEnoughSum) {
 
 TEST(FourierFilm, TheOneNanometreSumAliasesWhereTheFineSumDoesNot) {
     // Why the references above switch: a free film of 1.33 at 89.5° and 4 µm. Its reflections
-    // decay slowly (|q| ≈ 0.9) and reach past 100 µm: the 1 nm sum is 0.43 away from sums at
-    // 0.1 and 0.01 nm, which agree with each other and with the series.
+    // decay slowly (|q| ≈ 0.9) and reach past 100 µm: the 1 nm spectrum's sum is 0.43 away from
+    // sums at 0.1 and 0.01 nm, which agree with each other and with the series.
     const Colorimeter c;
     const SingleFilm film = constant_film(1.0, 1.33, Complex(1.0));
     const double theta = 89.5 * pi / 180.0;
-    const Xyz coarse = PreparedFilm(film, theta).color(4000.0, c).xyz;
+    const PreparedFilm prepared(film, theta);
+    const Xyz coarse = c.xyz(prepared.reflectance_spectrum(4000.0));
     const Xyz fine = finely_summed_film_xyz(film, 4000.0, theta, c, 0.1);
     const Xyz finer = finely_summed_film_xyz(film, 4000.0, theta, c, 0.01);
     EXPECT_LT(delta_e_2000_of(c, fine, finer), 0.005);
@@ -409,6 +410,9 @@ TEST(FourierFilm, TheOneNanometreSumAliasesWhereTheFineSumDoesNot) {
     EXPECT_LT(alias_free_step_nm(film, 4000.0, theta), 1.0);
     const FourierFilm fourier(film, shared_table(c));
     EXPECT_LT(delta_e_2000_of(c, fourier.xyz(4000.0, std::cos(theta)), finer), 0.005);
+    // The 1 nm colours themselves defer to the finer sum there (alias_free_xyz).
+    EXPECT_LT(delta_e_2000_of(c, prepared.color(4000.0, c).xyz, finer), 0.005);
+    EXPECT_LT(delta_e_2000_of(c, exact_film_color(film, 4000.0, theta, c).xyz, finer), 0.005);
     // Where nothing aliases, the fine sum is the 1 nm sum to interpolation error, and the step
     // is the 1 nm grid's.
     const SingleFilm glass = constant_film(1.0, 1.5, Complex(1.6));

@@ -70,6 +70,8 @@ public:
     /// cos_theta in the ambient; `degenerate` when the film is within |N1 cos θ1| < 1e-3 |N1| of
     /// its own critical angle there, where the Airy sum loses its digits (use the transfer matrix).
     static Sample prepare(const SingleFilm& film, double cos_theta, int i, bool& degenerate) noexcept;
+    /// The same at any wavelength [nm] (the finer sums of fine_sum.h).
+    static Sample prepare_at(const SingleFilm& film, double cos_theta, double lambda_nm, bool& degenerate) noexcept;
     /// The unpolarised Airy reflectance of a prepared sample at a thickness (not for degenerate
     /// samples).
     static double airy_reflectance(const Sample& s, double thickness_nm) noexcept;
