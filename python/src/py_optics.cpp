@@ -32,6 +32,22 @@ namespace {
 
 using FilmPtr = std::shared_ptr<FilmModel>;
 
+/// A Python int as the number of periods: one outside C's int is out of the thesis' range too.
+int periods_of(const py::int_& value) {
+    long long periods = thesis_max_periods + 1LL;
+    try {
+        periods = value.cast<long long>();
+    } catch (const py::cast_error&) {
+        // Beyond 64 bits: out of range all the same.
+    }
+    if (periods < thesis_min_periods || periods > thesis_max_periods) {
+        throw Error("periods " + py::repr(value).cast<std::string>() + " must be in " +
+                    std::to_string(thesis_min_periods) + ".." + std::to_string(thesis_max_periods) +
+                    " (l, the number of films of eq. 25)");
+    }
+    return static_cast<int>(periods);
+}
+
 Colorimeter colorimeter_of(const std::string& illuminant, const std::string& observer, const std::string& rgb) {
     const RgbSpace* space = find_rgb_space(rgb);
     if (space == nullptr) {
@@ -311,11 +327,11 @@ void add_optics(py::module_& m) {
         py::arg("phase_change"));
     m.def(
         "film_thesis_multilayer",
-        [](const Material& film, double thickness, int periods, std::optional<double> k) -> FilmPtr {
+        [](const Material& film, double thickness, const py::int_& periods, std::optional<double> k) -> FilmPtr {
             FilmSpec spec;
             spec.model = FilmModelKind::thesis_multilayer;
             spec.layers.push_back({film, thickness});
-            spec.periods = periods;
+            spec.periods = periods_of(periods);
             spec.k = k;
             FilmSpecNames names;
             names.layer = [](std::size_t) { return std::string("film"); };
@@ -324,14 +340,14 @@ void add_optics(py::module_& m) {
         py::arg("film"), py::arg("thickness"), py::arg("periods"), py::arg("k"));
     m.def(
         "film_morpho",
-        [](double d1, double d2, double n, int periods, std::optional<double> k, bool blend,
+        [](double d1, double d2, double n, const py::int_& periods, std::optional<double> k, bool blend,
            const std::string& vary, double blend_min, double blend_max, int blend_samples) -> FilmPtr {
             FilmSpec spec;
             spec.model = FilmModelKind::morpho;
             spec.d1_nm = d1;
             spec.d2_nm = d2;
             spec.n = n;
-            spec.periods = periods;
+            spec.periods = periods_of(periods);
             spec.k = k;
             spec.blend = blend;
             if (blend) {

@@ -13,7 +13,7 @@ namespace irid {
 namespace {
 
 /// The parameters of a spec that a model may refuse.
-enum class Parameter { ambient, substrate, layers, polarization, phase_change, k, periods, d1, d2, n, blend };
+enum class Parameter { ambient, substrate, layers, polarization, phase_change, k, periods, d1, d2, n, blend, blend_vary };
 
 bool given(const FilmSpec& s, Parameter p) {
     switch (p) {
@@ -27,8 +27,8 @@ bool given(const FilmSpec& s, Parameter p) {
         case Parameter::d1: return s.d1_nm.has_value();
         case Parameter::d2: return s.d2_nm.has_value();
         case Parameter::n: return s.n.has_value();
-        case Parameter::blend:
-            return s.blend || s.blend_varies || s.blend_min_nm || s.blend_max_nm || s.blend_samples;
+        case Parameter::blend: return s.blend || s.blend_min_nm || s.blend_max_nm || s.blend_samples;
+        case Parameter::blend_vary: return s.blend_varies.has_value();
     }
     return false;
 }
@@ -46,6 +46,7 @@ const std::string& name_of(const FilmSpecNames& names, Parameter p) {
         case Parameter::d2: return names.d2;
         case Parameter::n: return names.n;
         case Parameter::blend: return names.blend;
+        case Parameter::blend_vary: return names.blend_vary;
     }
     return names.model;
 }
@@ -54,11 +55,13 @@ const std::string& name_of(const FilmSpecNames& names, Parameter p) {
 std::vector<Parameter> refused_by(FilmModelKind kind) {
     using P = Parameter;
     switch (kind) {
-        case FilmModelKind::exact: return {P::phase_change, P::k, P::periods, P::d1, P::d2, P::n, P::blend};
-        case FilmModelKind::thesis: return {P::polarization, P::periods, P::d1, P::d2, P::n, P::blend};
+        case FilmModelKind::exact:
+            return {P::phase_change, P::k, P::periods, P::d1, P::d2, P::n, P::blend, P::blend_vary};
+        case FilmModelKind::thesis: return {P::polarization, P::periods, P::d1, P::d2, P::n, P::blend, P::blend_vary};
         case FilmModelKind::thesis_multilayer:
             // Eq. 26 assumes air around the films.
-            return {P::ambient, P::substrate, P::polarization, P::phase_change, P::d1, P::d2, P::n, P::blend};
+            return {P::ambient, P::substrate, P::polarization, P::phase_change, P::d1, P::d2, P::n, P::blend,
+                    P::blend_vary};
         case FilmModelKind::morpho:
             return {P::ambient, P::substrate, P::layers, P::polarization, P::phase_change};
     }

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <complex>
 #include <cmath>
 
 namespace irid {
@@ -71,16 +72,54 @@ Xyz finely_summed_film_xyz(const SingleFilm& film, double thickness_nm, double a
             white[2] > 0.0 ? sum[2] * w.Z / white[2] : 0.0};
 }
 
+double optical_path_difference_nm(const SingleFilm& film, double thickness_nm, double angle_rad) noexcept {
+    constexpr double lambda = 555.0;
+    const double n0 = film.ambient.index(lambda).real();
+    const double q0 = n0 * std::cos(angle_rad);
+    const Complex n1 = film.film.index(lambda);
+    Complex q1 = std::sqrt((n1 - n0) * (n1 + n0) + q0 * q0);
+    return 2.0 * thickness_nm * std::abs(q1.real());
+}
+
+Xyz incoherent_film_xyz(const SingleFilm& film, double angle_rad, const Colorimeter& colorimeter) noexcept {
+    // Per polarisation the mean of the Airy reflectance over a period of the phase is the
+    // incoherent sum of the faces, R = 1 − (1 − R01)(1 − R12) / (1 − R01 R12) (Stokes), written
+    // from PreparedFilm's cancellation-free factors: (1 − r01²)(1 − r12²) / ((1 − x)(1 + x)).
+    // Wavelengths where the film absorbs or a face reflects totally keep the Airy sum (an
+    // absorbing film this thick returns nothing from its far face; a totally reflecting one
+    // reflects everything).
+    const double cos_theta0 = std::cos(angle_rad);
+    int i = 0;
+    return colorimeter.xyz_of([&](double lambda) {
+        bool degenerate = false;
+        const PreparedFilm::Sample s = PreparedFilm::prepare(film, cos_theta0, i++, degenerate);
+        if (degenerate) {
+            return FilmStack(film.ambient, {Layer{film.film, 0.0}}, film.substrate)
+                .evaluate(lambda, angle_rad, Polarization::unpolarized)
+                .R;
+        }
+        if (!s.real) return PreparedFilm::airy_reflectance(s, 1e6);
+        double r = 0.0;
+        for (int k = 0; k < 2; ++k) {
+            const double one_plus_x = std::sqrt(s.one_plus_x_sq[k]);
+            const double one_minus_x = 1.0 - s.x[k];
+            r += 0.5 * (1.0 - s.transmitted[k] / (one_minus_x * one_plus_x));
+        }
+        return std::clamp(r, 0.0, 1.0);
+    });
+}
+
 std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
                                   const Colorimeter& colorimeter) noexcept {
     if (!(std::isfinite(thickness_nm) && thickness_nm >= 0.0)) return std::nullopt;
-    const double step = alias_free_step_nm(film, thickness_nm, angle_rad);
-    // The step puts about three samples across each interference line. Lines narrower than the
-    // finest step allowed (extreme finesse: grazing incidence, indices of hundreds) would be hit
-    // or missed by chance at any step within reach: there the 1 nm sum stays.
-    if (!(step < 1.0) || step < min_alias_free_step_nm) return std::nullopt;
-    // The step is within finely_summed_film_xyz's range, so it does not throw.
-    return finely_summed_film_xyz(film, thickness_nm, angle_rad, colorimeter, step);
+    if (!(alias_free_step_nm(film, thickness_nm, angle_rad) < 1.0)) return std::nullopt;
+    // Where the 1 nm grid aliases and the single pass is past incoherent_opd_nm, the
+    // interference terms weigh the spectrum's transform at that path and beyond, below 8e-5 of
+    // the white: the colour is the incoherent one, at the 1 nm sum's cost.
+    if (optical_path_difference_nm(film, thickness_nm, angle_rad) >= incoherent_opd_nm) {
+        return incoherent_film_xyz(film, angle_rad, colorimeter);
+    }
+    return std::nullopt;
 }
 
 }  // namespace irid

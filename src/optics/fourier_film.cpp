@@ -1,4 +1,5 @@
 #include <irid/error.h>
+#include <irid/optics/fine_sum.h>
 #include <irid/optics/fourier_film.h>
 
 #include <fmt/core.h>
@@ -335,12 +336,18 @@ std::optional<Xyz> FourierFilm::total_reflection(double thickness_nm, double sin
 }
 
 Xyz FourierFilm::exact_sum(double thickness_nm, double cos_theta) const noexcept {
-    // The exact colour by summation (exact_film_color: the Airy sum per wavelength, the transfer
-    // matrix where the film is exactly at its own critical angle, and a finer step where the 1 nm
-    // grid aliases). Its arguments are valid here: the ambient was checked lossless at
-    // construction, and the angle stays just below π/2 (cos θ = 0 carries no light into the
-    // film; the colour there is the limit).
+    // The exact colour by summation: exact_film_color (the Airy sum per wavelength, the transfer
+    // matrix where the film is exactly at its own critical angle, the incoherent colour past
+    // 100 µm of path), or where the 1 nm grid aliases under that path (high finesse near grazing
+    // incidence) a sum fine enough, down to fallback_min_step_nm. Its arguments are valid here:
+    // the ambient was checked lossless at construction, and the angle stays just below π/2
+    // (cos θ = 0 carries no light into the film; the colour there is the limit).
     const double angle = std::min(std::acos(std::clamp(cos_theta, 0.0, 1.0)), std::nextafter(pi / 2.0, 0.0));
+    const double step = alias_free_step_nm(m_film, thickness_nm, angle);
+    if (step < 1.0 && optical_path_difference_nm(m_film, thickness_nm, angle) < incoherent_opd_nm) {
+        return finely_summed_film_xyz(m_film, thickness_nm, angle, m_colorimeter->colorimeter(),
+                                      std::max(step, fallback_min_step_nm));
+    }
     return exact_film_color(m_film, thickness_nm, angle, m_colorimeter->colorimeter()).xyz;
 }
 
@@ -399,7 +406,12 @@ Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         return {nan, nan, nan};
     }
-    if (const std::optional<Xyz> c = series(thickness_nm, cos_theta)) return *c;
+    if (const std::optional<Xyz> c = series(thickness_nm, cos_theta)) {
+        // Reflectances lie in [0, 1] and the weights are >= 0, so each channel lies in [0, the
+        // white's]; the series' rounding (1e-8 at grazing incidence) is clamped to that.
+        const Xyz& w = m_colorimeter->colorimeter().white();
+        return {std::clamp(c->X, 0.0, w.X), std::clamp(c->Y, 0.0, w.Y), std::clamp(c->Z, 0.0, w.Z)};
+    }
     return exact_sum(thickness_nm, cos_theta);
 }
 

@@ -49,6 +49,9 @@ TEST(FilmBuilder, EachModelRefusesWhatItDoesNotTake) {
     // The wing's geometry is d1, d2 and n: no layers.
     s = one_layer(FilmModelKind::morpho);
     EXPECT_EQ(message_of(s, command_line_film_names()), "--layer does not apply to --model morpho");
+    s = one_layer(FilmModelKind::exact);
+    s.blend_varies = MorphoBlendThickness::d2;
+    EXPECT_EQ(message_of(s, command_line_film_names()), "--blend-vary does not apply to --model exact");
     FilmSpec wing;
     wing.model = FilmModelKind::morpho;
     wing.blend_varies = MorphoBlendThickness::d2;

@@ -298,6 +298,10 @@ def test_thesis_table_scales_by_k_squared():
     (lambda: irid.Film.thesis_multilayer(0.8, 100.0, 12), ValueError),
     (lambda: irid.Film.thesis_multilayer(1.5, 100.0, -1), ValueError),
     (lambda: irid.Film.morpho(n=0.5), ValueError),
+    (lambda: irid.Film.morpho(periods=0), ValueError),          # 1..1000000, from the library
+    (lambda: irid.Film.morpho(periods=10**30), ValueError),     # past any C integer, still a ValueError
+    (lambda: irid.Film.thesis_multilayer(1.5, 100.0, 10**12), ValueError),
+    (lambda: irid.Film.morpho(d1=2e6), ValueError),             # the CLI's range, now the library's
     (lambda: irid.Film.morpho(blend=True, blend_vary="d3"), KeyError),
     (lambda: irid.Film.morpho().color(thickness=100.0), ValueError),
     (lambda: irid.Film.exact([("water", 0)]).color_table(100.0, step=0.0), ValueError),

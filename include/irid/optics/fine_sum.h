@@ -30,14 +30,25 @@ namespace irid {
 [[nodiscard]] Xyz finely_summed_film_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
                                          const Colorimeter& colorimeter, double step_nm);
 
-/// The finest step alias_free_xyz sums at [nm]: 47 000 reflectances, about 2 ms.
-inline constexpr double min_alias_free_step_nm = 0.01;
+/// 2 d n1 cos θ1 at 555 nm [nm]: the optical path difference of one round trip in the film.
+[[nodiscard]] double optical_path_difference_nm(const SingleFilm& film, double thickness_nm,
+                                                double angle_rad) noexcept;
 
-/// Where the 1 nm grid aliases for this film, thickness and angle (alias_free_step_nm < 1), the
-/// colour summed at that step; nothing where the 1 nm sum holds, and nothing where the step would
-/// be below min_alias_free_step_nm (lines narrower than about 0.03 nm, which any reachable step
-/// hits or misses by chance: there the 1 nm sum stays). The 1 nm colours (PreparedFilm::color,
-/// exact_film_color) defer to it.
+/// XYZ of the film's incoherent reflectance, summed at 1 nm: per wavelength and polarisation the
+/// mean of the Airy reflectance over a period of the phase, R01 + (1 − R01)² R12 / (1 − R01 R12).
+/// What a film reflects once its fringes are far finer than the spectrum's features.
+[[nodiscard]] Xyz incoherent_film_xyz(const SingleFilm& film, double angle_rad, const Colorimeter& colorimeter) noexcept;
+
+/// The single-pass optical path past which alias_free_xyz takes the incoherent colour: 100 µm,
+/// where the transform of the weighted matching functions is below 8e-5 of the white (and the
+/// 1 nm grid's own transform begins to alias; docs/OPTICS.md).
+inline constexpr double incoherent_opd_nm = 100000.0;
+
+/// Where the 1 nm grid aliases for this film, thickness and angle (alias_free_step_nm < 1) and
+/// one round trip is past incoherent_opd_nm, the incoherent colour; nothing otherwise (the 1 nm
+/// sum holds, or, for high-finesse films under 100 µm of path near grazing incidence, stays:
+/// summing them finer could cost up to 100 times the 1 nm sum, past the work limits). The 1 nm
+/// colours (PreparedFilm::color, exact_film_color) defer to it.
 [[nodiscard]] std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
                                                 const Colorimeter& colorimeter) noexcept;
 

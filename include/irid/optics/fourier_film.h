@@ -181,7 +181,8 @@ public:
     /// incidence in the ambient (in [0, 1]); NaN outside those. A film past its own critical
     /// angle through which nothing tunnels is the white. Where the series does not apply the
     /// colour is summed instead: the 1 nm sum (PreparedFilm's Airy sum per wavelength), or where
-    /// the 1 nm grid aliases a finer sum (exact_film_color, fine_sum.h). That is:
+    /// the 1 nm grid aliases the incoherent colour past 100 µm of path, a finer sum under it
+    /// (fine_sum.h, down to fallback_min_step_nm). That is:
     /// the film at or past its own critical angle and still tunnelling; |q| > max_ratio at
     /// grazing incidence, where the series converges too slowly; dispersive media changing too
     /// fast through the band (max_q1_variation, max_bend, max_phase_departure); a term whose
@@ -214,6 +215,9 @@ public:
     /// in the table (beyond: the 1 nm sum; a film whose first term is past the table is the
     /// incoherent sum of its faces).
     static constexpr double max_dropped_tail = 2e-4;
+    /// The finest step [nm] of the sum the series falls back to where the 1 nm grid aliases
+    /// under 100 µm of path (fine_sum.h): 47 000 reflectances, about 2 ms a colour.
+    static constexpr double fallback_min_step_nm = 0.01;
     /// The truncation bound on the remaining terms, in Y (white = 1).
     static constexpr double series_tolerance = 1e-7;
 
