@@ -193,8 +193,8 @@ public:
     /// docs/OPTICS.md).
     [[nodiscard]] Xyz xyz(double thickness_nm, double cos_theta) const noexcept;
     [[nodiscard]] FilmColor color(double thickness_nm, double cos_theta) const noexcept;
-    /// Whether xyz() takes the 1 nm sum at this thickness and cos θ (false outside the
-    /// preconditions, where it is NaN).
+    /// Whether xyz() sums at this thickness and cos θ rather than take the series (false outside
+    /// the preconditions, where it is NaN): what BM_FourierFilmGrid counts as falling back.
     [[nodiscard]] bool summed_at(double thickness_nm, double cos_theta) const noexcept;
 
     /// |q| above which the 1 nm sum is used (about 900 terms for 1e-7 near this ratio).
