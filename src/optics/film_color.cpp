@@ -139,6 +139,7 @@ double stack_reflectance(const SingleFilm& film, double thickness_nm, double lam
 PreparedFilm::PreparedFilm(const SingleFilm& film, double angle_rad)
     : m_samples(dense_sample_count), m_film(film), m_angle_rad(angle_rad) {
     check_film_angle(film, angle_rad);
+    m_reach = alias_reach(film, angle_rad);
     const double cos_theta0 = std::cos(angle_rad);
     for (int i = 0; i < dense_sample_count; ++i) {
         bool degenerate = false;
@@ -162,7 +163,7 @@ DenseSpectrum PreparedFilm::reflectance_spectrum(double thickness_nm) const {
 }
 
 FilmColor PreparedFilm::color(double thickness_nm, const Colorimeter& colorimeter) const noexcept {
-    if (const std::optional<Xyz> fine = alias_free_xyz(m_film, thickness_nm, m_angle_rad, colorimeter)) {
+    if (const std::optional<Xyz> fine = alias_free_xyz(m_film, thickness_nm, m_angle_rad, m_reach, colorimeter)) {
         return {*fine, colorimeter.linear_rgb(*fine)};
     }
     int i = 0;

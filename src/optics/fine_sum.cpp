@@ -12,8 +12,8 @@
 
 namespace irid {
 
-double alias_free_step_nm(const SingleFilm& film, double thickness_nm, double angle_rad) noexcept {
-    constexpr double lambda = 555.0, shortest = 380.0;
+AliasReach alias_reach(const SingleFilm& film, double angle_rad) noexcept {
+    constexpr double lambda = 555.0;
     const double n0 = film.ambient.index(lambda).real();
     const double q0 = n0 * std::cos(angle_rad);
     const auto q_of = [&](Complex n) {
@@ -31,11 +31,20 @@ double alias_free_step_nm(const SingleFilm& film, double thickness_nm, double an
     // Round trips until the amplitude falls to 1e-3 of the first (at least one; a ratio of 1 is
     // capped at 1e6 round trips).
     const double trips = ratio > 1e-3 ? std::min(1e6, std::max(1.0, std::log(1e-3) / std::log(std::min(ratio, 1.0 - 1e-12)))) : 1.0;
-    const double opd = 2.0 * thickness_nm * std::abs(q1.real());
-    const double reach = trips * opd;
+    const double opd_per_nm = 2.0 * std::abs(q1.real());
+    return {opd_per_nm, trips * opd_per_nm};
+}
+
+double alias_free_step_nm(const AliasReach& reach, double thickness_nm) noexcept {
+    constexpr double shortest = 380.0;
     // The 1 nm sum's transform departs from a finer sum's by 1e-4 of the white at 0.7 × 380² nm
     // (100 µm; docs/OPTICS.md): the step keeps the reach within 0.7 λ_min² / step.
-    return reach > 0.0 ? std::min(1.0, 0.7 * shortest * shortest / reach) : 1.0;
+    const double r = thickness_nm * reach.reach_per_nm;
+    return r > 0.0 ? std::min(1.0, 0.7 * shortest * shortest / r) : 1.0;
+}
+
+double alias_free_step_nm(const SingleFilm& film, double thickness_nm, double angle_rad) noexcept {
+    return alias_free_step_nm(alias_reach(film, angle_rad), thickness_nm);
 }
 
 Xyz finely_summed_film_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
@@ -73,12 +82,7 @@ Xyz finely_summed_film_xyz(const SingleFilm& film, double thickness_nm, double a
 }
 
 double optical_path_difference_nm(const SingleFilm& film, double thickness_nm, double angle_rad) noexcept {
-    constexpr double lambda = 555.0;
-    const double n0 = film.ambient.index(lambda).real();
-    const double q0 = n0 * std::cos(angle_rad);
-    const Complex n1 = film.film.index(lambda);
-    Complex q1 = std::sqrt((n1 - n0) * (n1 + n0) + q0 * q0);
-    return 2.0 * thickness_nm * std::abs(q1.real());
+    return thickness_nm * alias_reach(film, angle_rad).opd_per_nm;
 }
 
 Xyz incoherent_film_xyz(const SingleFilm& film, double angle_rad, const Colorimeter& colorimeter) noexcept {
@@ -110,16 +114,19 @@ Xyz incoherent_film_xyz(const SingleFilm& film, double angle_rad, const Colorime
 }
 
 std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
-                                  const Colorimeter& colorimeter) noexcept {
+                                  const AliasReach& reach, const Colorimeter& colorimeter) noexcept {
     if (!(std::isfinite(thickness_nm) && thickness_nm >= 0.0)) return std::nullopt;
-    if (!(alias_free_step_nm(film, thickness_nm, angle_rad) < 1.0)) return std::nullopt;
+    if (!(alias_free_step_nm(reach, thickness_nm) < 1.0)) return std::nullopt;
     // Where the 1 nm grid aliases and the single pass is past incoherent_opd_nm, the
     // interference terms weigh the spectrum's transform at that path and beyond, below 8e-5 of
     // the white: the colour is the incoherent one, at the 1 nm sum's cost.
-    if (optical_path_difference_nm(film, thickness_nm, angle_rad) >= incoherent_opd_nm) {
-        return incoherent_film_xyz(film, angle_rad, colorimeter);
-    }
+    if (thickness_nm * reach.opd_per_nm >= incoherent_opd_nm) return incoherent_film_xyz(film, angle_rad, colorimeter);
     return std::nullopt;
+}
+
+std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
+                                  const Colorimeter& colorimeter) noexcept {
+    return alias_free_xyz(film, thickness_nm, angle_rad, alias_reach(film, angle_rad), colorimeter);
 }
 
 }  // namespace irid

@@ -36,6 +36,15 @@ struct SingleFilm {
     Material substrate;
 };
 
+/// What the aliasing of the 1 nm sum depends on besides the thickness, per nanometre of it, at
+/// one angle (fine_sum.h finds it): the optical path of a round trip (2 n1 cos θ1 at 555 nm) and
+/// the reach of the round trips whose amplitude is above 1e-3 of the first (|q|^m, q = r01 r12 at
+/// 555 nm, the larger of s and p).
+struct AliasReach {
+    double opd_per_nm = 0.0;
+    double reach_per_nm = 0.0;
+};
+
 /// One film at one angle of incidence, prepared on the 1 nm grid for evaluation at any thickness:
 /// the Fresnel amplitudes of both faces and the phase per nanometre are computed once per
 /// wavelength (they do not depend on the thickness), so a reflectance is the Airy sum alone
@@ -83,6 +92,8 @@ private:
     std::vector<int> m_degenerate;
     SingleFilm m_film;
     double m_angle_rad;
+    /// What color() asks alias_free_xyz with, found once for the angle.
+    AliasReach m_reach{};
 };
 
 /// The exact reflectance spectrum of a stack at 1 nm (transfer-matrix method, all internal

@@ -15,6 +15,11 @@
 
 namespace irid {
 
+/// The AliasReach (film_color.h) of a film at an angle.
+[[nodiscard]] AliasReach alias_reach(const SingleFilm& film, double angle_rad) noexcept;
+/// alias_free_step_nm below, from a reach already found for the film and angle.
+[[nodiscard]] double alias_free_step_nm(const AliasReach& reach, double thickness_nm) noexcept;
+
 /// A step [nm] at which the colour of `film` at this thickness and angle does not alias: the
 /// reflections whose amplitude is above 1e-3 of the first (|q|^m, q = r01 r12 at 555 nm, the larger
 /// of s and p) reach m × OPD; the step keeps that below 0.7 λ_min² / step at 380 nm (where the
@@ -51,5 +56,8 @@ inline constexpr double incoherent_opd_nm = 100000.0;
 /// colours (PreparedFilm::color, exact_film_color) defer to it.
 [[nodiscard]] std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
                                                 const Colorimeter& colorimeter) noexcept;
+/// The same from a reach already found for the film and angle (PreparedFilm finds it once).
+[[nodiscard]] std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
+                                                const AliasReach& reach, const Colorimeter& colorimeter) noexcept;
 
 }  // namespace irid
