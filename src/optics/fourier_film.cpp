@@ -1,6 +1,7 @@
 #include <irid/error.h>
 #include <irid/optics/fine_sum.h>
 #include <irid/optics/fourier_film.h>
+#include <irid/optics/multilayer.h>
 
 #include <fmt/core.h>
 #include <tbb/parallel_for.h>
@@ -36,13 +37,14 @@ constexpr int reseed_every = 256;
 
 namespace {
 
-/// Tabulates V_k(τ_j) = Σ_i c_i (ν_i − ν_c)^k e^{2πi τ_j (ν_i − ν_c)}, τ_j = j h, for the
-/// moments k = 0 .. moments − 1 and nodes j = 0 .. nodes − 1: row j holds, per moment, x, y, z as
-/// real and imaginary parts. By a phasor per wavelength, advanced by one exact rotation per node
+/// Tabulates V_k(τ_j) = Σ_i c_i T_k(x_i) e^{2πi τ_j (ν_i − ν_c)}, τ_j = j h, for the moments
+/// k = 0 .. moments − 1 (basis[k][i] = T_k(x_i)) and nodes j = 0 .. nodes − 1: row j holds, per
+/// moment, x, y, z as real and imaginary parts. By a phasor per wavelength, advanced by one exact rotation per node
 /// and recomputed every reseed_every nodes (so blocks of nodes are independent, built in
 /// parallel; the result does not depend on the number of threads).
 std::vector<double> tabulate(const std::array<double, dense_sample_count>& nu, double nu_c,
-                             const std::array<std::array<double, dense_sample_count>, 3>& c, int moments,
+                             const std::array<std::array<double, dense_sample_count>, 3>& c,
+                             const std::vector<std::array<double, dense_sample_count>>& basis, int moments,
                              double step, std::size_t nodes) {
     // Wavelengths whose weights are all 0 add nothing.
     std::vector<int> used;
@@ -50,14 +52,12 @@ std::vector<double> tabulate(const std::array<double, dense_sample_count>& nu, d
         if (c[0][i] != 0.0 || c[1][i] != 0.0 || c[2][i] != 0.0) used.push_back(i);
     }
     const std::size_t n = used.size(), width = 6 * static_cast<std::size_t>(moments);
-    // coefficient[(k * 3 + ch) * n + u] = c_ch (ν − ν_c)^k at the u-th used wavelength.
+    // coefficient[(k * 3 + ch) * n + u] = c_ch T_k at the u-th used wavelength.
     std::vector<double> coefficient(static_cast<std::size_t>(moments) * 3 * n), offset(n);
     for (std::size_t u = 0; u < n; ++u) {
         offset[u] = nu[used[u]] - nu_c;
-        double power = 1.0;
         for (int k = 0; k < moments; ++k) {
-            for (int ch = 0; ch < 3; ++ch) coefficient[(k * 3 + ch) * n + u] = c[ch][used[u]] * power;
-            power *= offset[u];
+            for (int ch = 0; ch < 3; ++ch) coefficient[(k * 3 + ch) * n + u] = c[ch][used[u]] * basis[k][used[u]];
         }
     }
     std::vector<double> table(nodes * width);
@@ -92,6 +92,32 @@ std::vector<double> tabulate(const std::array<double, dense_sample_count>& nu, d
         }
     });
     return table;
+}
+
+/// The Lagrange polynomials of nodes xs at x, by the barycentric formula with weights bary (a
+/// node of weight 0 takes no part); exact at a node.
+template <std::size_t n>
+std::array<double, n> lagrange_basis(const std::array<double, n>& xs, const std::array<double, n>& bary,
+                                     double x) noexcept {
+    std::array<double, n> l{};
+    double total = 0.0;
+    for (std::size_t j = 0; j < n; ++j) {
+        if (bary[j] == 0.0) continue;
+        if (std::abs(x - xs[j]) < 1e-13) {
+            l.fill(0.0);
+            l[j] = 1.0;
+            return l;
+        }
+        l[j] = bary[j] / (x - xs[j]);
+        total += l[j];
+    }
+    for (double& v : l) v /= total;
+    return l;
+}
+
+/// A table in single precision (header: its rounding is far below the interpolation's).
+std::vector<float> to_float(const std::vector<double>& t) {
+    return {t.begin(), t.end()};
 }
 
 /// The largest |V| over channels of moment k at node j of a table of `width` numbers a node.
@@ -149,7 +175,7 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
                                        &colorimeter.weight_z()};
     const double quiet_level = cut_tolerance * colorimeter.white().Y;
     const auto max_nodes = static_cast<std::size_t>(max_opd_cap_nm / step_nm) + 1;
-    const auto max_moment_nodes = static_cast<std::size_t>(max_moment_opd_nm / step_nm) + 1;
+    const auto max_node_rows = static_cast<std::size_t>(max_node_opd_nm / step_nm) + 1;
     const auto run_nodes = static_cast<std::size_t>(cut_run_nm / step_nm);
     m_bands.resize(bands);
     for (int b = 0; b < bands; ++b) {
@@ -162,30 +188,23 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
             nu_y += std::abs(c[1][i]) * nu[i];
         }
         band.nu_c = y_sum > 0.0 ? nu_y / y_sum : 0.5 * (nu_low + nu_high);
-        if (slopes) {
-            // The band's reach: the wavenumbers its weights cover (380–780 nm for one band, the
-            // centre ± half the spacing for several). The coefficients are sampled at the outer
-            // Chebyshev nodes of that interval, mid ± cos(π/6) × half its width (a parabola
-            // through them errs least over it), kept inside 360–830 nm where materials are
-            // validated.
-            const double low = bands == 1 ? nu_low : band.nu_c - half_spacing;
-            const double high = bands == 1 ? nu_high : band.nu_c + half_spacing;
-            const double mid = 0.5 * (low + high), half = 0.5 * (high - low);
-            band.node_below = std::max(mid - std::cos(pi / 6.0) * half, 1.0 / lambda_max_nm) - band.nu_c;
-            band.node_above = std::min(mid + std::cos(pi / 6.0) * half, 1.0 / lambda_min_nm) - band.nu_c;
-            band.delta = std::max(band.nu_c - low, high - band.nu_c);
-        }
+        // The band's interval for the Chebyshev variable: 380–780 nm for one band (the weights
+        // outside it are small enough that the interpolants may extrapolate there), for several
+        // the centre ± 1.5 spacings (where a band's share has fallen to 4 % of its peak), within
+        // 360–830 nm where materials are validated.
+        const double low = std::max(bands == 1 ? nu_low : band.nu_c - 3.0 * half_spacing, 1.0 / lambda_max_nm);
+        const double high = std::min(bands == 1 ? nu_high : band.nu_c + 3.0 * half_spacing, 1.0 / lambda_min_nm);
+        band.mid = 0.5 * (low + high);
+        band.half = 0.5 * (high - low);
         for (int i = 0; i < dense_sample_count; ++i) {
-            double power = 1.0;
-            for (int k = 0; k < moment_count; ++k) {
-                band.moments[k].X += c[0][i] * power;
-                band.moments[k].Y += c[1][i] * power;
-                band.moments[k].Z += c[2][i] * power;
-                power *= nu[i] - band.nu_c;
-            }
+            band.white.X += c[0][i];
+            band.white.Y += c[1][i];
+            band.white.Z += c[2][i];
         }
         // V: to the cap, less a quiet run at the end (a narrow band's transform dies out).
-        const std::vector<double> v = tabulate(nu, band.nu_c, c, 1, step_nm, max_nodes);
+        std::vector<std::array<double, dense_sample_count>> ones(1);
+        ones[0].fill(1.0);
+        const std::vector<double> v = tabulate(nu, band.nu_c, c, ones, 1, step_nm, max_nodes);
         std::size_t nodes = max_nodes, quiet = 0;
         for (std::size_t j = 0; j < max_nodes; ++j) {
             const double m = magnitude(v, 6, j, 0);
@@ -203,29 +222,92 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
         band.table.assign(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(6 * nodes));
         band.envelope = envelope_of(v, 6, nodes, 0, step_nm, envelope_step_nm);
         if (!slopes) continue;
-        // V1 .. V4 together, as far as the dispersive films' terms reach.
-        const std::size_t moment_nodes = std::min(nodes, max_moment_nodes);
-        const std::vector<double> vm = tabulate(nu, band.nu_c, c, moment_count, step_nm, moment_nodes);
-        constexpr std::size_t width = 6 * moment_count;
-        band.moment_nodes = moment_nodes;
-        band.moment_table.resize(moment_nodes * (width - 6));
-        for (std::size_t j = 0; j < moment_nodes; ++j) {
-            std::copy(vm.begin() + static_cast<std::ptrdiff_t>(j * width + 6),
-                      vm.begin() + static_cast<std::ptrdiff_t>((j + 1) * width),
-                      band.moment_table.begin() + static_cast<std::ptrdiff_t>(j * (width - 6)));
+        // The nodal transforms U_j together, as far as the dispersive films' terms reach:
+        // basis[j][i] = ℓ_j(x_i), x_i = (ν_i − mid) / half.
+        std::array<double, node_count> xs{}, bary{};
+        for (int j = 0; j < node_count; ++j) {
+            xs[j] = node_x(j);
+            // The barycentric weights of the Chebyshev points of the first kind (Berrut &
+            // Trefethen 2004, eq. 5.3).
+            bary[j] = (j % 2 == 0 ? 1.0 : -1.0) * std::sin((2 * j + 1) * pi / (2 * node_count));
         }
-        // The moments' envelope in units of the band's half-width: max_k |V_k| / δ^k.
-        const auto per_block = static_cast<std::size_t>(envelope_step_nm / step_nm);
-        band.moment_envelope.assign((moment_nodes + per_block - 1) / per_block, 0.0);
-        double scale = 1.0;
-        for (int k = 1; k < moment_count; ++k) {
-            scale *= band.delta;
-            const std::vector<double> e = envelope_of(vm, width, moment_nodes, k, step_nm, envelope_step_nm);
-            for (std::size_t j = 0; j < e.size(); ++j) {
-                band.moment_envelope[j] = std::max(band.moment_envelope[j], e[j] / scale);
+        std::vector<std::array<double, dense_sample_count>> basis(node_count);
+        for (int i = 0; i < dense_sample_count; ++i) {
+            const auto l = lagrange_basis<node_count>(xs, bary, (nu[i] - band.mid) / band.half);
+            for (int j = 0; j < node_count; ++j) {
+                basis[j][i] = l[j];
+                band.node_white[j].X += c[0][i] * l[j];
+                band.node_white[j].Y += c[1][i] * l[j];
+                band.node_white[j].Z += c[2][i] * l[j];
             }
         }
+        const std::size_t rows = std::min(nodes, max_node_rows);
+        band.node_table = to_float(tabulate(nu, band.nu_c, c, basis, node_count, step_nm, rows));
+        band.node_rows = rows;
+        // Σ_j |U_j| per row (the largest channel of each), then its envelope from each τ on.
+        constexpr std::size_t width = 6 * node_count;
+        const auto per_block = static_cast<std::size_t>(envelope_step_nm / step_nm);
+        band.node_envelope.assign((rows + per_block - 1) / per_block, 0.0);
+        double running = 0.0;
+        for (std::size_t r = rows; r-- > 0;) {
+            double sum = 0.0;
+            for (int k = 0; k < node_count; ++k) {
+                double m = 0.0;
+                for (int ch = 0; ch < 3; ++ch) {
+                    const std::size_t o = r * width + 6 * static_cast<std::size_t>(k) + 2 * ch;
+                    m = std::max(m, static_cast<double>(std::hypot(band.node_table[o], band.node_table[o + 1])));
+                }
+                sum += m;
+            }
+            running = std::max(running, sum);
+            if (r % per_block == 0) band.node_envelope[r / per_block] = running;
+        }
     }
+    // The smooth quadrature: the 1 nm sums of the Lagrange polynomials through the
+    // Chebyshev–Lobatto nodes x_j = cos(jπ/16) over 360–830 nm (all of the grid lies inside, so
+    // the interpolant never extrapolates), by the barycentric formula (Berrut & Trefethen 2004,
+    // weights (−1)^j, halved at the ends); the coarse rule likewise on the even nodes.
+    const double mid = 0.5 * (1.0 / lambda_min_nm + 1.0 / lambda_max_nm);
+    const double half = 0.5 * (1.0 / lambda_min_nm - 1.0 / lambda_max_nm);
+    constexpr int last = smooth_node_count - 1;
+    std::array<double, smooth_node_count> xs{};
+    for (int j = 0; j <= last; ++j) {
+        xs[j] = std::cos(j * pi / last);
+        m_smooth_nu[j] = mid + half * xs[j];
+    }
+    const auto add_rule = [&](int stride, std::array<Xyz, smooth_node_count>& out) {
+        // The rule's nodes are every stride-th; its barycentric weights (−1)^k, halved at the
+        // ends, are 0 on the others so that they drop out.
+        std::array<double, smooth_node_count> bary{};
+        for (int j = 0; j <= last; j += stride) {
+            bary[j] = ((j / stride) % 2 == 0 ? 1.0 : -1.0) * (j == 0 || j == last ? 0.5 : 1.0);
+        }
+        for (int i = 0; i < dense_sample_count; ++i) {
+            const auto l = lagrange_basis<smooth_node_count>(xs, bary, (nu[i] - mid) / half);
+            for (int j = 0; j <= last; j += stride) {
+                out[j].X += l[j] * (*weights[0])[i];
+                out[j].Y += l[j] * (*weights[1])[i];
+                out[j].Z += l[j] * (*weights[2])[i];
+            }
+        }
+    };
+    add_rule(1, m_smooth_fine);
+    add_rule(2, m_smooth_coarse);
+}
+
+double FourierColorimeter::node_x(int j) noexcept {
+    static const auto x = [] {
+        std::array<double, node_count> out{};
+        for (int k = 0; k < node_count; ++k) out[k] = std::cos((2 * k + 1) * pi / (2 * node_count));
+        return out;
+    }();
+    return x[j];
+}
+
+double FourierColorimeter::coefficient_matrix(int k, int j) noexcept {
+    // The discrete Chebyshev transform on the nodes of the first kind: c_k = (2 − δ_k0)/N Σ_j
+    // v_j T_k(x_j), T_k(x_j) = cos(k (2j + 1)π / 2N).
+    return (k == 0 ? 1.0 : 2.0) / node_count * std::cos(k * (2 * j + 1) * pi / (2 * node_count));
 }
 
 namespace {
@@ -258,10 +340,36 @@ FourierColorimeter::Transform FourierColorimeter::transform(int b, double tau_nm
     return lookup<1>(band.table, band.nodes, 6, tau_nm / step_nm)[0];
 }
 
-std::array<FourierColorimeter::Transform, FourierColorimeter::moment_count - 1> FourierColorimeter::moment_transforms(
+std::array<FourierColorimeter::Transform, FourierColorimeter::node_count> FourierColorimeter::node_transforms(
     int b, double tau_nm) const noexcept {
     const Band& band = m_bands[b];
-    return lookup<moment_count - 1>(band.moment_table, band.moment_nodes, 6 * (moment_count - 1), tau_nm / step_nm);
+    return lookup<node_count>(band.node_table, band.node_rows, 6 * node_count, tau_nm / step_nm);
+}
+
+FourierColorimeter::Transform FourierColorimeter::node_sum(
+    int b, double tau_nm, const std::array<std::complex<double>, node_count>& values) const noexcept {
+    const Band& band = m_bands[b];
+    const double u = tau_nm / step_nm;
+    Transform out{};
+    if (!(u >= 0.0) || u >= static_cast<double>(band.node_rows) - 1.0) return out;
+    const auto row = static_cast<std::size_t>(u);
+    const double f = u - static_cast<double>(row);
+    constexpr std::size_t width = 6 * node_count;
+    const float* a = &band.node_table[row * width];
+    const float* c = a + width;
+    // The rows interpolated in double, each node's six numbers against its complex value.
+    double acc[6] = {};
+    for (std::size_t j = 0; j < node_count; ++j) {
+        const double vr = values[j].real(), vi = values[j].imag();
+        for (std::size_t ch = 0; ch < 3; ++ch) {
+            const std::size_t o = 6 * j + 2 * ch;
+            const double re = a[o] + f * (static_cast<double>(c[o]) - a[o]);
+            const double im = a[o + 1] + f * (static_cast<double>(c[o + 1]) - a[o + 1]);
+            acc[2 * ch] += vr * re - vi * im;
+            acc[2 * ch + 1] += vr * im + vi * re;
+        }
+    }
+    return {{acc[0], acc[1]}, {acc[2], acc[3]}, {acc[4], acc[5]}};
 }
 
 bool fourier_needs_slopes(const SingleFilm& film) noexcept {
@@ -272,6 +380,49 @@ std::shared_ptr<const FourierColorimeter> fourier_colorimeter_for(const SingleFi
                                                                   const Colorimeter& colorimeter) {
     return std::make_shared<const FourierColorimeter>(colorimeter, 1, fourier_needs_slopes(film));
 }
+
+namespace {
+
+/// coefficient_matrix, tabulated.
+const std::array<std::array<double, FourierColorimeter::node_count>, FourierColorimeter::node_count>&
+chebyshev_matrix() noexcept {
+    static const auto matrix = [] {
+        std::array<std::array<double, FourierColorimeter::node_count>, FourierColorimeter::node_count> m{};
+        for (int k = 0; k < FourierColorimeter::node_count; ++k) {
+            for (int j = 0; j < FourierColorimeter::node_count; ++j) m[k][j] = FourierColorimeter::coefficient_matrix(k, j);
+        }
+        return m;
+    }();
+    return matrix;
+}
+
+/// The Chebyshev coefficients of the interpolant through values at the nodes.
+template <typename T>
+std::array<T, FourierColorimeter::node_count> chebyshev_coefficients(
+    const std::array<T, FourierColorimeter::node_count>& v) noexcept {
+    const auto& m = chebyshev_matrix();
+    std::array<T, FourierColorimeter::node_count> c{};
+    for (int k = 0; k < FourierColorimeter::node_count; ++k) {
+        T sum{};
+        for (int j = 0; j < FourierColorimeter::node_count; ++j) sum += m[k][j] * v[j];
+        c[k] = sum;
+    }
+    return c;
+}
+
+/// Σ_k c_k T_k(x), by the three-term recurrence.
+double chebyshev_value(const std::array<double, FourierColorimeter::node_count>& c, double x) noexcept {
+    double t_prev = 1.0, t = x, sum = c[0] + c[1] * x;
+    for (int k = 2; k < FourierColorimeter::node_count; ++k) {
+        const double next = 2.0 * x * t - t_prev;
+        sum += c[k] * next;
+        t_prev = t;
+        t = next;
+    }
+    return sum;
+}
+
+}  // namespace
 
 // --- FourierFilm --------------------------------------------------------------------------------
 
@@ -286,7 +437,6 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
         throw Error("Fourier film colour: the film '" + film.film.name() +
                     "' absorbs (k > 0); the series needs a lossless film (use the 1 nm sum)");
     }
-    m_sum_only = !film.substrate.is_lossless() && !film.substrate.is_constant();
     const auto media_at = [&](double lambda) {
         return Media{film.ambient.index(lambda).real(), film.film.index(lambda).real(),
                      film.substrate.index(lambda)};
@@ -305,14 +455,44 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
         m.dn0 = hi.n0 - lo.n0;
         m.dn1 = hi.n1 - lo.n1;
         if (m_colorimeter->slopes()) {
-            m.below = media_at(1.0 / (nu_c + m_colorimeter->node_below(b)));
-            m.above = media_at(1.0 / (nu_c + m_colorimeter->node_above(b)));
-            const double delta = m_colorimeter->slope_step(b);
-            m.edge_x0 = std::max(-delta, 1.0 / lambda_max_nm - nu_c);
-            m.edge_x2 = std::min(delta, 1.0 / lambda_min_nm - nu_c);
-            m.edge_below = media_at(1.0 / (nu_c + m.edge_x0));
-            m.edge_above = media_at(1.0 / (nu_c + m.edge_x2));
+            for (int k = 0; k < FourierColorimeter::node_count; ++k) {
+                m.nodes[k] = media_at(1.0 / m_colorimeter->node_wavenumber(b, k));
+            }
         }
+    }
+    if (m_colorimeter->slopes()) {
+        // The media must be as smooth as the nodes: each index (real and imaginary parts) within
+        // max_index_misfit of its interpolant through them, on the 1 nm grid inside each band.
+        for (int b = 0; b < bands && !m_sum_only; ++b) {
+            std::array<std::array<double, FourierColorimeter::node_count>, 4> at{};
+            for (int k = 0; k < FourierColorimeter::node_count; ++k) {
+                const Media& n = m_media[b].nodes[k];
+                at[0][k] = n.n0;
+                at[1][k] = n.n1;
+                at[2][k] = n.n2.real();
+                at[3][k] = n.n2.imag();
+            }
+            std::array<std::array<double, FourierColorimeter::node_count>, 4> c{};
+            for (int q = 0; q < 4; ++q) c[q] = chebyshev_coefficients(at[q]);
+            const double mid = m_colorimeter->band_mid(b), half = m_colorimeter->band_half_width(b);
+            for (int lambda = lambda_min_nm; lambda <= lambda_max_nm && !m_sum_only; ++lambda) {
+                const double x = (1.0 / lambda - mid) / half;
+                if (std::abs(x) > 1.0) continue;
+                const Media n = media_at(lambda);
+                const double exact[4] = {n.n0, n.n1, n.n2.real(), n.n2.imag()};
+                for (int q = 0; q < 4; ++q) {
+                    if (!(std::abs(exact[q] - chebyshev_value(c[q], x)) <= max_index_misfit)) m_sum_only = true;
+                }
+            }
+        }
+    } else {
+        // Without slopes the coefficients are held at each band's centre: a dispersive absorbing
+        // substrate (a metal's table) turns too sharply for that (docs/OPTICS.md).
+        m_sum_only = !film.substrate.is_lossless() && !film.substrate.is_constant();
+    }
+    for (int lambda = lambda_min_nm; lambda <= lambda_max_nm; ++lambda) m_dense.push_back(media_at(lambda));
+    for (int j = 0; j < FourierColorimeter::smooth_node_count; ++j) {
+        m_smooth[j] = media_at(1.0 / m_colorimeter->smooth_node_wavenumber(j));
     }
     for (double lambda = lambda_min_nm; lambda <= lambda_max_nm; lambda += 10.0) {
         const Media at = media_at(lambda);
@@ -320,19 +500,46 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
     }
 }
 
-std::optional<Xyz> FourierFilm::total_reflection(double thickness_nm, double sin2) const noexcept {
+std::optional<Xyz> FourierFilm::total_reflection(double thickness_nm, double cos_theta, double sin2) const noexcept {
     // Past its critical angle the film carries an evanescent field, κ = 2π sqrt(n0² sin²θ − n1²)/λ,
-    // and what tunnels through is of order e^{−2κd}. The wavelengths every 10 nm must all be well
-    // past the critical angle (n0² sin²θ − n1² >= 1 % of n1²: the indices are smooth on that
-    // scale); the smallest κ among them bounds the tunnelling.
+    // and what tunnels through is of order e^{−2κd}. The wavelengths every 10 nm must all be past
+    // the critical angle with a margin, n0² sin²θ − n1² >= 1e-3 n1², that the indices' change
+    // over 10 nm stays inside (water's n² changes by 6e-4 from 360 to 370 nm); the smallest κ
+    // among them bounds the tunnelling.
     double kappa = std::numeric_limits<double>::infinity();
     for (const auto& [lambda, n0_sq, n1_sq] : m_barrier) {
         const double g = n0_sq * sin2 - n1_sq;
-        if (!(g >= 0.01 * n1_sq)) return std::nullopt;
+        if (!(g >= 1e-3 * n1_sq)) return std::nullopt;
         kappa = std::min(kappa, 2.0 * pi * std::sqrt(g) / lambda);
     }
-    if (!(2.0 * kappa * thickness_nm > 23.0)) return std::nullopt;  // e^{-23} = 1e-10
+    if (!(2.0 * kappa * thickness_nm > 23.0)) return evanescent(thickness_nm, cos_theta);  // e^{-23} = 1e-10
     return m_colorimeter->colorimeter().white();
+}
+
+std::optional<Xyz> FourierFilm::evanescent(double thickness_nm, double cos_theta) const noexcept {
+    // The reflectance is smooth in wavenumber (no phase, the field decays through the film), so
+    // the polynomial through it at the quadrature's nodes carries the 1 nm sum; the 17- and
+    // 9-node rules must agree.
+    const FourierColorimeter& fc = *m_colorimeter;
+    Xyz fine, coarse;
+    for (int j = 0; j < FourierColorimeter::smooth_node_count; ++j) {
+        const Media& m = m_smooth[j];
+        // (Never at the film's critical angle here: every wavelength is past it by a margin.)
+        bool at_critical = false;
+        const PreparedFilm::Sample sample = PreparedFilm::prepare_media(
+            m.n0, m.n1, m.n2, cos_theta, 1.0 / fc.smooth_node_wavenumber(j), at_critical);
+        const double r = PreparedFilm::airy_reflectance(sample, thickness_nm);
+        const Xyz& w = fc.smooth_weights(j);
+        const Xyz& v = fc.coarse_smooth_weights(j);
+        fine = {fine.X + r * w.X, fine.Y + r * w.Y, fine.Z + r * w.Z};
+        coarse = {coarse.X + r * v.X, coarse.Y + r * v.Y, coarse.Z + r * v.Z};
+    }
+    const double tolerance = max_smooth_disagreement * fc.colorimeter().white().Y;
+    if (!(std::abs(fine.X - coarse.X) <= tolerance && std::abs(fine.Y - coarse.Y) <= tolerance &&
+          std::abs(fine.Z - coarse.Z) <= tolerance)) {
+        return std::nullopt;
+    }
+    return fine;
 }
 
 Xyz FourierFilm::exact_sum(double thickness_nm, double cos_theta) const noexcept {
@@ -344,11 +551,25 @@ Xyz FourierFilm::exact_sum(double thickness_nm, double cos_theta) const noexcept
     // (cos θ = 0 carries no light into the film; the colour there is the limit).
     const double angle = std::min(std::acos(std::clamp(cos_theta, 0.0, 1.0)), std::nextafter(pi / 2.0, 0.0));
     const double step = alias_free_step_nm(m_film, thickness_nm, angle);
-    if (step < 1.0 && optical_path_difference_nm(m_film, thickness_nm, angle) < incoherent_opd_nm) {
-        return finely_summed_film_xyz(m_film, thickness_nm, angle, m_colorimeter->colorimeter(),
-                                      std::max(step, fallback_min_step_nm));
+    const Colorimeter& colorimeter = m_colorimeter->colorimeter();
+    if (step < 1.0) {
+        if (optical_path_difference_nm(m_film, thickness_nm, angle) < incoherent_opd_nm) {
+            return finely_summed_film_xyz(m_film, thickness_nm, angle, colorimeter, std::max(step, fallback_min_step_nm));
+        }
+        return exact_film_color(m_film, thickness_nm, angle, colorimeter).xyz;
     }
-    return exact_film_color(m_film, thickness_nm, angle, m_colorimeter->colorimeter()).xyz;
+    // The 1 nm sum, as exact_film_color sums it, from the media's indices read once at
+    // construction; a wavelength where the film sits at its own critical angle (rare) sends the
+    // colour to exact_film_color, which takes the transfer matrix there.
+    bool degenerate = false;
+    const Xyz xyz = colorimeter.xyz_of([&](double lambda) {
+        const Media& m = m_dense[static_cast<std::size_t>(static_cast<int>(lambda) - lambda_min_nm)];
+        bool at_critical = false;
+        const PreparedFilm::Sample s = PreparedFilm::prepare_media(m.n0, m.n1, m.n2, cos_theta, lambda, at_critical);
+        degenerate = degenerate || at_critical;
+        return at_critical ? 0.0 : PreparedFilm::airy_reflectance(s, thickness_nm);
+    });
+    return degenerate ? exact_film_color(m_film, thickness_nm, angle, colorimeter).xyz : xyz;
 }
 
 namespace {
@@ -427,164 +648,192 @@ std::optional<Xyz> FourierFilm::series(double thickness_nm, double cos_theta) co
     const FourierColorimeter& fc = *m_colorimeter;
     const double d = thickness_nm;
     const double sin2 = std::max(0.0, 1.0 - cos_theta * cos_theta);
-    const bool slopes = fc.slopes();
     Xyz out;
-    const auto add = [&out](double k, const Xyz& c) {
-        out.X += k * c.X;
-        out.Y += k * c.Y;
-        out.Z += k * c.Z;
-    };
     for (int b = 0; b < fc.bands(); ++b) {
+        if (fc.slopes()) {
+            // Where a node has no series (the film past its critical angle there, or |q| too
+            // large): total reflection if every wavelength is past it, else the sum.
+            bool no_series = false;
+            if (!add_interpolated_band(b, d, cos_theta, sin2, out, no_series)) {
+                return no_series ? total_reflection(d, cos_theta, sin2) : std::nullopt;
+            }
+            continue;
+        }
         const BandMedia& m = m_media[b];
-        // Sets of coefficients: 0 at the centre, 1 and 2 at ν_c − δ and ν_c + δ (slopes).
-        std::array<Series, 2> set[3];
-        double q1 = 0.0, q1_below = 0.0, q1_above = 0.0;
-        if (!series_of(m.centre.n0, m.centre.n1, m.centre.n2, cos_theta, sin2, max_ratio, set[0], q1)) {
-            return total_reflection(d, sin2);
+        std::array<Series, 2> set;
+        double q1 = 0.0;
+        if (!series_of(m.centre.n0, m.centre.n1, m.centre.n2, cos_theta, sin2, max_ratio, set, q1)) {
+            return total_reflection(d, cos_theta, sin2);
         }
-        const int sets = slopes ? 3 : 1;
-        if (slopes && (!series_of(m.below.n0, m.below.n1, m.below.n2, cos_theta, sin2, max_ratio, set[1], q1_below) ||
-                       !series_of(m.above.n0, m.above.n1, m.above.n2, cos_theta, sin2, max_ratio, set[2], q1_above))) {
-            return std::nullopt;
-        }
-        const double delta = slopes ? fc.slope_step(b) : 0.0;
-        const double x0 = slopes ? fc.node_below(b) : -1.0, x2 = slopes ? fc.node_above(b) : 1.0;
-        // Through the band a coefficient c(ν) is the parabola through its values at the nodes
-        // ν_c + x0, ν_c, ν_c + x2: c0 + c1 Δ + c2 Δ², Δ = ν − ν_c, against the moments V0, V1, V2.
-        const auto parabola = [x0, x2](auto below, auto centre, auto above) {
-            using T = decltype(centre);
-            const T s0 = (below - centre) / x0, s2 = (above - centre) / x2;
-            const T c2 = (s2 - s0) / (x2 - x0);
-            return std::array<T, 3>{centre, s2 - c2 * x2, c2};
-        };
-        // The model holds while the media change little through the band: near the film's
-        // critical angle q1 = n1 cos θ1 changes fast with the indices' dispersion, and there (q1
-        // varying by more than max_q1_variation across the band) the 1 nm sum is used.
-        if (slopes && std::abs(q1_above - q1_below) > max_q1_variation * q1) return std::nullopt;
-        // With slopes, the parabolas (of A0 and of the phase) are checked at the band's edges.
-        std::array<Series, 2> edge[2];
-        double q1_edge[2] = {0.0, 0.0};
-        if (slopes &&
-            (!series_of(m.edge_below.n0, m.edge_below.n1, m.edge_below.n2, cos_theta, sin2, max_ratio, edge[0], q1_edge[0]) ||
-             !series_of(m.edge_above.n0, m.edge_above.n1, m.edge_above.n2, cos_theta, sin2, max_ratio, edge[1], q1_edge[1]))) {
-            return std::nullopt;
-        }
-        if (slopes) {
-            const auto dc = parabola(set[1][0].dc + set[1][1].dc, set[0][0].dc + set[0][1].dc,
-                                     set[2][0].dc + set[2][1].dc);
-            const double xs[2] = {m.edge_x0, m.edge_x2};
-            for (int e = 0; e < 2; ++e) {
-                const double x = xs[e];
-                if (std::abs(edge[e][0].dc + edge[e][1].dc - (dc[0] + x * (dc[1] + x * dc[2]))) > max_bend) {
-                    return std::nullopt;
-                }
-            }
-            for (int k = 0; k < 3; ++k) add(dc[k], fc.band_moment(b, k));
-        } else {
-            add(set[0][0].dc + set[0][1].dc, fc.band_white(b));
-        }
-        // The phase about the band's centre, φ = 4π d f(ν), f = ν q1: φ(ν) ≈ φ_c + 2π τ1 (ν − ν_c)
-        // + ψ, τ1 = 2 d f'(ν_c), ψ = β (ν − ν_c)², β = 2π d f''(ν_c); e^{imφ} W(...) =
-        // e^{imφ_c} V(m τ1) but for ψ. Without slopes f' is the group value q1 − λ dq1/dλ from the
-        // indices' slopes per nm; with them f' and f'' come from f at ν_c and ν_c ± δ.
-        const double nu_c = 1.0 / m.lambda_c;
-        double f1 = 0.0, f2 = 0.0;
-        if (slopes) {
-            const auto f = parabola((nu_c + x0) * q1_below, nu_c * q1, (nu_c + x2) * q1_above);
-            f1 = f[1];
-            f2 = 2.0 * f[2];
-            const double xs[2] = {m.edge_x0, m.edge_x2};
-            for (int e = 0; e < 2; ++e) {
-                const double x = xs[e];
-                const double departure = (nu_c + x) * q1_edge[e] - (f[0] + x * (f[1] + x * f[2]));
-                if (4.0 * pi * d * std::abs(departure) > max_phase_departure) return std::nullopt;
-            }
-        } else {
-            const double dq1 = (m.centre.n1 * m.dn1 - m.centre.n0 * m.dn0 * sin2) / q1;
-            f1 = q1 - m.lambda_c * dq1;
-        }
+        const double dc = set[0].dc + set[1].dc;
+        const Xyz& white = fc.band_white(b);
+        out.X += dc * white.X;
+        out.Y += dc * white.Y;
+        out.Z += dc * white.Z;
+        // The phase about the band's centre, φ = 4π d f(ν), f = ν q1, is linear: φ_c + 2π τ1
+        // (ν − ν_c) with τ1 = 2 d f'(ν_c), f' the group value q1 − λ dq1/dλ from the indices'
+        // slopes per nm; e^{imφ} W(...) = e^{imφ_c} V(m τ1).
+        const double dq1 = (m.centre.n1 * m.dn1 - m.centre.n0 * m.dn0 * sin2) / q1;
+        const double f1 = q1 - m.lambda_c * dq1;
         if (!(f1 > 0.0)) return std::nullopt;
         const double tau1 = 2.0 * d * f1;
-        const double beta = 2.0 * pi * d * f2;
-        // The m-th term's chirp e^{imψ} enters to second order, 1 + imψ − (mψ)²/2: its error at the
-        // band's edges is (m |β| δ²)³ / 6. The term's group delays spread over m · 2d |f''| δ on
-        // either side of m τ1, so the envelope bounding it is taken that much earlier.
-        const double edge_phase = std::abs(beta) * delta * delta;
-        const double spread = 2.0 * d * std::abs(f2) * delta;
-        const std::complex<double> u = std::polar(1.0, 4.0 * pi * d * q1 * nu_c);
-        // term[s][p] = G q^{k-1} u^k for set s, polarisation p, at the k-th step of the loop.
-        std::complex<double> term[3][2], ratio[3][2];
-        // After k terms, what the rest can add is at most 2 Σ |term_{k+1}| E(τ) / (1 − |q|), E the
-        // largest |V| from (k+1) τ1 on (the table's envelope): with |term_{k+1}| <= |term_1|
-        // |q|max^k, one running product decides when to stop.
-        double a_v = 0.0, a_m = 0.0, q_max = 0.0;
-        for (int s = 0; s < sets; ++s) {
-            for (int p = 0; p < 2; ++p) {
-                term[s][p] = set[s][p].g * u;
-                ratio[s][p] = set[s][p].q * u;
-                const double q_abs = std::sqrt(std::norm(set[s][p].q));
-                (s == 0 ? a_v : a_m) += std::sqrt(std::norm(term[s][p])) / (1.0 - q_abs);
-                q_max = std::max(q_max, q_abs);
-            }
+        const std::complex<double> u = std::polar(1.0, 4.0 * pi * d * q1 / m.lambda_c);
+        // term[p] = G q^{k-1} u^k at the k-th step of the loop. After k terms, what the rest can
+        // add is at most 2 Σ_p |term_{k+1}| E(τ) / (1 − |q|), E the largest |V| from (k+1) τ1 on
+        // (the table's envelope): with |term_{k+1}| <= |term_1| |q|max^k, one running product
+        // decides when to stop.
+        std::complex<double> term[2], ratio[2];
+        double a_v = 0.0, q_max = 0.0;
+        for (int p = 0; p < 2; ++p) {
+            term[p] = set[p].g * u;
+            ratio[p] = set[p].q * u;
+            const double q_abs = std::sqrt(std::norm(set[p].q));
+            a_v += std::sqrt(std::norm(term[p])) / (1.0 - q_abs);
+            q_max = std::max(q_max, q_abs);
         }
-        const auto remaining = [&](int k, double q_power) {
-            const double tau = std::max(0.0, k * (tau1 - spread));
-            const double chirp = 1.0 + k * edge_phase * (1.0 + k * edge_phase);
-            return 2.0 * q_power * (a_v * chirp * fc.envelope(b, tau) + (a_m + a_v * chirp) * fc.moment_envelope(b, tau));
-        };
         const double max_tau = fc.max_opd_nm(b);
         double q_power = 1.0;
-        for (int k = 1; remaining(k, q_power) > series_tolerance; ++k) {
+        for (int k = 1; 2.0 * q_power * a_v * fc.envelope(b, k * tau1) > series_tolerance; ++k) {
             const double tau = k * tau1;
             if (tau >= max_tau) {
                 // The terms past the table's end are dropped. What they can add is bounded by the
                 // transform's level at the table's end: where that matters for a film whose first
-                // terms are in the table (grazing incidence, |q| → 1), the 1 nm sum is used
-                // instead. A film whose first term is already past the table (OPD >= max_opd_nm)
-                // is the incoherent sum of its faces, within 2 |G| × the floor.
-                double tail = 0.0;
-                for (int s = 0; s < sets; ++s) {
-                    for (int p = 0; p < 2; ++p) {
-                        tail += std::sqrt(std::norm(term[s][p])) / (1.0 - std::sqrt(std::norm(set[s][p].q)));
-                    }
-                }
-                if (k > 1 && 2.0 * tail * fc.band_floor(b) > max_dropped_tail) return std::nullopt;
+                // terms are in the table (grazing incidence, |q| → 1), the sum is used instead. A
+                // film whose first term is already past the table (OPD >= max_opd_nm) is the
+                // incoherent sum of its faces, within 2 |G| × the floor.
+                if (k > 1 && 2.0 * q_power * a_v * fc.band_floor(b) > max_dropped_tail) return std::nullopt;
                 break;
             }
-            const double psi = k * edge_phase;
-            if (slopes && psi > max_quadratic_phase) {
-                // Past the second-order chirp's reach: the 1 nm sum, unless this term and the rest
-                // are negligible.
-                if (remaining(k, q_power) > max_dropped_tail) return std::nullopt;
-                break;
-            }
-            const std::complex<double> t0 = term[0][0] + term[0][1];
-            const auto transform = fc.transform(b, tau);
-            std::complex<double> x = t0 * transform.x, y = t0 * transform.y, z = t0 * transform.z;
-            if (slopes) {
-                // Σ_i w_i c(ν_i) (1 + iβ_k Δ² − β_k² Δ⁴/2) e^{2πi kτ1 Δ}, Δ = ν_i − ν_c:
-                // c0 V0 + c1 V1 + (c2 + iβ c0) V2 + iβ c1 V3 + (iβ c2 − β²/2 c0) V4.
-                const auto c = parabola(term[1][0] + term[1][1], t0, term[2][0] + term[2][1]);
-                const std::complex<double> ib(0.0, k * beta);
-                const std::complex<double> w[4] = {c[1], c[2] + ib * c[0], ib * c[1],
-                                                   ib * c[2] + 0.5 * ib * ib * c[0]};
-                const auto v = fc.moment_transforms(b, tau);
-                for (int n = 0; n < 4; ++n) {
-                    x += w[n] * v[n].x;
-                    y += w[n] * v[n].y;
-                    z += w[n] * v[n].z;
-                }
-            }
-            out.X += 2.0 * x.real();
-            out.Y += 2.0 * y.real();
-            out.Z += 2.0 * z.real();
-            for (int s = 0; s < sets; ++s) {
-                for (int p = 0; p < 2; ++p) term[s][p] *= ratio[s][p];
-            }
+            const std::complex<double> t = term[0] + term[1];
+            const auto v = fc.transform(b, tau);
+            out.X += 2.0 * (t * v.x).real();
+            out.Y += 2.0 * (t * v.y).real();
+            out.Z += 2.0 * (t * v.z).real();
+            for (int p = 0; p < 2; ++p) term[p] *= ratio[p];
             q_power *= q_max;
         }
     }
     return out;
+}
+
+
+bool FourierFilm::add_interpolated_band(int b, double thickness_nm, double cos_theta, double sin2, Xyz& out,
+                                        bool& no_series) const noexcept {
+    constexpr int n_nodes = FourierColorimeter::node_count;
+    const FourierColorimeter& fc = *m_colorimeter;
+    const BandMedia& m = m_media[b];
+    const double d = thickness_nm;
+    const double half = fc.band_half_width(b), nu_c = fc.band_wavenumber(b);
+    // The series' coefficients and f = ν q1 at the nodes.
+    std::array<std::array<Series, 2>, n_nodes> set;
+    std::array<double, n_nodes> f{}, dc{};
+    for (int j = 0; j < n_nodes; ++j) {
+        double q1 = 0.0;
+        if (!series_of(m.nodes[j].n0, m.nodes[j].n1, m.nodes[j].n2, cos_theta, sin2, max_ratio, set[j], q1)) {
+            no_series = true;
+            return false;
+        }
+        f[j] = fc.node_wavenumber(b, j) * q1;
+        dc[j] = set[j][0].dc + set[j][1].dc;
+    }
+    // A0 and the phase must be as smooth as the nodes: their Chebyshev series converged by the
+    // last coefficient.
+    const auto a = chebyshev_coefficients(f);
+    if (std::abs(chebyshev_coefficients(dc)[n_nodes - 1]) > max_amplitude_tail) return false;
+    if (4.0 * pi * d * std::abs(a[n_nodes - 1]) > max_phase_tail) return false;
+    // The carrier: φ's Chebyshev fit to first order, slope 4π d a_1 / half in ν, so τ1 = 2 d a_1 /
+    // half; the residual ρ_j = 4π d (f_j − a_0 − a_1 x_j) is what the nodes interpolate, and
+    // the group delay departs from τ1 by at most 2d Σ_{k>=2} k² |a_k| / half (|T_k'| <= k²).
+    if (!(a[1] > 0.0)) return false;
+    const double tau1 = 2.0 * d * a[1] / half;
+    double residual = 0.0, spread = 0.0;
+    for (int j = 0; j < n_nodes; ++j) {
+        residual = std::max(residual, 4.0 * pi * d * std::abs(f[j] - a[0] - a[1] * FourierColorimeter::node_x(j)));
+    }
+    for (int k = 2; k < n_nodes; ++k) spread += 2.0 * d * k * k * std::abs(a[k]) / half;
+    // The constant term: Σ_j A0(x_j) U_j(0).
+    for (int j = 0; j < n_nodes; ++j) {
+        const Xyz& w = fc.node_white(b, j);
+        out.X += dc[j] * w.X;
+        out.Y += dc[j] * w.Y;
+        out.Z += dc[j] * w.Z;
+    }
+    // term[j][p] = G q^{k-1} z^k at node j for the k-th term, z = e^{i(φ − 2π τ1 (ν − ν_c))}.
+    std::array<std::array<std::complex<double>, 2>, n_nodes> term, ratio;
+    double a_sum = 0.0, q_max = 0.0;
+    for (int j = 0; j < n_nodes; ++j) {
+        const double nu = fc.node_wavenumber(b, j);
+        const std::complex<double> z = std::polar(1.0, 4.0 * pi * d * f[j] - 2.0 * pi * tau1 * (nu - nu_c));
+        double a_node = 0.0;
+        for (int p = 0; p < 2; ++p) {
+            term[j][p] = set[j][p].g * z;
+            ratio[j][p] = set[j][p].q * z;
+            const double q_abs = std::sqrt(std::norm(set[j][p].q));
+            a_node += std::sqrt(std::norm(set[j][p].g)) / (1.0 - q_abs);
+            q_max = std::max(q_max, q_abs);
+        }
+        a_sum = std::max(a_sum, a_node);
+    }
+    // What the terms from the k-th on can add: each is Σ_j P(x_j) U_j with |P(x_j)| <= the
+    // largest node's, against transforms bounded by the envelopes from k (τ1 − spread) on (past
+    // the nodal tables, V times the mean of the P(x_j)).
+    const auto remaining = [&](int k, double q_power) {
+        const double tau = std::max(0.0, k * (tau1 - spread));
+        return 2.0 * q_power * a_sum * std::max(fc.envelope(b, tau), fc.node_envelope(b, tau));
+    };
+    const double max_tau = fc.max_opd_nm(b);
+    const double node_tau = std::min(max_tau, FourierColorimeter::max_node_opd_nm);
+    double q_power = 1.0, interpolation_error = 0.0;
+    for (int k = 1; remaining(k, q_power) > series_tolerance; ++k) {
+        const double tau = k * tau1;
+        if (tau >= max_tau) {
+            // Past the table's end, as for constant indices (series()).
+            if (k > 1 && remaining(k, q_power) > max_dropped_tail) return false;
+            break;
+        }
+        const double r = k * residual;
+        if (r > max_residual_phase) {
+            // Past what the nodes resolve: the sum, unless this term and the rest are negligible.
+            if (remaining(k, q_power) > max_dropped_tail) return false;
+            break;
+        }
+        std::array<std::complex<double>, n_nodes> values;
+        double largest = 0.0;
+        for (int j = 0; j < n_nodes; ++j) {
+            values[j] = term[j][0] + term[j][1];
+            largest = std::max(largest, std::norm(values[j]));
+        }
+        // The interpolant of e^{ikρ} (ρ the residual phase, of amplitude r at the nodes) through
+        // seven nodes errs by up to about 0.06 r³ of the term inside the band where ρ holds a
+        // third-order part up to 0.3 of its second (docs/OPTICS.md). Its transform's share at
+        // this delay is bounded by the envelope.
+        static_assert(n_nodes == 7, "the estimate's constant is for seven nodes");
+        interpolation_error += 2.0 * std::sqrt(largest) * 0.06 * r * r * r *
+                               fc.envelope(b, std::max(0.0, k * (tau1 - spread)));
+        if (interpolation_error > max_interpolation_error) return false;
+        std::complex<double> x, y, z;
+        if (tau < node_tau) {
+            const auto v = fc.node_sum(b, tau, values);
+            x = v.x;
+            y = v.y;
+            z = v.z;
+        } else {
+            std::complex<double> mean;
+            for (int j = 0; j < n_nodes; ++j) mean += FourierColorimeter::coefficient_matrix(0, j) * values[j];
+            const auto v = fc.transform(b, tau);
+            x = mean * v.x;
+            y = mean * v.y;
+            z = mean * v.z;
+        }
+        out.X += 2.0 * x.real();
+        out.Y += 2.0 * y.real();
+        out.Z += 2.0 * z.real();
+        for (int j = 0; j < n_nodes; ++j) {
+            for (int pol = 0; pol < 2; ++pol) term[j][pol] *= ratio[j][pol];
+        }
+        q_power *= q_max;
+    }
+    return true;
 }
 
 FilmColor FourierFilm::color(double thickness_nm, double cos_theta) const noexcept {

@@ -81,6 +81,9 @@ public:
     static Sample prepare(const SingleFilm& film, double cos_theta, int i, bool& degenerate) noexcept;
     /// The same at any wavelength [nm] (the finer sums of fine_sum.h).
     static Sample prepare_at(const SingleFilm& film, double cos_theta, double lambda_nm, bool& degenerate) noexcept;
+    /// The same from the media's indices at that wavelength (ambient lossless: its real index).
+    static Sample prepare_media(double n0, std::complex<double> n1, std::complex<double> n2, double cos_theta,
+                                double lambda_nm, bool& degenerate) noexcept;
     /// The unpolarised Airy reflectance of a prepared sample at a thickness (not for degenerate
     /// samples).
     static double airy_reflectance(const Sample& s, double thickness_nm) noexcept;

@@ -30,16 +30,22 @@
 // Dispersion. The amplitudes and the phase depend on the wavelength through the indices. The
 // spectrum is split into bands by a smooth partition of unity in wavenumber (normalised
 // Gaussians, so that each band's transform decays as fast as the whole's). In each band the
-// phase φ = 4π d f(ν), f(ν) = ν q1(ν) with q1 = n1 cos θ1, is expanded about the band's centre.
-// With `slopes` off ("the index held constant per band") it is linear, φ ≈ φ_c + 4π d g (ν − ν_c)
-// with g = q1 − λ dq1/dλ the group value of q1, and the series' coefficients are held at the
-// centre. With `slopes` on, f and the coefficients A0 and G q^{m-1} are evaluated at ν_c and at
-// two nodes inside the band (its outer Chebyshev nodes): each coefficient is the parabola
-// through them, c0 + c1 Δ + c2 Δ² with Δ = ν − ν_c, and the phase gets its quadratic term
-// ψ = β Δ², β = 2π d f''(ν_c), to second order (e^{imψ} ≈ 1 + imψ − (mψ)²/2). Their products
-// need the moments V_k(τ) = Σ_i w_i Δ_i^k e^{2πiτΔ_i}, k = 1..4, beside V. One band is exact for
-// wavelength-independent media; for dispersive ones (water, oil, silica, metals) see
-// docs/OPTICS.md, "The fast exact film colour", for what each correction buys.
+// phase φ = 4π d f(ν), f(ν) = ν q1(ν) with q1 = n1 cos θ1, is split into a linear carrier and a
+// residual. With `slopes` off ("the index held constant per band") the carrier is
+// φ_c + 4π d g (ν − ν_c), g = q1 − λ dq1/dλ the group value of q1, and the series' coefficients
+// are held at the centre. With `slopes` on, each term's coefficient times its residual phase,
+// P_m(ν) = G q^{m-1} e^{imφ} e^{−2πi m τ1 (ν − ν_c)}, is interpolated through the band's seven
+// Chebyshev nodes x_j, where it is exact: P_m = Σ_j P_m(x_j) ℓ_j(x), x the wavenumber mapped onto
+// [−1, 1] over the band and ℓ_j the Lagrange polynomials of the nodes, so the term is
+// Σ_j P_m(x_j) U_j(m τ1) with the nodal transforms U_j(τ) = Σ_i w_i ℓ_j(x_i) e^{2πiτ(ν_i − ν_c)}
+// tabulated beside V (Σ_j U_j = V). τ1 is the slope of the Chebyshev fit of φ, so what is left
+// to interpolate is only the curvature of the phase and of the amplitudes. Media whose indices
+// the nodes' interpolant misses by more than 1e-4 anywhere in 380–780 nm (a metal's table) are
+// summed instead. A film past its own critical angle at every wavelength has no phase, only
+// an evanescent field: its reflectance is smooth in wavenumber and is summed by a 17-node
+// Chebyshev quadrature over the spectrum, checked against the 9 nodes among them. One band is
+// exact for wavelength-independent media; for dispersive ones (water, oil, silica, metals) see
+// docs/OPTICS.md, "The fast exact film colour", for what each part buys.
 
 #include <irid/color/types.h>
 #include <irid/optics/film.h>
@@ -74,17 +80,19 @@ public:
     /// itself is below 8e-5 of the white and falling, so the terms beyond are dropped and a film
     /// whose first term is past it is the incoherent sum of its faces (docs/OPTICS.md).
     static constexpr double max_opd_cap_nm = 100000.0;
-    /// Where the moment tables (V1 .. V4, for dispersive films) end: past it the terms of a
-    /// dispersive film use V alone (at 40 µm |V| is below 4e-4 of the white).
-    static constexpr double max_moment_opd_nm = 40000.0;
-    /// The moments tabulated with slopes: V0 = V, and V1 .. V4.
-    static constexpr int moment_count = 5;
+    /// Where the nodal tables (U_j, for dispersive films) end: past it the terms of a dispersive
+    /// film take V times their mean over the band (at 40 µm |V| is below 4e-4 of the white).
+    static constexpr double max_node_opd_nm = 40000.0;
+    /// With slopes, a film's coefficients are taken at this many Chebyshev nodes per band: the
+    /// interpolant through them is of degree node_count − 1.
+    static constexpr int node_count = 7;
+    /// The Chebyshev–Lobatto nodes of the quadrature for smooth reflectances (smooth_weights).
+    static constexpr int smooth_node_count = 17;
 
     /// Throws irid::Error unless 1 <= bands <= max_bands. With `slopes`, each band also holds
-    /// the moment transforms V1 .. V4 that FourierFilm's dispersion correction needs, to
-    /// max_moment_opd_nm. One band: 1.2 MB and 52 ms to build, with slopes 3.1 MB and 160 ms
-    /// (docs/PERFORMANCE.md); the tabulation runs on oneTBB's threads, its result independent
-    /// of their number.
+    /// the nodal transforms U_j that FourierFilm's dispersive films need, to max_node_opd_nm.
+    /// One band: 1.2 MB, with slopes 4.6 MB (docs/PERFORMANCE.md has the build times); the
+    /// tabulation runs on oneTBB's threads, its result independent of their number.
     explicit FourierColorimeter(const Colorimeter& colorimeter, int bands = 1, bool slopes = false);
 
     struct Transform {
@@ -92,13 +100,27 @@ public:
     };
     [[nodiscard]] int bands() const noexcept { return static_cast<int>(m_bands.size()); }
     [[nodiscard]] bool slopes() const noexcept { return m_slopes; }
-    /// The band's reach δ [1/nm]: how far from its centre its weights extend (to 380 nm for one
-    /// band; 0 without slopes).
-    [[nodiscard]] double slope_step(int b) const noexcept { return m_bands[b].delta; }
-    /// Where, relative to the centre [1/nm], a film's coefficients are sampled for their
-    /// parabola through the band (with slopes): below (x0 < 0) and above (x2 > 0) the centre.
-    [[nodiscard]] double node_below(int b) const noexcept { return m_bands[b].node_below; }
-    [[nodiscard]] double node_above(int b) const noexcept { return m_bands[b].node_above; }
+    /// The band's interval in wavenumber [1/nm] as the Chebyshev variable sees it: x = (ν −
+    /// mid) / half maps 780–380 nm onto [−1, 1] for one band (with slopes; the weights outside,
+    /// 360–380 and 780–830 nm, extrapolate to x = 1.22 and −1.11).
+    [[nodiscard]] double band_mid(int b) const noexcept { return m_bands[b].mid; }
+    [[nodiscard]] double band_half_width(int b) const noexcept { return m_bands[b].half; }
+    /// The Chebyshev variable of node j < node_count, x_j = cos((2j + 1)π / (2 node_count)).
+    [[nodiscard]] static double node_x(int j) noexcept;
+    /// The wavenumber [1/nm] of node j of band b (with slopes).
+    [[nodiscard]] double node_wavenumber(int b, int j) const noexcept {
+        return m_bands[b].mid + m_bands[b].half * node_x(j);
+    }
+    /// The Chebyshev coefficients of the interpolant through values at the nodes:
+    /// c_k = Σ_j coefficient_matrix(k, j) v_j.
+    [[nodiscard]] static double coefficient_matrix(int k, int j) noexcept;
+    /// The quadrature for a reflectance smooth in wavenumber: Σ_j R(ν_j) smooth_weights(j) is the
+    /// 1 nm sum of the polynomial through R at the nodes ν_j (Chebyshev–Lobatto over 360–830 nm,
+    /// node 0 at 360 nm). coarse_smooth_weights(j) is the same rule on the even nodes only
+    /// (0 on the odd ones): their difference estimates the quadrature's error.
+    [[nodiscard]] double smooth_node_wavenumber(int j) const noexcept { return m_smooth_nu[j]; }
+    [[nodiscard]] const Xyz& smooth_weights(int j) const noexcept { return m_smooth_fine[j]; }
+    [[nodiscard]] const Xyz& coarse_smooth_weights(int j) const noexcept { return m_smooth_coarse[j]; }
     /// max |V_b| over the last cut_run_nm of the band's table: the estimate of the transform past
     /// the table's end that FourierFilm bounds the terms it drops with.
     [[nodiscard]] double band_floor(int b) const noexcept { return m_bands[b].floor; }
@@ -107,15 +129,19 @@ public:
     [[nodiscard]] double band_wavenumber(int b) const noexcept { return m_bands[b].nu_c; }
     /// Σ_i w_b(ν_i) w_i: the band's part of the white (the whites of all bands sum to the
     /// colorimeter's white).
-    [[nodiscard]] const Xyz& band_white(int b) const noexcept { return m_bands[b].moments[0]; }
-    /// Σ_i w_b(ν_i) w_i (ν_i − ν_c)^k, k < moment_count: the band's moments (k = 0 is its white).
-    [[nodiscard]] const Xyz& band_moment(int b, int k) const noexcept { return m_bands[b].moments[k]; }
+    [[nodiscard]] const Xyz& band_white(int b) const noexcept { return m_bands[b].white; }
+    /// Σ_i w_b(ν_i) w_i ℓ_j(x_i): node j's share of the band's white (U_j(0); with slopes).
+    [[nodiscard]] const Xyz& node_white(int b, int j) const noexcept { return m_bands[b].node_white[j]; }
     /// The band's demodulated transform V_b(τ) = Σ_i w_b(ν_i) w_i e^{2πiτ(ν_i − ν_c)},
     /// interpolated; 0 beyond the band's table.
     [[nodiscard]] Transform transform(int b, double tau_nm) const noexcept;
-    /// V1_b .. V4_b, with (ν_i − ν_c)^k in the sum (with slopes; 0 past max_moment_opd_nm and
-    /// without slopes).
-    [[nodiscard]] std::array<Transform, moment_count - 1> moment_transforms(int b, double tau_nm) const noexcept;
+    /// U_0 .. U_6 of band b, interpolated (with slopes; 0 past max_node_opd_nm and without
+    /// slopes).
+    [[nodiscard]] std::array<Transform, node_count> node_transforms(int b, double tau_nm) const noexcept;
+    /// Σ_j values[j] U_j(τ) (with slopes, τ < max_node_opd_nm; 0 outside the nodal table): what
+    /// a dispersive film's term needs, without forming the U_j.
+    [[nodiscard]] Transform node_sum(int b, double tau_nm,
+                                     const std::array<std::complex<double>, node_count>& values) const noexcept;
     /// Where the band's table ends [nm].
     [[nodiscard]] double max_opd_nm(int b) const noexcept {
         return step_nm * static_cast<double>(m_bands[b].nodes - 1);
@@ -127,28 +153,29 @@ public:
     [[nodiscard]] double envelope(int b, double tau_nm) const noexcept {
         return envelope_at(m_bands[b].envelope, m_bands[b].floor, tau_nm);
     }
-    /// The same for max_k |V_k| / δ^k, k = 1 .. 4 (0 without slopes).
-    [[nodiscard]] double moment_envelope(int b, double tau_nm) const noexcept {
-        return envelope_at(m_bands[b].moment_envelope, 0.0, tau_nm);
+    /// The same for Σ_j |U_j| (0 without slopes).
+    [[nodiscard]] double node_envelope(int b, double tau_nm) const noexcept {
+        return envelope_at(m_bands[b].node_envelope, 0.0, tau_nm);
     }
     [[nodiscard]] const Colorimeter& colorimeter() const noexcept { return m_colorimeter; }
 
 private:
     struct Band {
         double nu_c = 0.0;
-        std::array<Xyz, moment_count> moments{};
-        double bound = 0.0, delta = 0.0, floor = 0.0, node_below = 0.0, node_above = 0.0;
+        Xyz white;
+        std::array<Xyz, node_count> node_white{};
+        double bound = 0.0, floor = 0.0, mid = 0.0, half = 1.0;
         /// V per node of τ: x, y, z as real and imaginary parts. Single precision (its rounding,
         /// 6e-8 of the white, is far below the interpolation's 1.2e-5) halves what a lookup far
         /// out in τ brings into the cache.
         std::vector<float> table;
         std::size_t nodes = 0;
-        /// V1 .. V4 per node, likewise (with slopes).
-        std::vector<float> moment_table;
-        std::size_t moment_nodes = 0;
-        /// envelope[j]: max |V| over τ >= j × envelope_step_nm; moment_envelope[j] the same of
-        /// max_k |V_k| / δ^k (with slopes).
-        std::vector<double> envelope, moment_envelope;
+        /// U_0 .. U_6 per node of τ, likewise (with slopes).
+        std::vector<float> node_table;
+        std::size_t node_rows = 0;
+        /// envelope[j]: max |V| over τ >= j × envelope_step_nm; node_envelope[j] the same of
+        /// Σ_j |U_j| (with slopes).
+        std::vector<double> envelope, node_envelope;
     };
     static constexpr double envelope_step_nm = 500.0;
     static double envelope_at(const std::vector<double>& e, double beyond, double tau_nm) noexcept {
@@ -159,6 +186,8 @@ private:
     Colorimeter m_colorimeter;
     bool m_slopes = false;
     std::vector<Band> m_bands;
+    std::array<double, smooth_node_count> m_smooth_nu{};
+    std::array<Xyz, smooth_node_count> m_smooth_fine{}, m_smooth_coarse{};
 };
 
 /// Whether a film's media disperse (any of ambient, film, substrate not Material::is_constant),
@@ -179,18 +208,18 @@ public:
 
     /// XYZ (white Y = 1) at a thickness [nm, finite, >= 0] and the cosine of the angle of
     /// incidence in the ambient (in [0, 1]); NaN outside those. A film past its own critical
-    /// angle through which nothing tunnels is the white. Where the series does not apply the
-    /// colour is summed instead: the 1 nm sum (PreparedFilm's Airy sum per wavelength), or where
-    /// the 1 nm grid aliases the incoherent colour past 100 µm of path, a finer sum under it
-    /// (fine_sum.h, down to fallback_min_step_nm). That is:
-    /// the film at or past its own critical angle and still tunnelling; |q| > max_ratio at
-    /// grazing incidence, where the series converges too slowly; dispersive media changing too
-    /// fast through the band (max_q1_variation, max_bend, max_phase_departure); a term whose
-    /// chirp is past max_quadratic_phase while the terms from it on could add more than
-    /// max_dropped_tail (thick dispersive films past about 55°); terms dropped past the table's
-    /// end that would matter (max_dropped_tail); a dispersive absorbing substrate (a metal's
-    /// table: its reflectance turns too sharply for one band, ΔE2000 up to 18 for gold,
-    /// docs/OPTICS.md).
+    /// angle at every wavelength is the white where nothing tunnels through it, else the smooth
+    /// quadrature (header). Where neither applies the colour is summed instead: the 1 nm sum
+    /// (PreparedFilm's Airy sum per wavelength), or where the 1 nm grid aliases the incoherent
+    /// colour past 100 µm of path, a finer sum under it (fine_sum.h, down to
+    /// fallback_min_step_nm). That is: the film's critical angle inside the spectrum, or the
+    /// quadrature's rules disagreeing; |q| > max_ratio at grazing incidence, where the series
+    /// converges too slowly; dispersive media bending too fast through the band
+    /// (max_amplitude_tail, max_phase_tail); a term whose residual phase is past
+    /// max_residual_phase while the terms from it on could add more than max_dropped_tail, or
+    /// whose interpolation could err by more than max_interpolation_error (thick films near
+    /// their critical angle); terms dropped past the table's end that would matter
+    /// (max_dropped_tail); media the nodes do not follow (max_index_misfit: a metal's table).
     [[nodiscard]] Xyz xyz(double thickness_nm, double cos_theta) const noexcept;
     [[nodiscard]] FilmColor color(double thickness_nm, double cos_theta) const noexcept;
     /// Whether xyz() sums at this thickness and cos θ rather than take the series (false outside
@@ -199,18 +228,26 @@ public:
 
     /// |q| above which the 1 nm sum is used (about 900 terms for 1e-7 near this ratio).
     static constexpr double max_ratio = 0.98;
-    /// With slopes: the largest change of q1 = n1 cos θ1 between the band's nodes, relative to
-    /// its value at the centre, for which the band's model is used.
-    static constexpr double max_q1_variation = 0.05;
-    /// With slopes: the most that A0 and the phase of the first term, 4π d f(ν), may depart from
-    /// their parabolas at the band's edges (a Sellmeier pole just past the visible, or a film
-    /// near its critical angle, bends them) before the 1 nm sum is used instead.
-    static constexpr double max_bend = 1e-3;
-    static constexpr double max_phase_departure = 0.2;
-    /// With slopes: the largest chirp m|β|δ² of the m-th term at the band's reach δ [rad] for
-    /// which its second-order expansion is used (its error there, (m|β|δ²)³/6, falls on the
-    /// spectrum's ends, where the weights are small).
-    static constexpr double max_quadratic_phase = 1.0;
+    /// With slopes: the largest last Chebyshev coefficient of A0 through the nodes, and of the
+    /// first term's phase 4π d f(ν), for which the band's model is used. A film near its
+    /// critical angle, or a Sellmeier pole just past the visible, bends them so that their
+    /// series no longer converges within seven nodes; then the sum is used.
+    static constexpr double max_amplitude_tail = 1e-4;
+    static constexpr double max_phase_tail = 0.02;
+    /// With slopes: media whose indices (real and imaginary parts) the nodes' interpolant misses
+    /// by more than this anywhere on the 1 nm grid from 380 to 780 nm are summed (uses_sum()):
+    /// a metal's table, whose kinks between its samples no polynomial follows.
+    static constexpr double max_index_misfit = 1e-4;
+    /// With slopes: the largest residual phase m max_j |ρ_j| of the m-th term at the nodes
+    /// (what is left of m φ after its linear carrier) for which it is interpolated; past it the
+    /// five nodes no longer resolve e^{imρ} (docs/OPTICS.md measures the error against it).
+    static constexpr double max_residual_phase = 2.0;
+    /// With slopes: the most the interpolation may err in Y (white = 1), by its estimate
+    /// summed over the terms, before the sum is used instead.
+    static constexpr double max_interpolation_error = 3e-4;
+    /// A film past its own critical angle is summed by the smooth quadrature when its 17- and
+    /// 9-node rules agree to this, in Y (white = 1); otherwise by the sum.
+    static constexpr double max_smooth_disagreement = 2e-5;
     /// The most that the terms dropped past the table's end may add to Y, for a film with terms
     /// in the table (beyond: the 1 nm sum; a film whose first term is past the table is the
     /// incoherent sum of its faces).
@@ -222,28 +259,41 @@ public:
     static constexpr double series_tolerance = 1e-7;
 
     [[nodiscard]] const SingleFilm& film() const noexcept { return m_film; }
-    /// Whether every colour is the 1 nm sum (a dispersive absorbing substrate).
+    /// Whether every colour is the sum (media the nodes do not follow: max_index_misfit).
     [[nodiscard]] bool uses_sum() const noexcept { return m_sum_only; }
     [[nodiscard]] const FourierColorimeter& colorimeter() const noexcept { return *m_colorimeter; }
 
 private:
-    /// The media at a band's centre: indices and their wavelength derivatives [1/nm].
+    /// The media at one wavenumber.
     struct Media {
         double n0 = 1.0, n1 = 1.0;
         std::complex<double> n2;
     };
     struct BandMedia {
         double lambda_c = 0.0;
+        /// The real indices' wavelength derivatives at the centre [1/nm] (without slopes).
         double dn0 = 0.0, dn1 = 0.0;
-        /// At ν_c, at the band's nodes ν_c + x0 and ν_c + x2 (slopes), and at its edges ν_c ± δ
-        /// (clamped to 360–830 nm), where the parabolas are checked.
-        Media centre, below, above, edge_below, edge_above;
-        double edge_x0 = 0.0, edge_x2 = 0.0;
+        /// At ν_c, and at the band's Chebyshev nodes (with slopes).
+        Media centre;
+        std::array<Media, FourierColorimeter::node_count> nodes;
     };
+    /// The band's part of the series with slopes (header), added to `out`; false where the
+    /// series does not apply (and `no_series` where that is because some node has none: the
+    /// film past its critical angle there, or |q| > max_ratio).
+    [[nodiscard]] bool add_interpolated_band(int b, double thickness_nm, double cos_theta, double sin2,
+                                             Xyz& out, bool& no_series) const noexcept;
+    /// The colour of a film past its own critical angle at every wavelength, where its
+    /// reflectance is smooth: the smooth quadrature, or nothing where its rules disagree.
+    [[nodiscard]] std::optional<Xyz> evanescent(double thickness_nm, double cos_theta) const noexcept;
+    /// The media at the smooth quadrature's nodes.
+    std::array<Media, FourierColorimeter::smooth_node_count> m_smooth;
+    /// The media on the 1 nm grid, 360–830 nm: what the sum reads.
+    std::vector<Media> m_dense;
     [[nodiscard]] Xyz exact_sum(double thickness_nm, double cos_theta) const noexcept;
-    /// The colour of a film past its own critical angle at every wavelength and thick enough that
-    /// no light tunnels through it (e^{−2κd} < 1e-10): the white; nothing otherwise.
-    [[nodiscard]] std::optional<Xyz> total_reflection(double thickness_nm, double sin2) const noexcept;
+    /// The colour of a film past its own critical angle at every wavelength: the white where no
+    /// light tunnels through it (e^{−2κd} < 1e-10), else evanescent(); nothing where some
+    /// wavelengths are not past it.
+    [[nodiscard]] std::optional<Xyz> total_reflection(double thickness_nm, double cos_theta, double sin2) const noexcept;
     /// n0² and n1² every 10 nm over 360–830 nm, and the wavelengths: what total_reflection reads.
     std::vector<std::array<double, 3>> m_barrier;
     /// The series' colour, or nothing where the 1 nm sum is to be used.
