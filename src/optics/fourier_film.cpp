@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <tuple>
@@ -378,7 +379,34 @@ bool fourier_needs_slopes(const SingleFilm& film) noexcept {
 
 std::shared_ptr<const FourierColorimeter> fourier_colorimeter_for(const SingleFilm& film,
                                                                   const Colorimeter& colorimeter) {
-    return std::make_shared<const FourierColorimeter>(colorimeter, 1, fourier_needs_slopes(film));
+    const bool slopes = fourier_needs_slopes(film);
+    const auto same = [&](const FourierColorimeter& f) {
+        const Colorimeter& c = f.colorimeter();
+        const auto equal = [](const DenseSpectrum& a, const DenseSpectrum& b) {
+            return std::ranges::equal(a.values(), b.values());
+        };
+        return f.slopes() == slopes && f.bands() == 1 && equal(c.weight_x(), colorimeter.weight_x()) &&
+               equal(c.weight_y(), colorimeter.weight_y()) && equal(c.weight_z(), colorimeter.weight_z());
+    };
+    // Most recently used first.
+    static std::mutex mutex;
+    static std::vector<std::shared_ptr<const FourierColorimeter>> recent;
+    constexpr std::size_t kept = 4;
+    {
+        const std::lock_guard lock(mutex);
+        const auto hit = std::find_if(recent.begin(), recent.end(), [&](const auto& f) { return same(*f); });
+        if (hit != recent.end()) {
+            std::rotate(recent.begin(), hit, hit + 1);
+            return recent.front();
+        }
+    }
+    // Built outside the lock (it runs on oneTBB's threads); two threads asking at once may both
+    // build, and both results are correct.
+    auto built = std::make_shared<const FourierColorimeter>(colorimeter, 1, slopes);
+    const std::lock_guard lock(mutex);
+    recent.insert(recent.begin(), built);
+    if (recent.size() > kept) recent.pop_back();
+    return built;
 }
 
 namespace {

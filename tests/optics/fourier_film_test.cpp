@@ -212,6 +212,26 @@ TEST(FourierColorimeter, TheSmoothQuadratureIsExactForPolynomials) {
     EXPECT_NEAR(f.smooth_node_wavenumber(FourierColorimeter::smooth_node_count - 1), 1.0 / lambda_max_nm, 1e-15);
 }
 
+TEST(FourierColorimeter, AColorimeterOfTheSameWeightsGetsTheSameTransforms) {
+    // fourier_colorimeter_for keeps what it built: asked again for the same weights (another
+    // Colorimeter object, equal), it hands out the same tables; other weights, or the other
+    // kind of film, get their own.
+    const SingleFilm constant = constant_film(1.0, 1.33, Complex(1.5));
+    const SingleFilm soap{*find_material("air"), *find_material("water"), *find_material("air")};
+    const auto a = fourier_colorimeter_for(soap, Colorimeter());
+    const auto b = fourier_colorimeter_for(soap, Colorimeter());
+    EXPECT_EQ(a.get(), b.get());
+    EXPECT_TRUE(a->slopes());
+    const auto other = fourier_colorimeter_for(soap, Colorimeter(illuminant_by_name("A")));
+    EXPECT_NE(other.get(), a.get());
+    EXPECT_NEAR(other->colorimeter().white().X, Colorimeter(illuminant_by_name("A")).white().X, 1e-15);
+    const auto plain = fourier_colorimeter_for(constant, Colorimeter());
+    EXPECT_NE(plain.get(), a.get());
+    EXPECT_FALSE(plain->slopes());
+    // Still the same after others were asked for (four are kept).
+    EXPECT_EQ(fourier_colorimeter_for(soap, Colorimeter()).get(), a.get());
+}
+
 TEST(FourierColorimeter, RejectsBandCounts) {
     const Colorimeter c;
     EXPECT_THROW(FourierColorimeter(c, 0), Error);

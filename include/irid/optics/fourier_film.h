@@ -194,7 +194,9 @@ private:
 /// so that its coefficients need the slopes.
 [[nodiscard]] bool fourier_needs_slopes(const SingleFilm& film) noexcept;
 /// A colorimeter's transforms as a film needs them by default: one band, with slopes when the
-/// media disperse (docs/OPTICS.md measures more bands: they cost more than they gain).
+/// media disperse (docs/OPTICS.md measures more bands: they cost more than they gain). The last
+/// four built are kept and handed out again to a colorimeter of the same weights (building one
+/// takes 30–200 ms; a Python call per colour would otherwise pay that each time). Thread-safe.
 [[nodiscard]] std::shared_ptr<const FourierColorimeter> fourier_colorimeter_for(
     const SingleFilm& film, const Colorimeter& colorimeter);
 
