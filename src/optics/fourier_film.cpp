@@ -264,36 +264,35 @@ FourierColorimeter::FourierColorimeter(const Colorimeter& colorimeter, int bands
             if (r % per_block == 0) band.node_envelope[r / per_block] = running;
         }
     }
-    // The smooth quadrature: the 1 nm sums of the Lagrange polynomials through the
-    // Chebyshev–Lobatto nodes x_j = cos(jπ/16) over 360–830 nm (all of the grid lies inside, so
-    // the interpolant never extrapolates), by the barycentric formula (Berrut & Trefethen 2004,
-    // weights (−1)^j, halved at the ends); the coarse rule likewise on the even nodes.
+    // The quadratures: the 1 nm sums of the Lagrange polynomials through the Chebyshev–Lobatto
+    // nodes x_j = cos(jπ/128) over 360–830 nm (all of the grid lies inside, so the interpolant
+    // never extrapolates), every 2^(4 − L)-th of them at level L, by the barycentric formula
+    // (Berrut & Trefethen 2004, §5: weights (−1)^k, halved at the ends).
     const double mid = 0.5 * (1.0 / lambda_min_nm + 1.0 / lambda_max_nm);
     const double half = 0.5 * (1.0 / lambda_min_nm - 1.0 / lambda_max_nm);
-    constexpr int last = smooth_node_count - 1;
-    std::array<double, smooth_node_count> xs{};
+    constexpr int last = quadrature_node_count - 1;
+    std::array<double, quadrature_node_count> xs{};
     for (int j = 0; j <= last; ++j) {
         xs[j] = std::cos(j * pi / last);
-        m_smooth_nu[j] = mid + half * xs[j];
+        m_quadrature_nu[j] = mid + half * xs[j];
     }
-    const auto add_rule = [&](int stride, std::array<Xyz, smooth_node_count>& out) {
-        // The rule's nodes are every stride-th; its barycentric weights (−1)^k, halved at the
-        // ends, are 0 on the others so that they drop out.
-        std::array<double, smooth_node_count> bary{};
+    for (int level = 0; level < quadrature_levels; ++level) {
+        // The level's nodes are every stride-th; the others get barycentric weight 0 and drop out.
+        const int stride = 1 << (quadrature_levels - 1 - level);
+        std::array<double, quadrature_node_count> bary{};
         for (int j = 0; j <= last; j += stride) {
             bary[j] = ((j / stride) % 2 == 0 ? 1.0 : -1.0) * (j == 0 || j == last ? 0.5 : 1.0);
         }
+        std::array<Xyz, quadrature_node_count>& out = m_quadrature_weights[level];
         for (int i = 0; i < dense_sample_count; ++i) {
-            const auto l = lagrange_basis<smooth_node_count>(xs, bary, (nu[i] - mid) / half);
+            const auto l = lagrange_basis<quadrature_node_count>(xs, bary, (nu[i] - mid) / half);
             for (int j = 0; j <= last; j += stride) {
                 out[j].X += l[j] * (*weights[0])[i];
                 out[j].Y += l[j] * (*weights[1])[i];
                 out[j].Z += l[j] * (*weights[2])[i];
             }
         }
-    };
-    add_rule(1, m_smooth_fine);
-    add_rule(2, m_smooth_coarse);
+    }
 }
 
 double FourierColorimeter::node_x(int j) noexcept {
@@ -519,8 +518,8 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
         m_sum_only = !film.substrate.is_lossless() && !film.substrate.is_constant();
     }
     for (int lambda = lambda_min_nm; lambda <= lambda_max_nm; ++lambda) m_dense.push_back(media_at(lambda));
-    for (int j = 0; j < FourierColorimeter::smooth_node_count; ++j) {
-        m_smooth[j] = media_at(1.0 / m_colorimeter->smooth_node_wavenumber(j));
+    for (int j = 0; j < FourierColorimeter::quadrature_node_count; ++j) {
+        m_quadrature_media[j] = media_at(1.0 / m_colorimeter->quadrature_wavenumber(j));
     }
     for (double lambda = lambda_min_nm; lambda <= lambda_max_nm; lambda += 10.0) {
         const Media at = media_at(lambda);
@@ -540,34 +539,60 @@ std::optional<Xyz> FourierFilm::total_reflection(double thickness_nm, double cos
         if (!(g >= 1e-3 * n1_sq)) return std::nullopt;
         kappa = std::min(kappa, 2.0 * pi * std::sqrt(g) / lambda);
     }
-    if (!(2.0 * kappa * thickness_nm > 23.0)) return evanescent(thickness_nm, cos_theta);  // e^{-23} = 1e-10
+    if (!(2.0 * kappa * thickness_nm > 23.0)) return quadrature(thickness_nm, cos_theta);  // e^{-23} = 1e-10
     return m_colorimeter->colorimeter().white();
 }
 
-std::optional<Xyz> FourierFilm::evanescent(double thickness_nm, double cos_theta) const noexcept {
-    // The reflectance is smooth in wavenumber (no phase, the field decays through the film), so
-    // the polynomial through it at the quadrature's nodes carries the 1 nm sum; the 17- and
-    // 9-node rules must agree.
+std::optional<Xyz> FourierFilm::quadrature(double thickness_nm, double cos_theta) const noexcept {
+    // Each level's nodes are the previous level's and the points between them: a reflectance is
+    // computed once, when a level first needs it.
     const FourierColorimeter& fc = *m_colorimeter;
-    Xyz fine, coarse;
-    for (int j = 0; j < FourierColorimeter::smooth_node_count; ++j) {
-        const Media& m = m_smooth[j];
-        // (Never at the film's critical angle here: every wavelength is past it by a margin.)
+    constexpr int levels = FourierColorimeter::quadrature_levels;
+    constexpr int last = FourierColorimeter::quadrature_node_count - 1;
+    std::array<double, FourierColorimeter::quadrature_node_count> r{};
+    const auto reflectance = [&](int j) {
+        const Media& m = m_quadrature_media[j];
         bool at_critical = false;
-        const PreparedFilm::Sample sample = PreparedFilm::prepare_media(
-            m.n0, m.n1, m.n2, cos_theta, 1.0 / fc.smooth_node_wavenumber(j), at_critical);
-        const double r = PreparedFilm::airy_reflectance(sample, thickness_nm);
-        const Xyz& w = fc.smooth_weights(j);
-        const Xyz& v = fc.coarse_smooth_weights(j);
-        fine = {fine.X + r * w.X, fine.Y + r * w.Y, fine.Z + r * w.Z};
-        coarse = {coarse.X + r * v.X, coarse.Y + r * v.Y, coarse.Z + r * v.Z};
+        const PreparedFilm::Sample sample =
+            PreparedFilm::prepare_media(m.n0, m.n1, m.n2, cos_theta, 1.0 / fc.quadrature_wavenumber(j), at_critical);
+        // At the film's own critical angle the Airy form loses its digits: no quadrature (NaN
+        // fails the comparison below).
+        return at_critical ? std::numeric_limits<double>::quiet_NaN() : PreparedFilm::airy_reflectance(sample, thickness_nm);
+    };
+    const double tolerance = max_quadrature_disagreement * fc.colorimeter().white().Y;
+    Xyz previous;
+    for (int level = 0; level < levels; ++level) {
+        const int stride = 1 << (levels - 1 - level);
+        // New nodes: the odd multiples of the stride (all of them at level 0).
+        for (int j = level == 0 ? 0 : stride; j <= last; j += level == 0 ? stride : 2 * stride) r[j] = reflectance(j);
+        Xyz q;
+        for (int j = 0; j <= last; j += stride) {
+            const Xyz& w = fc.quadrature_weights(level, j);
+            q = {q.X + r[j] * w.X, q.Y + r[j] * w.Y, q.Z + r[j] * w.Z};
+        }
+        if (level > 0 && std::abs(q.X - previous.X) <= tolerance && std::abs(q.Y - previous.Y) <= tolerance &&
+            std::abs(q.Z - previous.Z) <= tolerance) {
+            return q;
+        }
+        previous = q;
     }
-    const double tolerance = max_smooth_disagreement * fc.colorimeter().white().Y;
-    if (!(std::abs(fine.X - coarse.X) <= tolerance && std::abs(fine.Y - coarse.Y) <= tolerance &&
-          std::abs(fine.Z - coarse.Z) <= tolerance)) {
-        return std::nullopt;
-    }
-    return fine;
+    return std::nullopt;
+}
+
+std::optional<Xyz> FourierFilm::fast(double thickness_nm, double cos_theta) const noexcept {
+    if (const std::optional<Xyz> c = series(thickness_nm, cos_theta)) return c;
+    // A metal's table has kinks the polynomials converge on too slowly to be worth trying.
+    if (m_sum_only) return std::nullopt;
+    // Where the 1 nm grid aliases, its sum is not the colour, and neither is a quadrature of it.
+    const double angle = std::min(std::acos(std::clamp(cos_theta, 0.0, 1.0)), std::nextafter(pi / 2.0, 0.0));
+    const AliasReach reach = alias_reach(m_film, angle);
+    if (!(alias_free_step_nm(reach, thickness_nm) >= 1.0)) return std::nullopt;
+    // The reflections that count reach d × reach_per_nm of path: the reflectance makes that many
+    // cycles per unit wavenumber. The finest level (128 intervals) resolves about 128/π of
+    // them over 360–830 nm; past that it would compute 129 reflectances to fail.
+    const double cycles = thickness_nm * reach.reach_per_nm * (1.0 / lambda_min_nm - 1.0 / lambda_max_nm);
+    if (!(cycles <= (FourierColorimeter::quadrature_node_count - 1) / pi)) return std::nullopt;
+    return quadrature(thickness_nm, cos_theta);
 }
 
 Xyz FourierFilm::exact_sum(double thickness_nm, double cos_theta) const noexcept {
@@ -655,9 +680,10 @@ Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         return {nan, nan, nan};
     }
-    if (const std::optional<Xyz> c = series(thickness_nm, cos_theta)) {
+    if (const std::optional<Xyz> c = fast(thickness_nm, cos_theta)) {
         // Reflectances lie in [0, 1] and the weights are >= 0, so each channel lies in [0, the
-        // white's]; the series' rounding (1e-8 at grazing incidence) is clamped to that.
+        // white's]; the series' rounding (1e-8 at grazing incidence) and the quadrature's
+        // departures (within max_quadrature_disagreement) are clamped to that.
         const Xyz& w = m_colorimeter->colorimeter().white();
         return {std::clamp(c->X, 0.0, w.X), std::clamp(c->Y, 0.0, w.Y), std::clamp(c->Z, 0.0, w.Z)};
     }
@@ -668,7 +694,7 @@ bool FourierFilm::summed_at(double thickness_nm, double cos_theta) const noexcep
     if (!(std::isfinite(thickness_nm) && thickness_nm >= 0.0 && cos_theta >= 0.0 && cos_theta <= 1.0)) {
         return false;
     }
-    return !series(thickness_nm, cos_theta);
+    return !fast(thickness_nm, cos_theta);
 }
 
 std::optional<Xyz> FourierFilm::series(double thickness_nm, double cos_theta) const noexcept {

@@ -42,8 +42,10 @@
 // to interpolate is only the curvature of the phase and of the amplitudes. Media whose indices
 // the nodes' interpolant misses by more than 1e-4 anywhere in 380–780 nm (a metal's table) are
 // summed instead. A film past its own critical angle at every wavelength has no phase, only
-// an evanescent field: its reflectance is smooth in wavenumber and is summed by a 17-node
-// Chebyshev quadrature over the spectrum, checked against the 9 nodes among them. One band is
+// an evanescent field: its reflectance is smooth in wavenumber and is summed by nested
+// Chebyshev–Lobatto quadratures over the spectrum (9, 17, 33, 65, 129 nodes), each checked
+// against the one before; where the series does not apply the same quadratures are tried before
+// the sum. One band is
 // exact for wavelength-independent media; for dispersive ones (water, oil, silica, metals) see
 // docs/OPTICS.md, "The fast exact film colour", for what each part buys.
 
@@ -86,8 +88,10 @@ public:
     /// With slopes, a film's coefficients are taken at this many Chebyshev nodes per band: the
     /// interpolant through them is of degree node_count − 1.
     static constexpr int node_count = 7;
-    /// The Chebyshev–Lobatto nodes of the quadrature for smooth reflectances (smooth_weights).
-    static constexpr int smooth_node_count = 17;
+    /// The nested quadratures for smooth reflectances (quadrature_weights): level L has
+    /// 8 · 2^L + 1 Chebyshev–Lobatto nodes, the finest quadrature_node_count.
+    static constexpr int quadrature_levels = 5;
+    static constexpr int quadrature_node_count = (8 << (quadrature_levels - 1)) + 1;
 
     /// Throws irid::Error unless 1 <= bands <= max_bands. With `slopes`, each band also holds
     /// the nodal transforms U_j that FourierFilm's dispersive films need, to max_node_opd_nm.
@@ -114,13 +118,14 @@ public:
     /// The Chebyshev coefficients of the interpolant through values at the nodes:
     /// c_k = Σ_j coefficient_matrix(k, j) v_j.
     [[nodiscard]] static double coefficient_matrix(int k, int j) noexcept;
-    /// The quadrature for a reflectance smooth in wavenumber: Σ_j R(ν_j) smooth_weights(j) is the
-    /// 1 nm sum of the polynomial through R at the nodes ν_j (Chebyshev–Lobatto over 360–830 nm,
-    /// node 0 at 360 nm). coarse_smooth_weights(j) is the same rule on the even nodes only
-    /// (0 on the odd ones): their difference estimates the quadrature's error.
-    [[nodiscard]] double smooth_node_wavenumber(int j) const noexcept { return m_smooth_nu[j]; }
-    [[nodiscard]] const Xyz& smooth_weights(int j) const noexcept { return m_smooth_fine[j]; }
-    [[nodiscard]] const Xyz& coarse_smooth_weights(int j) const noexcept { return m_smooth_coarse[j]; }
+    /// The quadratures for a reflectance smooth in wavenumber: Σ_j R(ν_j) quadrature_weights(L, j)
+    /// is the 1 nm sum of the polynomial through R at level L's nodes, the Chebyshev–Lobatto
+    /// points x_j = cos(jπ/128) over 360–830 nm (j = 0 at 360 nm) for j a multiple of
+    /// 2^(quadrature_levels − 1 − L); the weights of the other j are 0.
+    [[nodiscard]] double quadrature_wavenumber(int j) const noexcept { return m_quadrature_nu[j]; }
+    [[nodiscard]] const Xyz& quadrature_weights(int level, int j) const noexcept {
+        return m_quadrature_weights[level][j];
+    }
     /// max |V_b| over the last cut_run_nm of the band's table: the estimate of the transform past
     /// the table's end that FourierFilm bounds the terms it drops with.
     [[nodiscard]] double band_floor(int b) const noexcept { return m_bands[b].floor; }
@@ -186,8 +191,8 @@ private:
     Colorimeter m_colorimeter;
     bool m_slopes = false;
     std::vector<Band> m_bands;
-    std::array<double, smooth_node_count> m_smooth_nu{};
-    std::array<Xyz, smooth_node_count> m_smooth_fine{}, m_smooth_coarse{};
+    std::array<double, quadrature_node_count> m_quadrature_nu{};
+    std::array<std::array<Xyz, quadrature_node_count>, quadrature_levels> m_quadrature_weights{};
 };
 
 /// Whether a film's media disperse (any of ambient, film, substrate not Material::is_constant),
@@ -209,23 +214,27 @@ public:
     FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierColorimeter> colorimeter);
 
     /// XYZ (white Y = 1) at a thickness [nm, finite, >= 0] and the cosine of the angle of
-    /// incidence in the ambient (in [0, 1]); NaN outside those. A film past its own critical
-    /// angle at every wavelength is the white where nothing tunnels through it, else the smooth
-    /// quadrature (header). Where neither applies the colour is summed instead: the 1 nm sum
-    /// (PreparedFilm's Airy sum per wavelength), or where the 1 nm grid aliases the incoherent
-    /// colour past 100 µm of path, a finer sum under it (fine_sum.h, down to
-    /// fallback_min_step_nm). That is: the film's critical angle inside the spectrum, or the
-    /// quadrature's rules disagreeing; |q| > max_ratio at grazing incidence, where the series
-    /// converges too slowly; dispersive media bending too fast through the band
-    /// (max_amplitude_tail, max_phase_tail); a term whose residual phase is past
-    /// max_residual_phase while the terms from it on could add more than max_dropped_tail, or
-    /// whose interpolation could err by more than max_interpolation_error (thick films near
-    /// their critical angle); terms dropped past the table's end that would matter
-    /// (max_dropped_tail); media the nodes do not follow (max_index_misfit: a metal's table).
+    /// incidence in the ambient (in [0, 1]); NaN outside those. In order:
+    /// - the series (header);
+    /// - past the film's critical angle at every wavelength, the white where nothing tunnels
+    ///   through it;
+    /// - the nested quadratures (header), where the 1 nm grid does not alias;
+    /// - the sum: the 1 nm sum (PreparedFilm's Airy sum per wavelength), or where the 1 nm grid
+    ///   aliases, the incoherent colour past 100 µm of path and a finer sum under it (fine_sum.h,
+    ///   down to fallback_min_step_nm).
+    /// The series does not apply where: the film is past its critical angle somewhere in the
+    /// spectrum; |q| > max_ratio at grazing incidence (too slow to converge); dispersive media
+    /// bend too fast through the band (max_amplitude_tail, max_phase_tail); a term's residual
+    /// phase is past max_residual_phase while the terms from it on could add more than
+    /// max_dropped_tail, or its interpolation could err by more than max_interpolation_error
+    /// (thick films near their critical angle, or at grazing incidence); terms dropped past the
+    /// table's end would matter (max_dropped_tail); the media are ones the nodes do not follow
+    /// (max_index_misfit: a metal's table).
     [[nodiscard]] Xyz xyz(double thickness_nm, double cos_theta) const noexcept;
     [[nodiscard]] FilmColor color(double thickness_nm, double cos_theta) const noexcept;
-    /// Whether xyz() sums at this thickness and cos θ rather than take the series (false outside
-    /// the preconditions, where it is NaN): what BM_FourierFilmGrid counts as falling back.
+    /// Whether xyz() sums at this thickness and cos θ, taking neither the series nor a
+    /// quadrature (false outside the preconditions, where it is NaN): what BM_FourierFilmGrid
+    /// counts as falling back.
     [[nodiscard]] bool summed_at(double thickness_nm, double cos_theta) const noexcept;
 
     /// |q| above which the 1 nm sum is used (about 900 terms for 1e-7 near this ratio).
@@ -247,9 +256,9 @@ public:
     /// With slopes: the most the interpolation may err in Y (white = 1), by its estimate
     /// summed over the terms, before the sum is used instead.
     static constexpr double max_interpolation_error = 3e-4;
-    /// A film past its own critical angle is summed by the smooth quadrature when its 17- and
-    /// 9-node rules agree to this, in Y (white = 1); otherwise by the sum.
-    static constexpr double max_smooth_disagreement = 2e-5;
+    /// A quadrature is taken when it agrees with the one before to this in X, Y and Z (white
+    /// Y = 1).
+    static constexpr double max_quadrature_disagreement = 2e-5;
     /// The most that the terms dropped past the table's end may add to Y, for a film with terms
     /// in the table (beyond: the 1 nm sum; a film whose first term is past the table is the
     /// incoherent sum of its faces).
@@ -284,16 +293,19 @@ private:
     /// film past its critical angle there, or |q| > max_ratio).
     [[nodiscard]] bool add_interpolated_band(int b, double thickness_nm, double cos_theta, double sin2,
                                              Xyz& out, bool& no_series) const noexcept;
-    /// The colour of a film past its own critical angle at every wavelength, where its
-    /// reflectance is smooth: the smooth quadrature, or nothing where its rules disagree.
-    [[nodiscard]] std::optional<Xyz> evanescent(double thickness_nm, double cos_theta) const noexcept;
-    /// The media at the smooth quadrature's nodes.
-    std::array<Media, FourierColorimeter::smooth_node_count> m_smooth;
+    /// The first of the nested quadratures (from 17 nodes on) that agrees with the one before,
+    /// or nothing.
+    [[nodiscard]] std::optional<Xyz> quadrature(double thickness_nm, double cos_theta) const noexcept;
+    /// The series, or where it does not apply and the 1 nm grid does not alias, the quadrature:
+    /// what xyz() takes without summing.
+    [[nodiscard]] std::optional<Xyz> fast(double thickness_nm, double cos_theta) const noexcept;
+    /// The media at the quadratures' nodes.
+    std::array<Media, FourierColorimeter::quadrature_node_count> m_quadrature_media;
     /// The media on the 1 nm grid, 360–830 nm: what the sum reads.
     std::vector<Media> m_dense;
     [[nodiscard]] Xyz exact_sum(double thickness_nm, double cos_theta) const noexcept;
     /// The colour of a film past its own critical angle at every wavelength: the white where no
-    /// light tunnels through it (e^{−2κd} < 1e-10), else evanescent(); nothing where some
+    /// light tunnels through it (e^{−2κd} < 1e-10), else quadrature(); nothing where some
     /// wavelengths are not past it.
     [[nodiscard]] std::optional<Xyz> total_reflection(double thickness_nm, double cos_theta, double sin2) const noexcept;
     /// n0² and n1² every 10 nm over 360–830 nm, and the wavelengths: what total_reflection reads.
