@@ -3,7 +3,7 @@
 
 #include "arrays.h"
 
-#include <irid/figures/gallery.h>
+#include <irid/gallery/gallery.h>
 #include <irid/render/render.h>
 #include <irid/render/scene.h>
 
@@ -69,14 +69,14 @@ void add_render(py::module_& m) {
     m.def(
         "gallery",
         [](const std::string& dir, int width, int height, int spp, int figure_width, int threads) {
-            figures::GalleryOptions o;
+            gallery::GalleryOptions o;
             o.dir = dir;
             o.width = width, o.height = height, o.spp = spp, o.figure_width = figure_width, o.threads = threads;
-            figures::GalleryResult r;
+            gallery::GalleryResult r;
             {
                 py::gil_scoped_release release;
                 try {
-                    r = figures::make_gallery(o);
+                    r = gallery::make_gallery(o);
                 } catch (const Error& e) {
                     // Options out of range stay ValueError; a folder or file that cannot be
                     // written is an OSError.

@@ -1,10 +1,10 @@
 // The gallery page: the scenes, the figures and tables, the colour paths compared, thin-film
-// anti-aliasing and the clip report, assembled into one HTML page (irid/figures/gallery.h).
+// anti-aliasing and the clip report, assembled into one HTML page (irid/gallery/gallery.h).
 #include <irid/color/rgb.h>
 #include <irid/error.h>
 #include <irid/figures/clip_sets.h>
 #include <irid/figures/figures.h>
-#include <irid/figures/gallery.h>
+#include <irid/gallery/gallery.h>
 #include <irid/gamut/clip.h>
 #include <irid/gamut/report.h>
 #include <irid/io/image.h>
@@ -22,7 +22,11 @@
 #include <string>
 #include <vector>
 
-namespace irid::figures {
+namespace irid::gallery {
+
+// The page is made of the figures: their names unqualified here.
+using namespace irid::figures;
+
 namespace {
 
 struct SceneInfo {
@@ -440,4 +444,4 @@ GalleryResult make_gallery(const GalleryOptions& o) {
     return {index, seconds};
 }
 
-}  // namespace irid::figures
+}  // namespace irid::gallery

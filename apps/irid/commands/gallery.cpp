@@ -8,7 +8,7 @@
 // and references only files in DIR, so it opens from the file system without a network.
 #include "../cli_common.h"
 
-#include <irid/figures/gallery.h>
+#include <irid/gallery/gallery.h>
 
 #include <fmt/core.h>
 
@@ -20,16 +20,16 @@ namespace {
 
 struct GalleryCommand {
     std::string dir;
-    figures::GalleryOptions options;
+    gallery::GalleryOptions options;
     bool quiet = false;
 };
 
 int run_gallery(const GalleryCommand& c) {
     if (c.dir.empty()) throw UsageError("-o: an empty folder name; give the folder to write into");
-    figures::GalleryOptions options = c.options;
+    gallery::GalleryOptions options = c.options;
     options.dir = c.dir;
     if (!c.quiet) options.progress = [](const std::string& what) { fmt::print(stderr, "irid gallery: {}\n", what); };
-    const figures::GalleryResult r = figures::make_gallery(options);
+    const gallery::GalleryResult r = gallery::make_gallery(options);
     fmt::print("{}\n", std::filesystem::absolute(r.index).lexically_normal().string());
     return exit_success;
 }

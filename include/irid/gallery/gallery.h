@@ -9,7 +9,7 @@
 #include <functional>
 #include <string>
 
-namespace irid::figures {
+namespace irid::gallery {
 
 struct GalleryOptions {
     /// The folder to write index.html and its images into; made when missing.
@@ -37,4 +37,4 @@ struct GalleryResult {
 /// written.
 GalleryResult make_gallery(const GalleryOptions& options);
 
-}  // namespace irid::figures
+}  // namespace irid::gallery
