@@ -56,7 +56,7 @@ void add_render(py::module_& m) {
             stats["seconds"] = r.stats.seconds;
             stats["table_seconds"] = r.stats.table_seconds;
             stats["space"] = s.render.space;
-            stats["clip"] = s.render.clip;
+            stats["clip"] = std::string(clip_method_name(s.render.clip));
             stats["view"] = s.render.view == render::ViewTransform::thesis ? "thesis" : "rolloff";
             stats["width"] = s.image.width;
             stats["height"] = s.image.height;

@@ -209,7 +209,7 @@ GalleryResult make_gallery(const GalleryOptions& o) {
                                    "<code>{}</code> to {}.",
                                    info.name, o.width, o.height, o.spp, html_escape(sets),
                                    scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
-                                   html_escape(scene.render.clip), html_escape(scene.render.space)),
+                                   html_escape(std::string(clip_method_name(scene.render.clip))), html_escape(scene.render.space)),
                    {{"time", format_number(s.seconds) + " s"},
                     {"rays per second", format_number(static_cast<double>(s.rays) / s.seconds * 1e-6) + " M"},
                     {"pixels out of gamut before the clip",

@@ -332,12 +332,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         throw Error(fmt::format("{}: 'render.space' is \"{}\"; allowed: {}", scene.source,
                                 scene.render.space, names));
     }
-    ClipMethod method;
-    try {
-        method = parse_clip_method(scene.render.clip);
-    } catch (const Error& e) {
-        throw Error(fmt::format("{}: 'render.clip': {}", scene.source, e.what()));
-    }
+    const ClipMethod method = scene.render.clip;
 
     // More threads than the machine has only queue (and make oneTBB warn).
     const int available = tbb::this_task_arena::max_concurrency();

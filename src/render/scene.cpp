@@ -239,9 +239,10 @@ void read_render(const Json& j, const std::string& source, RenderParams& p) {
         for (const RgbSpace* s : builtin_rgb_spaces()) names.push_back(s->name());
         r.fail("render.space", fmt::format("is \"{}\"; allowed: {}", p.space, fmt::join(names, ", ")));
     }
-    r.text("clip", p.clip);
+    std::string clip(clip_method_name(p.clip));
+    r.text("clip", clip);
     try {
-        (void)parse_clip_method(p.clip);
+        p.clip = parse_clip_method(clip);
     } catch (const Error& e) {
         r.fail("render.clip", e.what());
     }

@@ -47,7 +47,7 @@ TEST(Scene, BuiltinScenesCarryTheValuesOfTheirFiles) {
         EXPECT_EQ(s.image.spp, j["image"]["spp"].get<int>());
         EXPECT_DOUBLE_EQ(s.camera.fov_deg, j["camera"]["fov_deg"].get<double>());
         EXPECT_DOUBLE_EQ(s.light.sun_intensity, j["light"]["sun_intensity"].get<double>());
-        EXPECT_EQ(s.render.clip, j["render"]["clip"].get<std::string>());
+        EXPECT_EQ(clip_method_name(s.render.clip), j["render"]["clip"].get<std::string>());
         EXPECT_DOUBLE_EQ(s.render.rolloff_knee, j["render"]["rolloff_knee"].get<double>());
         EXPECT_DOUBLE_EQ(s.light.turbidity, j["light"]["turbidity"].get<double>());
         EXPECT_EQ(s.light.sky == SkyModel::preetham ? "preetham" : "gradient",

@@ -151,7 +151,7 @@ int run_render(const RenderCliOptions& o) {
                                      render::color_path_name(scene.render.path),
                                      scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
                                      scene.render.view == render::ViewTransform::thesis ? "thesis" : "rolloff",
-                                     scene.render.clip);
+                                     clip_method_name(scene.render.clip));
     // Both files or neither: each is written whole under a temporary name beside its target,
     // and both are renamed into place only when both are complete.
     io::OutputFile main_file(out);

@@ -12,6 +12,8 @@
 // angles in degrees. Colours are linear RGB with Rec. 709 / sRGB primaries and the D65 white,
 // as reflectances (albedo, 0–1) or as multiples of the D65 white (lights).
 
+#include <irid/gamut/clip.h>
+
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -80,9 +82,9 @@ struct RenderParams {
     /// Bounce limit for reflection and transmission.
     int max_depth = 6;
     std::uint64_t seed = 1;
-    /// The destination RGB space and the gamut clip (names as `irid clip`).
+    /// The destination RGB space, and the gamut clip (read by its `irid clip` name, once).
     std::string space = "srgb";
-    std::string clip = "smits";
+    ClipMethod clip = ClipMethod::smits;
     /// Exposure: the linear image is scaled by this before the view transform.
     double exposure = 1.0;
     /// The view transform and the roll-off's knee (the scene luminance, white = 1, up to which
