@@ -384,8 +384,15 @@ std::shared_ptr<const FourierColorimeter> fourier_colorimeter_for(const SingleFi
         const auto equal = [](const DenseSpectrum& a, const DenseSpectrum& b) {
             return std::ranges::equal(a.values(), b.values());
         };
+        // The same weights, and the same linear map to RGB (FourierFilm::color takes the kept
+        // colorimeter's): equal on the three unit vectors.
+        const auto same_rgb = [&](const Xyz& e) {
+            const Rgb p = c.linear_rgb(e), q = colorimeter.linear_rgb(e);
+            return p.r == q.r && p.g == q.g && p.b == q.b;
+        };
         return f.slopes() == slopes && f.bands() == 1 && equal(c.weight_x(), colorimeter.weight_x()) &&
-               equal(c.weight_y(), colorimeter.weight_y()) && equal(c.weight_z(), colorimeter.weight_z());
+               equal(c.weight_y(), colorimeter.weight_y()) && equal(c.weight_z(), colorimeter.weight_z()) &&
+               same_rgb({1.0, 0.0, 0.0}) && same_rgb({0.0, 1.0, 0.0}) && same_rgb({0.0, 0.0, 1.0});
     };
     // Most recently used first.
     static std::mutex mutex;
@@ -523,7 +530,9 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
     }
     for (double lambda = lambda_min_nm; lambda <= lambda_max_nm; lambda += 10.0) {
         const Media at = media_at(lambda);
-        m_barrier.push_back({lambda, at.n0 * at.n0, at.n1 * at.n1});
+        // n2² only where the substrate is lossless (an absorbing one has no critical angle).
+        m_barrier.push_back({lambda, at.n0 * at.n0, at.n1 * at.n1,
+                             at.n2.imag() == 0.0 ? at.n2.real() * at.n2.real() : std::numeric_limits<double>::quiet_NaN()});
     }
 }
 
@@ -534,16 +543,34 @@ std::optional<Xyz> FourierFilm::total_reflection(double thickness_nm, double cos
     // over 10 nm stays inside (water's n² changes by 6e-4 from 360 to 370 nm); the smallest κ
     // among them bounds the tunnelling.
     double kappa = std::numeric_limits<double>::infinity();
-    for (const auto& [lambda, n0_sq, n1_sq] : m_barrier) {
+    for (const auto& [lambda, n0_sq, n1_sq, n2_sq] : m_barrier) {
         const double g = n0_sq * sin2 - n1_sq;
         if (!(g >= 1e-3 * n1_sq)) return std::nullopt;
         kappa = std::min(kappa, 2.0 * pi * std::sqrt(g) / lambda);
     }
-    if (!(2.0 * kappa * thickness_nm > 23.0)) return quadrature(thickness_nm, cos_theta);  // e^{-23} = 1e-10
+    // e^{-23} = 1e-10; otherwise the evanescent reflectance, analytic in wavenumber (no cycles).
+    if (!(2.0 * kappa * thickness_nm > 23.0)) return quadrature(thickness_nm, cos_theta, 0.0);
     return m_colorimeter->colorimeter().white();
 }
 
-std::optional<Xyz> FourierFilm::quadrature(double thickness_nm, double cos_theta) const noexcept {
+bool FourierFilm::critical_inside(double sin2) const noexcept {
+    // A sign change of n² − n0² sin²θ between the rows every 10 nm (they include 360 and 830 nm,
+    // so every crossing inside the spectrum is bracketed), for the film and for a lossless
+    // substrate. (Near a crossing just outside the spectrum the reflectance bends without a
+    // kink: the series' tail checks and the quadratures' agreement see that.)
+    const auto crosses = [&](int column) {
+        bool below = false, above = false;
+        for (const auto& row : m_barrier) {
+            const double n_sq = row[static_cast<std::size_t>(column)];
+            if (std::isnan(n_sq)) return false;
+            (n_sq - row[1] * sin2 < 0.0 ? below : above) = true;
+        }
+        return below && above;
+    };
+    return crosses(2) || crosses(3);
+}
+
+std::optional<Xyz> FourierFilm::quadrature(double thickness_nm, double cos_theta, double cycles) const noexcept {
     // Each level's nodes are the previous level's and the points between them: a reflectance is
     // computed once, when a level first needs it.
     const FourierColorimeter& fc = *m_colorimeter;
@@ -559,7 +586,7 @@ std::optional<Xyz> FourierFilm::quadrature(double thickness_nm, double cos_theta
         // fails the comparison below).
         return at_critical ? std::numeric_limits<double>::quiet_NaN() : PreparedFilm::airy_reflectance(sample, thickness_nm);
     };
-    const double tolerance = max_quadrature_disagreement * fc.colorimeter().white().Y;
+    const double white = fc.colorimeter().white().Y;
     Xyz previous;
     double previous_difference = 0.0;
     for (int level = 0; level < levels; ++level) {
@@ -574,7 +601,21 @@ std::optional<Xyz> FourierFilm::quadrature(double thickness_nm, double cos_theta
         if (level > 0) {
             const double difference =
                 std::max({std::abs(q.X - previous.X), std::abs(q.Y - previous.Y), std::abs(q.Z - previous.Z)});
-            if (difference <= tolerance) return q;
+            // The tolerance is relative for dark colours (where ΔE2000 is sensitive to small
+            // differences). Unless the reflectance is known to be analytic (an evanescent film),
+            // the agreement must be established: the level before must have been close as well
+            // (within √tolerance of the white), or two rules that both miss a feature can agree
+            // by coincidence.
+            // A level is taken only once it has nodes enough for the reflectance's cycles: N
+            // intervals space their nodes by up to π/N of the interval at its middle, and the
+            // interpolant converges once a cycle has π of those, so N >= π² cycles / 2, about
+            // five intervals a cycle.
+            const double tolerance = max_quadrature_disagreement * std::min(white, std::max(100.0 * q.Y, 1e-6 * white));
+            const bool resolved = (8 << level) >= 5.0 * cycles;
+            if (difference <= tolerance && resolved &&
+                (cycles == 0.0 || (level > 1 && previous_difference <= std::sqrt(tolerance * white)))) {
+                return q;
+            }
             // Converging geometrically, e_N ~ ρ^−N, the next difference is about d³ / d_prev²:
             // where that is still a hundred times the tolerance, the next level (twice the
             // reflectances) would fail too, so the sum is started now. A colour that goes to the
@@ -591,6 +632,9 @@ std::optional<Xyz> FourierFilm::quadrature(double thickness_nm, double cos_theta
 }
 
 std::optional<Xyz> FourierFilm::fast(double thickness_nm, double cos_theta) const noexcept {
+    // Where the film or the substrate reaches its critical angle inside the spectrum, the
+    // reflectance has a kink at that wavelength: neither the nodes nor the quadratures follow it.
+    if (critical_inside(1.0 - cos_theta * cos_theta)) return std::nullopt;
     if (const std::optional<Xyz> c = series(thickness_nm, cos_theta)) return c;
     // A metal's table has kinks the polynomials converge on too slowly to be worth trying.
     if (m_sum_only) return std::nullopt;
@@ -599,11 +643,12 @@ std::optional<Xyz> FourierFilm::fast(double thickness_nm, double cos_theta) cons
     const AliasReach reach = alias_reach(m_film, angle);
     if (!(alias_free_step_nm(reach, thickness_nm) >= 1.0)) return std::nullopt;
     // The reflections that count reach d × reach_per_nm of path: the reflectance makes that many
-    // cycles per unit wavenumber. The finest level (128 intervals) resolves about 128/π of
-    // them over 360–830 nm; past that it would compute 129 reflectances to fail.
-    const double cycles = thickness_nm * reach.reach_per_nm * (1.0 / lambda_min_nm - 1.0 / lambda_max_nm);
-    if (!(cycles <= (FourierColorimeter::quadrature_node_count - 1) / pi)) return std::nullopt;
-    return quadrature(thickness_nm, cos_theta);
+    // cycles over 360–830 nm. The finest level (128 intervals) takes at most 25 of them
+    // (quadrature()); past that it would compute 129 reflectances to fail. Never below one cycle,
+    // so that a smooth-looking film still needs established agreement.
+    const double cycles = std::max(1.0, thickness_nm * reach.reach_per_nm * (1.0 / lambda_min_nm - 1.0 / lambda_max_nm));
+    if (!(5.0 * cycles <= FourierColorimeter::quadrature_node_count - 1)) return std::nullopt;
+    return quadrature(thickness_nm, cos_theta, cycles);
 }
 
 Xyz FourierFilm::exact_sum(double thickness_nm, double cos_theta) const noexcept {
@@ -684,6 +729,17 @@ bool series_of(double n0, double n1, std::complex<double> n2, double cos_theta, 
 
 }  // namespace
 
+namespace {
+
+/// cos θ = 0 carries no light into the film: the colour there is the limit, taken at the largest
+/// angle below π/2 (cos θ 6e-17), where the amplitudes are still defined.
+double grazing_limit(double cos_theta) noexcept {
+    static const double smallest = std::cos(std::nextafter(pi / 2.0, 0.0));
+    return std::max(cos_theta, smallest);
+}
+
+}  // namespace
+
 Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
     // Outside the preconditions (a thickness that is not finite and >= 0, cos θ outside [0, 1]):
     // NaN, never a colour that looks valid.
@@ -691,6 +747,7 @@ Xyz FourierFilm::xyz(double thickness_nm, double cos_theta) const noexcept {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         return {nan, nan, nan};
     }
+    cos_theta = grazing_limit(cos_theta);
     if (const std::optional<Xyz> c = fast(thickness_nm, cos_theta)) {
         // Reflectances lie in [0, 1] and the weights are >= 0, so each channel lies in [0, the
         // white's]; the series' rounding (1e-8 at grazing incidence) and the quadrature's
@@ -705,7 +762,7 @@ bool FourierFilm::summed_at(double thickness_nm, double cos_theta) const noexcep
     if (!(std::isfinite(thickness_nm) && thickness_nm >= 0.0 && cos_theta >= 0.0 && cos_theta <= 1.0)) {
         return false;
     }
-    return !fast(thickness_nm, cos_theta);
+    return !fast(thickness_nm, grazing_limit(cos_theta));
 }
 
 std::optional<Xyz> FourierFilm::series(double thickness_nm, double cos_theta) const noexcept {
@@ -816,13 +873,20 @@ bool FourierFilm::add_interpolated_band(int b, double thickness_nm, double cos_t
         residual = std::max(residual, 4.0 * pi * d * std::abs(f[j] - a[0] - a[1] * FourierColorimeter::node_x(j)));
     }
     for (int k = 2; k < n_nodes; ++k) spread += 2.0 * d * k * k * std::abs(a[k]) / half;
-    // The constant term: Σ_j A0(x_j) U_j(0).
+    // The constant term: Σ_j A0(x_j) U_j(0). Its Y sets the scale of the budgets below: dark
+    // films (index-matched ones reflect 1e-5 of the white) need absolute errors as small, in
+    // proportion, as bright ones.
+    double incoherent_y = 0.0;
     for (int j = 0; j < n_nodes; ++j) {
         const Xyz& w = fc.node_white(b, j);
         out.X += dc[j] * w.X;
         out.Y += dc[j] * w.Y;
         out.Z += dc[j] * w.Z;
+        incoherent_y += dc[j] * w.Y;
     }
+    const double scale = std::clamp(relative_budget * incoherent_y, 1e-3 * max_dropped_tail, 1.0);
+    const double dropped_budget = std::min(max_dropped_tail, scale);
+    const double interpolation_budget = std::min(max_interpolation_error, scale);
     // term[j][p] = G q^{k-1} z^k at node j for the k-th term, z = e^{i(φ − 2π τ1 (ν − ν_c))}.
     std::array<std::array<std::complex<double>, 2>, n_nodes> term, ratio;
     double a_sum = 0.0, q_max = 0.0;
@@ -853,13 +917,13 @@ bool FourierFilm::add_interpolated_band(int b, double thickness_nm, double cos_t
         const double tau = k * tau1;
         if (tau >= max_tau) {
             // Past the table's end, as for constant indices (series()).
-            if (k > 1 && remaining(k, q_power) > max_dropped_tail) return false;
+            if (k > 1 && remaining(k, q_power) > dropped_budget) return false;
             break;
         }
         const double r = k * residual;
         if (r > max_residual_phase) {
             // Past what the nodes resolve: the sum, unless this term and the rest are negligible.
-            if (remaining(k, q_power) > max_dropped_tail) return false;
+            if (remaining(k, q_power) > dropped_budget) return false;
             break;
         }
         std::array<std::complex<double>, n_nodes> values;
@@ -875,7 +939,7 @@ bool FourierFilm::add_interpolated_band(int b, double thickness_nm, double cos_t
         static_assert(n_nodes == 7, "the estimate's constant is for seven nodes");
         interpolation_error += 2.0 * std::sqrt(largest) * 0.06 * r * r * r *
                                fc.envelope(b, std::max(0.0, k * (tau1 - spread)));
-        if (interpolation_error > max_interpolation_error) return false;
+        if (interpolation_error > interpolation_budget) return false;
         std::complex<double> x, y, z;
         if (tau < node_tau) {
             const auto v = fc.node_sum(b, tau, values);

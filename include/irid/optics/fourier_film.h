@@ -256,8 +256,12 @@ public:
     /// With slopes: the most the interpolation may err in Y (white = 1), by its estimate
     /// summed over the terms, before the sum is used instead.
     static constexpr double max_interpolation_error = 3e-4;
-    /// A quadrature is taken when it agrees with the one before to this in X, Y and Z (white
-    /// Y = 1).
+    /// With slopes: the budgets above (max_interpolation_error, max_dropped_tail) shrink to this
+    /// fraction of the film's incoherent Y where that is smaller (a dark film).
+    static constexpr double relative_budget = 5e-3;
+    /// A quadrature is taken when it agrees with the one before to this in X, Y and Z, in units
+    /// of the white's Y or, for a colour darker than 1 % of it, of 100 times its Y; and when the
+    /// one before that agreed to within the square root of this.
     static constexpr double max_quadrature_disagreement = 2e-5;
     /// The most that the terms dropped past the table's end may add to Y, for a film with terms
     /// in the table (beyond: the 1 nm sum; a film whose first term is past the table is the
@@ -293,9 +297,11 @@ private:
     /// film past its critical angle there, or |q| > max_ratio).
     [[nodiscard]] bool add_interpolated_band(int b, double thickness_nm, double cos_theta, double sin2,
                                              Xyz& out, bool& no_series) const noexcept;
-    /// The first of the nested quadratures (from 17 nodes on) that agrees with the one before,
-    /// or nothing.
-    [[nodiscard]] std::optional<Xyz> quadrature(double thickness_nm, double cos_theta) const noexcept;
+    /// The first of the nested quadratures that agrees with the one before
+    /// (max_quadrature_disagreement) and has five intervals for each of the reflectance's
+    /// `cycles` over the spectrum, or nothing. cycles = 0: the reflectance is analytic (an
+    /// evanescent film), from 17 nodes on; otherwise from 33 on, with the agreement established.
+    [[nodiscard]] std::optional<Xyz> quadrature(double thickness_nm, double cos_theta, double cycles) const noexcept;
     /// The series, or where it does not apply and the 1 nm grid does not alias, the quadrature:
     /// what xyz() takes without summing.
     [[nodiscard]] std::optional<Xyz> fast(double thickness_nm, double cos_theta) const noexcept;
@@ -308,8 +314,12 @@ private:
     /// light tunnels through it (e^{−2κd} < 1e-10), else quadrature(); nothing where some
     /// wavelengths are not past it.
     [[nodiscard]] std::optional<Xyz> total_reflection(double thickness_nm, double cos_theta, double sin2) const noexcept;
-    /// n0² and n1² every 10 nm over 360–830 nm, and the wavelengths: what total_reflection reads.
-    std::vector<std::array<double, 3>> m_barrier;
+    /// The wavelengths every 10 nm over 360–830 nm, with n0², n1² and n2² there (NaN for an
+    /// absorbing substrate): what total_reflection and critical_inside read.
+    std::vector<std::array<double, 4>> m_barrier;
+    /// Whether the film or a lossless substrate is at or near its critical angle at some
+    /// wavelength of the spectrum and not at others (sin2 = sin²θ in the ambient).
+    [[nodiscard]] bool critical_inside(double sin2) const noexcept;
     /// The series' colour, or nothing where the 1 nm sum is to be used.
     [[nodiscard]] std::optional<Xyz> series(double thickness_nm, double cos_theta) const noexcept;
 
