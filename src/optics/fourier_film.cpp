@@ -528,11 +528,21 @@ FourierFilm::FourierFilm(const SingleFilm& film, std::shared_ptr<const FourierCo
     for (int j = 0; j < FourierColorimeter::quadrature_node_count; ++j) {
         m_quadrature_media[j] = media_at(1.0 / m_colorimeter->quadrature_wavenumber(j));
     }
+    m_critical_ratios.fill({std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
     for (double lambda = lambda_min_nm; lambda <= lambda_max_nm; lambda += 10.0) {
         const Media at = media_at(lambda);
-        // n2² only where the substrate is lossless (an absorbing one has no critical angle).
-        m_barrier.push_back({lambda, at.n0 * at.n0, at.n1 * at.n1,
-                             at.n2.imag() == 0.0 ? at.n2.real() * at.n2.real() : std::numeric_limits<double>::quiet_NaN()});
+        // n1²/n0² and, for a lossless substrate, n2²/n0²: their ranges over the rows.
+        const double ratios[2] = {at.n1 * at.n1 / (at.n0 * at.n0),
+                                  at.n2.imag() == 0.0 ? at.n2.real() * at.n2.real() / (at.n0 * at.n0)
+                                                      : std::numeric_limits<double>::quiet_NaN()};
+        for (int k = 0; k < 2; ++k) {
+            auto& [low, high] = m_critical_ratios[static_cast<std::size_t>(k)];
+            // (An absorbing substrate's NaN leaves an empty range: no crossing.)
+            if (std::isnan(ratios[k])) continue;
+            low = std::min(low, ratios[k]);
+            high = std::max(high, ratios[k]);
+        }
+        m_barrier.push_back({lambda, at.n0 * at.n0, at.n1 * at.n1});
     }
 }
 
@@ -543,7 +553,7 @@ std::optional<Xyz> FourierFilm::total_reflection(double thickness_nm, double cos
     // over 10 nm stays inside (water's n² changes by 6e-4 from 360 to 370 nm); the smallest κ
     // among them bounds the tunnelling.
     double kappa = std::numeric_limits<double>::infinity();
-    for (const auto& [lambda, n0_sq, n1_sq, n2_sq] : m_barrier) {
+    for (const auto& [lambda, n0_sq, n1_sq] : m_barrier) {
         const double g = n0_sq * sin2 - n1_sq;
         if (!(g >= 1e-3 * n1_sq)) return std::nullopt;
         kappa = std::min(kappa, 2.0 * pi * std::sqrt(g) / lambda);
@@ -556,18 +566,13 @@ std::optional<Xyz> FourierFilm::total_reflection(double thickness_nm, double cos
 bool FourierFilm::critical_inside(double sin2) const noexcept {
     // A sign change of n² − n0² sin²θ between the rows every 10 nm (they include 360 and 830 nm,
     // so every crossing inside the spectrum is bracketed), for the film and for a lossless
-    // substrate. (Near a crossing just outside the spectrum the reflectance bends without a
-    // kink: the series' tail checks and the quadratures' agreement see that.)
-    const auto crosses = [&](int column) {
-        bool below = false, above = false;
-        for (const auto& row : m_barrier) {
-            const double n_sq = row[static_cast<std::size_t>(column)];
-            if (std::isnan(n_sq)) return false;
-            (n_sq - row[1] * sin2 < 0.0 ? below : above) = true;
-        }
-        return below && above;
-    };
-    return crosses(2) || crosses(3);
+    // substrate: some row has n²/n0² below sin²θ and another not (the ratios' range is found
+    // once, at construction). Near a crossing just outside the spectrum the reflectance bends
+    // without a kink: the series' tail checks and the quadratures' agreement see that.
+    for (const auto& [low, high] : m_critical_ratios) {
+        if (low < sin2 && high >= sin2) return true;
+    }
+    return false;
 }
 
 std::optional<Xyz> FourierFilm::quadrature(double thickness_nm, double cos_theta, double cycles) const noexcept {

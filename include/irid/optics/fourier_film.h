@@ -57,6 +57,7 @@
 #include <complex>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace irid {
@@ -314,12 +315,15 @@ private:
     /// light tunnels through it (e^{−2κd} < 1e-10), else quadrature(); nothing where some
     /// wavelengths are not past it.
     [[nodiscard]] std::optional<Xyz> total_reflection(double thickness_nm, double cos_theta, double sin2) const noexcept;
-    /// The wavelengths every 10 nm over 360–830 nm, with n0², n1² and n2² there (NaN for an
-    /// absorbing substrate): what total_reflection and critical_inside read.
-    std::vector<std::array<double, 4>> m_barrier;
-    /// Whether the film or a lossless substrate is at or near its critical angle at some
-    /// wavelength of the spectrum and not at others (sin2 = sin²θ in the ambient).
+    /// The wavelengths every 10 nm over 360–830 nm, with n0² and n1² there: what
+    /// total_reflection reads.
+    std::vector<std::array<double, 3>> m_barrier;
+    /// Whether the film or a lossless substrate is past its critical angle at some wavelength
+    /// of the spectrum and not at others (sin2 = sin²θ in the ambient).
     [[nodiscard]] bool critical_inside(double sin2) const noexcept;
+    /// The range over the wavelengths of m_barrier of n1²/n0² and of n2²/n0² (empty, low > high,
+    /// for an absorbing substrate): what critical_inside reads.
+    std::array<std::pair<double, double>, 2> m_critical_ratios{};
     /// The series' colour, or nothing where the 1 nm sum is to be used.
     [[nodiscard]] std::optional<Xyz> series(double thickness_nm, double cos_theta) const noexcept;
 
