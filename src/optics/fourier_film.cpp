@@ -953,7 +953,7 @@ bool FourierFilm::add_interpolated_band(int b, double thickness_nm, double cos_t
             z = v.z;
         } else {
             std::complex<double> mean;
-            for (int j = 0; j < n_nodes; ++j) mean += FourierColorimeter::coefficient_matrix(0, j) * values[j];
+            for (int j = 0; j < n_nodes; ++j) mean += chebyshev_matrix()[0][j] * values[j];
             const auto v = fc.transform(b, tau);
             x = mean * v.x;
             y = mean * v.y;
