@@ -19,10 +19,15 @@
 #include <irid/texture/noise.h>
 
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <vector>
 
 namespace irid::render {
+
+inline constexpr double pi = std::numbers::pi;
+
+inline Vec3 to_vec(const Vec3Param& v) { return {v[0], v[1], v[2]}; }
 
 /// A flat wing: a polygon in a plane, in the wing's own 2-D coordinates (a along the span, b
 /// along the body), with the edges of the outer margin marked.
@@ -39,6 +44,12 @@ struct Wing {
     double vein_half_width = 0;
     /// Distance from the root over which the veins fade in.
     double vein_start = 0;
+
+    /// Whether (a, b) lies on the wing; if so, `margin` is its distance to the outer edges as
+    /// a fraction of the wing's length (scaled so the forewing's border widens to the apex).
+    [[nodiscard]] bool contains(double a, double b, double& margin) const;
+    /// How much of a vein covers (a, b), 0 to 1.
+    [[nodiscard]] double vein_cover(double a, double b) const;
 };
 
 /// A group of spheres (an antenna) tested only when a ray meets their bounding box.
@@ -142,7 +153,10 @@ private:
     void build_soap_bubbles();
     void build_morpho();
     void build_morpho_wings(double half);
+    void build_wing_tables();
     void build_preetham();
+    /// The material named `text`; errors name the scene and `key`.
+    [[nodiscard]] Material material(const std::string& key, const std::string& text) const;
 
     const Scene& m_scene;
     Camera m_camera;
