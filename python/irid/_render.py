@@ -7,9 +7,16 @@ import json
 import math
 import numbers
 import os
-import numpy as np
 
 from . import _irid
+from ._args import _whole
+
+__all__ = [
+    "Render",
+    "gallery",
+    "render",
+    "scenes",
+]
 
 
 class Render(collections.namedtuple("Render", ["linear", "display"])):
@@ -26,6 +33,12 @@ class Render(collections.namedtuple("Render", ["linear", "display"])):
     xyz: CIE XYZ per pixel (the D65 white at Y = 1, exposure applied).
     stats: a dict: camera_rays, rays, out_of_gamut_pixels, seconds, table_seconds, and the
         space, clip, view, width, height, spp and source used.
+
+    >>> import irid
+    >>> result = irid.render("oil-slick", width=16, height=12, spp=1)
+    >>> linear, display = result
+    >>> result.xyz.shape, result.stats["width"], result.stats["spp"]
+    ((12, 16, 3), 16, 1)
     """
 
     def __new__(cls, linear, display, xyz, stats):
@@ -39,7 +52,12 @@ class Render(collections.namedtuple("Render", ["linear", "display"])):
 
 
 def scenes():
-    """The built-in scene names: oil-slick, soap-bubbles, morpho."""
+    """The built-in scene names: oil-slick, soap-bubbles, morpho.
+
+    >>> import irid
+    >>> sorted(irid.scenes())
+    ['morpho', 'oil-slick', 'soap-bubbles']
+    """
     return _irid.scene_names()
 
 
@@ -53,13 +71,7 @@ def _json_value(key, value):
 
 
 def _size(value, what):
-    if value is None:
-        return None
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
-        raise ValueError(f"{what}: {value!r} is not a whole number")
-    if not 1 <= value <= 16384:
-        raise ValueError(f"{what}: {value} must be in [1, 16384]")
-    return int(value)
+    return None if value is None else _whole(value, what, 1, 16384)
 
 
 def render(scene, width=None, height=None, spp=None, seed=None, set=None, clip=None, threads=0):
@@ -78,6 +90,13 @@ def render(scene, width=None, height=None, spp=None, seed=None, set=None, clip=N
 
     Raises ValueError for a bad scene or value (the message names the key path and what is
     allowed), KeyError for an unknown built-in name, OSError for an unreadable scene file.
+
+    A small, quick image (the displayed one is in [0, 1]):
+
+    >>> import irid
+    >>> linear, display = irid.render("soap-bubbles", width=16, height=12, spp=1, seed=7)
+    >>> linear.shape, display.dtype, bool(0 <= display.min() and display.max() <= 1)
+    ((12, 16, 3), dtype('float32'), True)
     """
     if set is not None and not isinstance(set, dict):
         raise ValueError(f"set: {type(set).__name__}; give a dict of key paths to values, such as "
@@ -90,9 +109,7 @@ def render(scene, width=None, height=None, spp=None, seed=None, set=None, clip=N
     w, h = _size(width, "width"), _size(height, "height")
     if spp is not None:
         # Its range is the scene reader's (render::max_spp), which names it.
-        if isinstance(spp, bool) or not isinstance(spp, numbers.Integral):
-            raise ValueError(f"spp: {spp!r} is not a whole number")
-        overrides.append(f"image.spp={int(spp)}")
+        overrides.append(f"image.spp={_whole(spp, 'spp')}")
     if seed is not None:
         if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or seed < 0:
             raise ValueError(f"seed: {seed!r} is not a whole number >= 0")
@@ -137,7 +154,12 @@ def render(scene, width=None, height=None, spp=None, seed=None, set=None, clip=N
 def gallery(dir, width=1024, height=768, spp=4, figure_width=960, threads=0):
     """Writes the gallery page as ``irid gallery -o DIR`` does: the scenes, the figures and
     tables, the colour paths compared and the clip report in DIR/index.html with its images.
-    Returns the page's path. Takes minutes at the default size; the GIL is released."""
+    Returns the page's path. Takes minutes at the default size; the GIL is released.
+
+    >>> import irid
+    >>> irid.gallery("gallery", width=320, height=240, spp=1)   # doctest: +SKIP
+    'gallery/index.html'
+    """
     args = {}
     for name, value, lo, hi in (("width", width, 32, 4096), ("height", height, 24, 4096),
                                 ("spp", spp, 1, 256), ("figure_width", figure_width, 320, 4096),
