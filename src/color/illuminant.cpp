@@ -187,7 +187,7 @@ std::vector<std::string> white_point_names() { return {"D65", "D50", "D55", "D75
 
 Xy white_point_xy(std::string_view name) {
     const std::string n = lower(name);
-    if (n == "d65") return {0.31270, 0.32900};
+    if (n == "d65") return d65_xy;
     if (n == "d50") return {0.34567, 0.35850};
     if (n == "d55") return {0.33242, 0.34743};
     if (n == "d75") return {0.29902, 0.31485};

@@ -322,8 +322,6 @@ Rgb RgbSpace::decode(const Rgb& c) const noexcept {
 namespace {
 
 using Kind = TransferFunction::Kind;
-/// D65 as ITU-R BT.709-6 and IEC 61966-2-1 give it.
-constexpr Xy d65_xy{0.3127, 0.3290};
 /// Illuminant C as the FCC 1953 NTSC standard gives it.
 constexpr Xy c_xy{0.310, 0.316};
 /// The ACES white point (SMPTE ST 2065-1:2012 §4.1; Academy S-2008-001), near but not D60.

@@ -612,7 +612,7 @@ void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format) 
         image.icc_profile.clear();
         // OpenEXR's adoptedNeutral (ImfStandardAttributes.h): the white to show as neutral; said
         // when it is not the D65 that readers without chromaticities assume.
-        const bool d65 = std::abs(space.white().x - 0.3127) < 1e-4 && std::abs(space.white().y - 0.3290) < 1e-4;
+        const bool d65 = std::abs(space.white().x - d65_xy.x) < 1e-4 && std::abs(space.white().y - d65_xy.y) < 1e-4;
         if (d65) {
             image.adopted_neutral.clear();
         } else {

@@ -50,7 +50,7 @@ std::string encode_transform(const RgbSpace& space) {
 /// The 4×4 row-major matrix of OCIO's MatrixTransform from one linear space to another.
 std::string matrix_transform(const ColorSpace& from_linear, const ColorSpace& to_linear,
                              ChromaticAdaptation adaptation) {
-    const Converter c(from_linear, to_linear, Xy{0.3127, 0.3290}, adaptation);
+    const Converter c(from_linear, to_linear, d65_xy, adaptation);
     std::array<Vec3, 3> columns{};
     for (int j = 0; j < 3; ++j) {
         Vec3 unit{0.0, 0.0, 0.0};
@@ -101,7 +101,7 @@ LutDomain ocio_look_domain(const OcioConfigOptions& o) {
     // The corners of the source cube in the display's linear space bound every source colour:
     // the conversion is one matrix, after decoding (which maps [0, 1] onto [0, 1] and keeps
     // order).
-    const Converter to_display(source.linear(), o.display.linear(), Xy{0.3127, 0.3290}, o.adaptation);
+    const Converter to_display(source.linear(), o.display.linear(), d65_xy, o.adaptation);
     const auto decoded = [&source](double v) {
         return source.family == SpaceFamily::rgb_linear ? v : source.rgb->transfer().decode(v);
     };

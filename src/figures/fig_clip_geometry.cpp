@@ -2,6 +2,7 @@
 // luminance, an out-of-gamut colour of that luminance, its neutral point (the grey of the same
 // luminance), the line between them, and where the clip methods put the colour.
 
+#include <irid/color/measure.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/gamut/report.h>
@@ -79,10 +80,7 @@ std::vector<ClipLanding> clip_landings(const Gamut& gamut, const Xyz& xyz,
         ClipLanding landing{method, clipper.clip(input), {}, 0.0};
         const Xyz clipped = space.to_xyz(landing.rgb);
         landing.xyy = xyz_to_xyy(clipped);
-        double dh = luv_to_lch(xyz_to_luv(clipped, white)).h - hue_in;
-        while (dh > 180.0) dh -= 360.0;
-        while (dh <= -180.0) dh += 360.0;
-        landing.hue_shift_deg = dh;
+        landing.hue_shift_deg = hue_difference(hue_in, luv_to_lch(xyz_to_luv(clipped, white)).h);
         out.push_back(landing);
     }
     return out;

@@ -3,6 +3,7 @@
 // and angle of incidence (what irid film-error summarises).
 
 #include <irid/color/difference.h>
+#include <irid/color/measure.h>
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
 #include <irid/optics/film.h>
@@ -67,10 +68,7 @@ FilmErrorGrid film_error_grid(const SingleFilm& film, const Colorimeter& colorim
     double sum = 0.0;
     for (const double d : g.delta_e) sum += d;
     g.mean = sum / static_cast<double>(g.delta_e.size());
-    std::vector<double> sorted = g.delta_e;
-    std::sort(sorted.begin(), sorted.end());
-    const std::size_t n = sorted.size();
-    g.median = n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    g.median = percentile(g.delta_e, 0.5);
     return g;
 }
 

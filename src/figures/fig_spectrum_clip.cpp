@@ -1,6 +1,7 @@
 // Figure 11 of Smits 1990: the visible spectrum at one luminance, clipped into the display's
 // gamut by each method, as horizontal strips.
 
+#include <irid/color/measure.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/gamut/batch.h>
@@ -108,10 +109,8 @@ FigureResult draw_spectrum_clip(const FigureRequest& request) {
             const Xyz before = srgb().to_xyz(spectrum[i]);
             const Xyz after = srgb().to_xyz(clipped[i]);
             luminance_error += std::abs(after.Y - before.Y) / before.Y;
-            double dh = luv_to_lch(xyz_to_luv(after, white)).h -
-                        luv_to_lch(xyz_to_luv(before, white)).h;
-            while (dh > 180.0) dh -= 360.0;
-            while (dh <= -180.0) dh += 360.0;
+            const double dh = hue_difference(luv_to_lch(xyz_to_luv(before, white)).h,
+                                             luv_to_lch(xyz_to_luv(after, white)).h);
             hue_error += std::abs(dh);
             worst_hue = std::max(worst_hue, std::abs(dh));
         }

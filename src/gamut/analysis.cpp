@@ -1,4 +1,4 @@
-#include <irid/color/adaptation.h>
+#include <irid/color/measure.h>
 #include <irid/color/numeric_table.h>
 #include <irid/color/observer.h>
 #include <irid/color/spaces.h>
@@ -17,37 +17,10 @@ namespace {
 constexpr double degrees_per_radian = 180.0 / std::numbers::pi;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-/// D65's chromaticity as the built-in spaces give it (IEC 61966-2-1), the white of Oklab.
-constexpr Xy d65_xy{0.3127, 0.3290};
-
 /// Relative tolerances of the definitions at the top of analysis.h.
 constexpr double gamut_tolerance = 1e-9;       // out of gamut, on a face, grey (× max)
 constexpr double saturation_tolerance = 1e-9;  // lower / higher (× s_in)
 
-Vec3 v3(const Xyz& c) noexcept { return {c.X, c.Y, c.Z}; }
-
-/// h_out − h_in in degrees, wrapped to (−180, 180].
-double signed_hue_change(double h_in, double h_out) noexcept {
-    double d = std::fmod(h_out - h_in, 360.0);
-    if (d > 180.0) d -= 360.0;
-    if (d <= -180.0) d += 360.0;
-    return d;
-}
-
-/// Mean, nearest-rank 95th percentile and maximum, as the clip report computes them.
-ClipStatistics statistics(std::vector<double> values) {
-    ClipStatistics s;
-    s.count = values.size();
-    if (values.empty()) return s;
-    std::sort(values.begin(), values.end());
-    double sum = 0.0;
-    for (const double v : values) sum += v;
-    s.mean = sum / static_cast<double>(s.count);
-    s.max = values.back();
-    const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(s.count)));
-    s.p95 = values[std::max<std::size_t>(rank, 1) - 1];
-    return s;
-}
 
 /// |Δh| of the three measures of a group of colours, collected then summarised.
 struct HueCollector {
@@ -59,7 +32,7 @@ struct HueCollector {
         if (!std::isnan(c.hue_shift_oklab)) oklab.push_back(std::abs(c.hue_shift_oklab));
     }
     [[nodiscard]] HueShiftStatistics statistics() const {
-        return {irid::statistics(uv), irid::statistics(ab), irid::statistics(oklab)};
+        return {summarize(uv), summarize(ab), summarize(oklab)};
     }
 };
 
@@ -86,45 +59,6 @@ double correlation(const std::vector<double>& x, const std::vector<double>& y) n
     }
     return sxy / std::sqrt(sxx * syy);
 }
-
-/// The colour measures of the file's top: lightness, saturation, hues.
-struct Appearance {
-    double l_ab = 0.0, l_uv = 0.0;
-    double saturation = 0.0;
-    double c_uv = 0.0, h_uv = 0.0, c_ab = 0.0, h_ab = 0.0, c_ok = 0.0, h_ok = 0.0;
-};
-
-class Meter {
-public:
-    explicit Meter(const Gamut& gamut)
-        : m_white(gamut.space().white_xyz()),
-          m_to_d65(gamut.space().white().x == d65_xy.x && gamut.space().white().y == d65_xy.y
-                       ? Mat3::identity()
-                       : adaptation_matrix(m_white, xy_to_xyz(d65_xy), ChromaticAdaptation::bradford)) {}
-
-    /// c relative to the white at Y = 1.
-    [[nodiscard]] Appearance operator()(const Xyz& c) const noexcept {
-        Appearance a;
-        const LchAb lab = lab_to_lch(xyz_to_lab(c, m_white));
-        const LchUv luv = luv_to_lch(xyz_to_luv(c, m_white));
-        const Vec3 d65 = m_to_d65 * v3(c);
-        const Oklch ok = oklab_to_oklch(xyz_to_oklab({d65[0], d65[1], d65[2]}));
-        a.l_ab = lab.L;
-        a.c_ab = lab.C;
-        a.h_ab = lab.h;
-        a.l_uv = luv.L;
-        a.c_uv = luv.C;
-        a.h_uv = luv.h;
-        a.c_ok = ok.C;
-        a.h_ok = ok.h;
-        a.saturation = saturation_uv(c, m_white);
-        return a;
-    }
-
-private:
-    Xyz m_white;
-    Mat3 m_to_d65;
-};
 
 bool outside(const Rgb& c, double max) noexcept {
     const double lo = -gamut_tolerance * max, hi = (1.0 + gamut_tolerance) * max;
@@ -164,7 +98,7 @@ ClipAnalysis analyse_clip(const ColorSet& set, const Gamut& gamut, ClipMethod me
     const double scale = 1.0 / max;
     const std::size_t n = set.colors.size();
     const GamutClipper clipper = report_clipper(method, gamut);  // as the clip report: aces-rgc clipped
-    const Meter meter(gamut);
+    const AppearanceMeter meter(space.white());
     const std::array<double, 3> angles = face_angles_to_constant_y_deg(space);
 
     ClipAnalysis result;
@@ -193,17 +127,17 @@ ClipAnalysis analyse_clip(const ColorSet& set, const Gamut& gamut, ClipMethod me
         a.out_of_gamut = outside(a.rgb_in, max);
 
         const Appearance in = meter(a.xyz_in), out = meter(a.xyz_out);
-        a.delta_l_ab = out.l_ab - in.l_ab;
+        a.delta_l_ab = out.lab.L - in.lab.L;
         a.delta_l_uv = out.l_uv - in.l_uv;
-        a.saturation_in = in.saturation;
-        a.saturation_out = out.saturation;
+        a.saturation_in = in.saturation_uv;
+        a.saturation_out = out.saturation_uv;
         const Rgb& o = a.rgb_out;
         const bool grey = std::abs(o.r - o.g) <= tolerance && std::abs(o.g - o.b) <= tolerance &&
                           std::abs(o.b - o.r) <= tolerance;
-        a.hue_shift_uv = in.c_uv > clip_report_min_chroma_uv && !grey ? signed_hue_change(in.h_uv, out.h_uv) : nan;
-        a.hue_shift_ab = in.c_ab > clip_report_min_chroma_ab && !grey ? signed_hue_change(in.h_ab, out.h_ab) : nan;
+        a.hue_shift_uv = in.c_uv > clip_report_min_chroma_uv && !grey ? hue_difference(in.h_uv, out.h_uv) : nan;
+        a.hue_shift_ab = in.c_ab > clip_report_min_chroma_ab && !grey ? hue_difference(in.h_ab, out.h_ab) : nan;
         a.hue_shift_oklab =
-            in.c_ok > clip_report_min_chroma_oklab && !grey ? signed_hue_change(in.h_ok, out.h_ok) : nan;
+            in.c_ok > clip_report_min_chroma_oklab && !grey ? hue_difference(in.h_ok, out.h_ok) : nan;
 
         // The face: among the output's channels at a bound, the one whose bound the input crossed
         // farthest.

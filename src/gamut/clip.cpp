@@ -232,7 +232,7 @@ GamutClipper::GamutClipper(ClipMethod method, const Gamut& gamut, const ClipSett
         throw Error("method " + name + " has no inverse; methods with one: " + with);
     }
     // Oklab is defined on XYZ relative to D65 (Ottosson 2020): adapt from the space's white.
-    const Xy d65{0.3127, 0.3290};
+    const Xy d65 = d65_xy;
     const Xy w = gamut.space().white();
     const Mat3 to_d65 = (w.x == d65.x && w.y == d65.y)
                             ? Mat3::identity()

@@ -6,7 +6,6 @@
 #include <irid/optics/fine_sum.h>
 #include <irid/optics/thesis_models.h>
 
-#include "statistics.h"
 
 #include <algorithm>
 #include <cmath>

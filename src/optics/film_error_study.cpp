@@ -1,11 +1,11 @@
 #include <irid/color/difference.h>
+#include <irid/color/measure.h>
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
 #include <irid/optics/film_error_study.h>
 #include <irid/optics/thesis_models.h>
 #include <irid/optics/work_limits.h>
 
-#include "statistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -92,8 +92,8 @@ ErrorStudyResult thesis_error_study(const std::string& name, const SingleFilm& f
     double total = 0.0;
     for (const double d : all) total += d;
     r.mean = total / static_cast<double>(all.size());
-    r.median = detail::percentile(all, 0.5);
-    r.p95 = detail::percentile(all, 0.95);
+    r.median = percentile(all, 0.5);
+    r.p95 = percentile(all, 0.95);
     return r;
 }
 

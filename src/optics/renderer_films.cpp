@@ -1,3 +1,4 @@
+#include <irid/color/measure.h>
 #include <irid/color/numeric_table.h>
 #include <irid/color/observer.h>
 #include <irid/color/rgb.h>
@@ -6,7 +7,6 @@
 #include <irid/optics/renderer_films.h>
 #include <irid/optics/work_limits.h>
 
-#include "statistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -545,8 +545,8 @@ FilmErrorRegions summarize_film_error(const std::string& name, const FilmErrorMa
     }
     const auto count = static_cast<double>(r.samples);
     r.mean = total / count;
-    r.median = detail::percentile(map.delta_e, 0.5);
-    r.p95 = detail::percentile(map.delta_e, 0.95);
+    r.median = percentile(map.delta_e, 0.5);
+    r.p95 = percentile(map.delta_e, 0.95);
     out.above_2 /= count;
     out.above_5 /= count;
     return out;

@@ -41,7 +41,7 @@ World::SkyWeights World::sky_weights(Vec3 d) const noexcept {
     const Xyy c = m_sky->xyy({d.x, d.y, d.z});
     // Sky chromaticities lie near the daylight locus; daylight_weights refuses only far from it.
     Xy xy{c.x, c.y};
-    if (!(0.0241 + 0.2562 * xy.x - 0.7341 * xy.y < -0.01)) xy = {0.3127, 0.3290};
+    if (!(0.0241 + 0.2562 * xy.x - 0.7341 * xy.y < -0.01)) xy = d65_xy;
     const DaylightWeights w = daylight_weights(xy);
     const double y = m_daylight_xyz[0].Y + w.m1 * m_daylight_xyz[1].Y + w.m2 * m_daylight_xyz[2].Y;
     const double target = c.Y * m_scene.light.sky_scale * m_scene.light.environment_intensity;

@@ -4,6 +4,7 @@
 
 #include <irid/color/difference.h>
 #include <irid/color/illuminant.h>
+#include <irid/color/measure.h>
 #include <irid/color/rgb.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
@@ -472,7 +473,7 @@ ImageDifference delta_e_2000_images(const io::Image& a, const io::Image& b) {
     if (d.empty()) return r;
     r.mean = sum / static_cast<double>(d.size());
     std::sort(d.begin(), d.end());
-    r.p99 = d[std::min(d.size() - 1, static_cast<std::size_t>(0.99 * static_cast<double>(d.size())))];
+    r.p99 = percentile_of_sorted(d, 0.99);
     r.max = d.back();
     return r;
 }

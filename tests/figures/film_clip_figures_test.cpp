@@ -120,8 +120,8 @@ TEST(ClipClaimsTable, TheParallelFaceVerdictFollowsItsDefinition) {
         s.angle_bins[b].max_deg = 15.0 * static_cast<double>(b + 1);
     }
     // The nearest-parallel occupied bin (15-30°) has the largest mean, and r < -0.1: holds.
-    s.angle_bins[1].hue.oklab = {8.0, 9.0, 9.0, 4};
-    s.angle_bins[4].hue.oklab = {2.0, 3.0, 3.0, 6};
+    s.angle_bins[1].hue.oklab = {.mean = 8.0, .p95 = 9.0, .max = 9.0, .count = 4};
+    s.angle_bins[4].hue.oklab = {.mean = 2.0, .p95 = 3.0, .max = 3.0, .count = 6};
     s.correlation_oklab = -0.8;
     EXPECT_TRUE(clip_claim_verdicts(s, HueMeasure::oklab)[3].holds);
     // A weak correlation does not.

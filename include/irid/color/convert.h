@@ -65,7 +65,7 @@ class Converter {
 public:
     /// `white`: the reference white of XYZ, CIELUV and CIELAB; `cat`: the adaptation where a
     /// space's own white differs from it.
-    Converter(const ColorSpace& from, const ColorSpace& to, const Xy& white = {0.3127, 0.3290},
+    Converter(const ColorSpace& from, const ColorSpace& to, const Xy& white = d65_xy,
               ChromaticAdaptation cat = ChromaticAdaptation::bradford);
 
     [[nodiscard]] const ColorSpace& from() const noexcept { return m_from; }
@@ -113,7 +113,7 @@ private:
 
     /// Oklab is defined on XYZ relative to D65 (Ottosson 2020, "A perceptual color space for
     /// image processing": M1 takes XYZ under D65).
-    static constexpr Xy oklab_white{0.3127, 0.3290};
+    static constexpr Xy oklab_white = d65_xy;
 
     ColorSpace m_from;
     ColorSpace m_to;

@@ -15,6 +15,9 @@ struct Xyz {
 struct Xy {
     double x = 0.0, y = 0.0;
 };
+/// D65's chromaticity to four digits, as sRGB (IEC 61966-2-1), Rec.709 (ITU-R BT.709-6),
+/// Display P3, Rec.2020 and Oklab give it; the white of every D65 space irid builds in.
+inline constexpr Xy d65_xy{0.3127, 0.3290};
 /// Chromaticity plus luminance.
 struct Xyy {
     double x = 0.0, y = 0.0, Y = 0.0;

@@ -34,7 +34,7 @@ struct ClipPipelineOptions {
     /// The method's parameters and direction (clip.h).
     ClipSettings settings;
     /// The reference white of XYZ, CIELUV and CIELAB sources (D65).
-    Xy white{0.3127, 0.3290};
+    Xy white = d65_xy;
     /// The adaptation where a space's own white differs from the reference white.
     ChromaticAdaptation adaptation = ChromaticAdaptation::bradford;
 };

@@ -1,116 +1,16 @@
 #pragma once
 
-// The clip report: what every gamut-clipping method does to sets of colours a display cannot
-// show, measured against the input colour, and how fast it does it (`irid clip-report`; the
-// results and their reading are in docs/GAMUT.md).
+// The clip report (`irid clip-report`): what every gamut-clipping method does to sets of
+// colours, measured against the input colour, and how fast. The sets, the ramps' geometry and
+// the definition of every measurement are in docs/GAMUT.md ("The clip report" and "Gradients:
+// the ramps"); percentiles are nearest rank (irid/color/measure.h).
 //
-// Sets. The report measures the sets its caller gives it (ColorSet: a name, a description and
-// XYZ colours relative to the destination's white, white Y = 1; some out of the destination's
-// gamut, some not). Clipping knows no physics: this library builds only the sets that need
-// nothing but colour science. The interference set of `irid clip-report` (thin-film colours,
-// which need the film physics) is made in irid_figures (include/irid/figures/clip_sets.h, with
-// the report's catalogue of sets by name), and its callers pass it in. The sets built here:
-// - spectrum: the monochromatic stimuli 380, 381, ..., 780 nm (CIE 1931 2°, monochromatic_xyz),
-//   401 colours, each scaled to Y = 0.3. The thesis (Smits 1990, §4.3.4) clips the spectrum
-//   scaled to a constant luminance; 0.3 is a mid luminance whose grey lies inside every gamut
-//   (the grey of Y = 0.3 is RGB (0.3, 0.3, 0.3) in any space whose white has Y = 1), so no
-//   method is forced to white or black and the luminance-keeping methods can keep it.
-// - rec2020: linear Rec.2020 on a 9 × 9 × 9 grid over [0, 1]³ (surface and interior, 729
-//   colours), to XYZ: the everyday Rec.2020 → sRGB case.
-// - ramps: gradients from a grey out of the gamut (ramps_color_set, below), 36 864 colours in
-//   144 ramps of 256 steps.
-// - a union of sets (`irid clip-report --set all`: spectrum, interference, rec2020 and ramps,
-//   39 800 colours), reported per set and over the whole; the union keeps every set's ramps.
-// XYZ from a space with another white is adapted to the destination's white by Bradford.
-//
-// Ramps (ramps_color_set, color_ramp). A ramp at luminance Y and Oklab hue h starts at the grey
-// of luminance Y, G = Y × the destination's white (XYZ, white Y = 1, so G.Y = Y exactly), and
-// runs in a straight line at constant Y, G + s d with d = (dX, 0, dZ), out to an end point:
-// - the direction d is the Oklab hue h at the grey: the direction of constant Y along which
-//   Oklab (a, b) starts out as (cos h, sin h), i.e. [dX, dZ] = J⁻¹ (cos h, sin h) with J the
-//   2 × 2 Jacobian of Oklab (a, b) with respect to (X, Z) at G (Oklab after Bradford adaptation
-//   to D65 when the destination's white is not D65, as the hue is measured below);
-// - end rec2020: the smallest s > 0 at which a channel of linear Rec.2020 (adapted to the
-//   destination's white) reaches 0 or 1: the point where the line leaves the Rec.2020 cube;
-// - end locus: the largest s > 0 at which the chromaticity of G + s d lies on the spectral
-//   locus: the polygon of the chromaticities of monochromatic_xyz(λ), λ = 380, 381, ..., 780 nm
-//   (the CIE table is linear between its 1 nm entries, so its chromaticities between two entries
-//   are the straight segment between theirs), closed by the purple line 780–380 nm; each
-//   segment is solved exactly as G + s d = α m(λ) + β m(λ + 1), α, β ≥ 0 (the largest s: the
-//   outer boundary where the table's long-wavelength end folds back on itself). XYZ of
-//   monochromatic light is taken as it is (not adapted), as in the spectrum set.
-// The ramp's 256 steps are evenly spaced in CIEDE2000, the measure of banding below: at equal
-// ΔE2000 arc length along the line (CIELAB relative to the destination's white, ΔE2000 summed
-// over 4096 equal pieces of s, each step placed by linear interpolation within its piece), the
-// first exactly the grey and the last exactly the end point; so the input ramps themselves
-// score a banding of about 1. Evenly spaced in s (XYZ) or in Oklab they would not be: CIEDE2000
-// weighs a chroma step beside the neutral axis up to 1.5 times more (its G term) and one at
-// chroma C far less (S_C = 1 + 0.045 C), and far out on a long ramp (toward violet the locus at
-// Y = 0.6 has Z ≈ 59) a step in XYZ is a far smaller step to the eye than one beside the grey.
-// Why constant Y rather than constant Oklab L: every step then has exactly the ramp's
-// luminance (the ramps are at Y = 0.1, 0.3 and 0.6, as stated), the line is straight in XYZ and
-// in every linear RGB (a gradient as a renderer or a saturation control in linear light makes
-// it), the end points are exact (linear conditions), and it is the line along which the thesis'
-// methods move a colour toward its grey: a hard clip of that family sends the whole tail beyond
-// the boundary onto one point, which is what the ramps are to show. The price: Oklab hue lines
-// curve in the chromaticity diagram, so the Oklab hue drifts along the ramp from h at the grey
-// (most toward blue); the report prints the input ramps' own banding, the score of a method
-// that changed nothing, as the reference.
-// Order: Y = 0.1, 0.3, 0.6; for each, the rec2020 ends, then the locus ends; for each, the hues
-// h = 0°, 15°, ..., 345°; for each, the 256 steps from the grey outward (ColorSet::ramps names
-// them). Luminance beyond the gamut's white: a gamut whose white is below a ramp's luminance
-// (Gamut max < Y) has no grey of it; that ramp is then out of gamut from its first step, and
-// the methods that keep luminance send it all to the white (its banding is then 1 and its
-// collapse 1, below). At Y = 0.6 the locus ends of the blue and violet hues lie far outside
-// every display cube (channels of tens), as the spectrum at high luminance does; every method
-// returns a finite colour for them and they are measured like any other.
-//
-// Measurements, per method (every one of clip_methods()), on a Gamut (a destination space's
-// linear cube [0, max]³): each colour becomes linear RGB of the destination (the input colour;
-// its XYZ is recomputed from that RGB, so that an untouched colour measures exactly 0) and is
-// clipped by GamutClipper::clip, or for smits-xyz by GamutClipper::clip_xyz on its XYZ. Then,
-// with XYZ divided by max (white Y = 1), against the input:
-// - ΔE2000: CIEDE2000 of CIELAB relative to the destination's white; mean, 95th percentile
-//   (nearest rank: the ⌈0.95 n⌉-th smallest) and maximum over the whole set.
-// - Hue shift |Δh| in degrees (0..180) of CIELAB h_ab and of Oklab (XYZ adapted to D65 by
-//   Bradford when the destination's white is not D65), over the colours whose input has a hue:
-//   C*ab > 1 (CIELAB), C > 0.005 (Oklab). An output that is a grey of the destination (its
-//   linear RGB channels equal within 1e-9 max: a colour sent to black or white) has no hue; it is
-//   left out of the hue figures and counted in hue_undefined (its loss shows in ΔE2000, |ΔY| and
-//   chroma kept). Oklab's white is not exactly achromatic (the D65 white has Oklab C ≈ 1.3e-4 with
-//   the published matrices), so a chroma threshold would not recognise it. The CIELUV hue h_uv
-//   (C*uv > 1) is measured the same way but not printed.
-// - |ΔY|: |Y_out − Y_in| of the relative luminance (white Y = 1), mean and maximum.
-// - Chroma kept: the mean of C*ab_out / C*ab_in over the colours with C*ab_in > 1.
-// - Colours per second: the whole set clipped again and again (single thread, the scalar
-//   GamutClipper API, inputs prepared beforehand, outputs into an array) for at least
-//   min_seconds (0.2 s) of std::chrono::steady_clock, in this run, as 10 rounds of at least
-//   min_seconds / 10 each; the figure is the median of the rounds' rates, so that another
-//   process taking the CPU for a moment does not move it. The only figure that is not
-//   deterministic.
-// - Out of gamut: the colours of the set with a channel below −1e-9 max or above (1 + 1e-9) max
-//   (so rounding in the conversions does not count).
-// - In-gamut moved: ΔE2000 between output and input over the set's colours that are not out of
-//   gamut (mean and max; 0 for every method that leaves in-gamut colours alone, which the soft
-//   methods, moves_in_gamut_colours(), do not).
-// - Banding, over the set's ramps (ColorSet::ramps): per ramp, ramp_banding of its outputs:
-//   the largest ΔE2000 between neighbouring outputs divided by the mean of those ΔE2000 over
-//   the ramp (1: every step alike; a hard clip that stops the tail on the boundary has its
-//   steps inside and then nothing, and its knee shows as a large ratio). The mean, p95 and max
-//   over the ramps. The same of the input ramps is ClipReport::input_banding.
-// - Collapse, over the set's ramps: per ramp, ramp_collapse: of its steps 0..254 whose input is
-//   out of gamut (the last step has no next), the share whose output is within ΔE2000 0.5
-//   (clip_report_collapse_delta_e) of the next step's output; the mean over the ramps that have
-//   such a step (a ramp inside the gamut has none and is not counted). With 256 steps the
-//   input ramps' own steps are 0.08 to 0.34 ΔE2000 (their lengths are 19 to 87), below 0.5,
-//   so this share is near 1 for every method, soft or hard; the report therefore also gives
-//   collapse ½ step: the same share with the threshold half the ramp's mean input step
-//   (clip_report_relative_collapse), which a method reaches only by compressing the tail to
-//   less than half its length (a hard clip: to nothing).
-// - Clippers: each method at its parameters' defaults, except aces-rgc with clip = true
-//   (report_clipper): the report measures what a display gets, and aces-rgc alone does not
-//   confine its output to the cube.
+// This library builds the sets that need colour science alone (spectrum, rec2020, ramps and
+// their unions). The interference set needs film physics and is made in irid_figures
+// (irid/figures/clip_sets.h); callers pass every set in as a ColorSet, XYZ relative to the
+// destination's white at Y = 1.
 
+#include <irid/color/measure.h>
 #include <irid/color/rgb.h>
 #include <irid/color/types.h>
 #include <irid/gamut/clip.h>
@@ -146,7 +46,7 @@ inline constexpr double clip_report_collapse_delta_e = 0.5;
 /// Collapse ½ step: the threshold as a fraction of the ramp's mean input step.
 inline constexpr double clip_report_relative_collapse = 0.5;
 
-/// Where a ramp ends (see the top of this file).
+/// Where a ramp ends: where its line leaves the Rec.2020 cube, or meets the spectral locus.
 enum class RampEnd { rec2020, locus };
 /// "rec2020", "locus".
 [[nodiscard]] std::string_view ramp_end_name(RampEnd end) noexcept;
@@ -176,8 +76,8 @@ struct ColorSet {
 /// The concatenation of sets, in order, with their ramps (moved to their new places).
 [[nodiscard]] ColorSet union_color_set(std::span<const ColorSet> sets, std::string name = "all");
 
-/// The parameter s_end of a ramp's end point G + s_end d and its direction d (dY = 0, see the
-/// top of this file), for the grey of `luminance` on `destination`.
+/// The parameter s_end of a ramp's end point G + s_end d and its direction d (dY = 0, see
+/// docs/GAMUT.md), for the grey of `luminance` on `destination`.
 struct RampGeometry {
     Xyz grey;
     Vec3 direction;
@@ -197,7 +97,7 @@ struct RampGeometry {
 /// one ColorRamp per ramp.
 [[nodiscard]] ColorSet ramps_color_set(const RgbSpace& destination);
 
-/// Banding of one ramp (see the top of this file): max over i of ΔE2000(lab[i], lab[i + 1])
+/// Banding of one ramp (docs/GAMUT.md): max over i of ΔE2000(lab[i], lab[i + 1])
 /// over their mean; 1 for fewer than two colours or when every step is 0 (a ramp made one
 /// colour: no step to see, its collapse shows it).
 [[nodiscard]] double ramp_banding(std::span<const Lab> lab);
@@ -212,17 +112,15 @@ struct RampGeometry {
 /// for a method that has that parameter (aces-rgc), so that every output is inside the cube.
 [[nodiscard]] GamutClipper report_clipper(ClipMethod method, const Gamut& gamut);
 
-/// Mean, 95th percentile (nearest rank) and maximum of `count` values; all 0 when count is 0.
-struct ClipStatistics {
-    double mean = 0.0, p95 = 0.0, max = 0.0;
-    std::size_t count = 0;
-};
+/// Mean, percentiles (nearest rank, irid/color/measure.h) and maximum of `count` values; all 0
+/// when count is 0. The report prints mean, p95 and max.
+using ClipStatistics = Statistics;
 
 /// What one method did to one set.
 struct MethodClipReport {
     ClipMethod method = ClipMethod::clamp;
     ClipStatistics delta_e2000;
-    /// |Δh| in degrees, over the colours with a hue (see above).
+    /// |Δh| in degrees, over the colours with a hue (C above the thresholds, output not a grey).
     ClipStatistics hue_lab, hue_oklab, hue_luv;
     /// Colours with an input hue (C*ab > 1) whose output is a grey of the destination.
     std::size_t hue_undefined = 0;
@@ -267,7 +165,7 @@ struct ClipReportOptions {
     double min_seconds = 0.2;
 };
 
-/// Measures every method on a set (see the top of this file). Throws irid::Error for an empty
+/// Measures every method on a set (docs/GAMUT.md). Throws irid::Error for an empty
 /// set or a bad option.
 [[nodiscard]] ClipReport measure_clip_report(const ColorSet& set, const Gamut& gamut,
                                              const ClipReportOptions& options = {});
