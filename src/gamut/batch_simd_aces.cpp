@@ -1,33 +1,7 @@
-// The SIMD batch kernel of aces-rgc (Google Highway, dynamic dispatch), forward and inverse.
-//
-// Per vector of colours, the scalar reference's steps (aces_rgc.cpp): the non-finite rule,
-// ach = max(r, g, b), per channel d = (ach − c)·(1/|ach|), and beyond the threshold the curve of
-// nd = (d − thr)/s:
-//   forward  D = thr + s·min(nd, 1)·(1 + v)^(−1/p), v = 2^(−p|log2 nd|) = min(nd, 1/nd)^p
-//            (= thr + s·nd/(1 + nd^p)^(1/p), with v in [0, 1]: no overflow), in float, with
-//            this file's FastLog2 / FastExp2 and a polynomial for (1 + v)^(−1/p) fitted per call
-//            (tail_polynomial; no division but the one 1/|ach| per vector);
-//   inverse  D = thr + s·exp(L − log1p(−u)/p), L = ln nd, u = exp(p L) = nd^p (Highway's Exp,
-//            Log, Log1p of hwy/contrib/math/math-inl.h), for d below the asymptote
-//            thr + s (unchanged from there on), in double: its slope (1 − u)^(−(1+p)/p) grows
-//            without bound toward the asymptote and amplifies float's rounding of d beyond
-//            1e-5 (measured: 9e-6 with float up to u = 0.9);
-// then ach − D·|ach|, capped at ±1e30 (a compressed channel, as the reference), and clamped
-// into [0, max] when the clipper confines. The forward packs, per block of 256 colours and per
-// channel, the lanes beyond the threshold into a list (a third of the channels on the
-// benchmark's input, where nearly every vector has some), runs the curve on full vectors of the
-// lists only and expands the results back (ForwardBlocks); the inverse runs the curve per
-// vector, skipping a channel whose lanes are all below the threshold.
-//
-// Lanes sent to the double reference (GamutClipper::clip, written over the vector's result):
-// - forward: |ach| < 1e-30 (not 0, which gives 0 here as in the reference), where 1/|ach| may
-//   overflow; |ach| > 1e30; and, when confined, ach > 16·max, where float's rounding of
-//   ach − D·|ach| (a few 1e-7 of |ach|) could exceed 1e-5·max inside the cube;
-// - inverse: u > 1 − 1e-4 (the slope beyond 2e7 would amplify even double's rounding toward
-//   1e-8), and d within 1e-9 (relative) above the asymptote, where the inverse jumps from +inf
-//   back to the identity and rounding may put d on the other side.
-// On the benchmark's input (uniform in [-0.5, 1.5]^3 outside the sRGB cube, as ACEScg) the
-// forward sends no lane; the inverse a few in 10^4 (tests/gamut/aces_rgc_test.cpp counts them).
+// The float SIMD kernel of aces-rgc (Google Highway, dynamic dispatch), forward and inverse,
+// following the scalar reference (aces_rgc.cpp) step by step. Its arithmetic (the forward
+// curve in float with a fitted tail polynomial, the inverse in double) and the lanes it sends
+// to the reference are in docs/KERNELS.md.
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE __BASE_FILE__

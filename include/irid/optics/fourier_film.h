@@ -1,53 +1,17 @@
 #pragma once
 
-// The exact colour of a dielectric film in a few hundred nanoseconds: the Airy reflectance as a
-// Fourier series in the film's phase, summed against the Fourier transform of the weighted
-// colour-matching functions.
+// The exact colour of a single film in about a microsecond: the Airy reflectance written as a
+// Fourier series in the film's phase, R(φ) = A0 + 2 Re Σ_m G q^(m−1) e^(imφ), and summed against
+// the Fourier transform of the weighted colour-matching functions, tabulated once per
+// colorimeter (FourierColorimeter). Nothing is fitted: for wavelength-independent indices the
+// result is the 1 nm sum up to the table's interpolation and the series' truncation.
 //
-// For a lossless film (index n1, no total reflection inside it) between a lossless ambient and
-// any substrate, the Airy amplitude r = (r01 + r12 z) / (1 + r01 r12 z), z = e^{iφ}, expands in
-// powers of z (Born & Wolf §7.6.1): r = r01 + Σ_{k≥1} b q^{k-1} z^k with b = r12 (1 − r01²) and
-// q = −r01 r12. Its square |r|² is then a Fourier series in φ whose coefficients are geometric:
-//
-//   R(φ) = A0 + 2 Re Σ_{m≥1} G q^{m-1} e^{imφ},
-//   A0 = r01² + |b|² / (1 − |q|²),   G = r01 b + |b|² q / (1 − |q|²)
-//
-// (r01 is real for a lossless film below its critical angle; r12 is complex for an absorbing
-// substrate or one past its critical angle). The phase is φ = 2π OPD ν with the optical path
-// difference OPD = 2 d n1 cos θ1 and the wavenumber ν = 1/λ, so the colour's 1 nm sum is
-//
-//   X = A0 Σ_i w_i + 2 Re Σ_m G q^{m-1} W(m OPD),   W(τ) = Σ_i w_i e^{2πi τ / λ_i}
-//
-// with w_i the colorimeter's summation weights (S(λ) x̄(λ) / Σ S ȳ; likewise for Y and Z). W is
-// the discrete Fourier transform of the weighted matching functions as functions of wavenumber;
-// it depends only on the illuminant and the observer, so it is tabulated once
-// (FourierColorimeter) and every colour after that costs the Fresnel amplitudes and a few table
-// lookups per term of the series. Nothing here is fitted: with wavelength-independent indices
-// the result is the 1 nm sum up to the table's interpolation and the series' truncation, both
-// bounded (below); Belcour & Barla (2017) replace W by Gaussian fits of the matching functions,
-// which is where their colour error comes from (docs/OPTICS.md).
-//
-// Dispersion. The amplitudes and the phase depend on the wavelength through the indices. The
-// spectrum is split into bands by a smooth partition of unity in wavenumber (normalised
-// Gaussians, so that each band's transform decays as fast as the whole's). In each band the
-// phase φ = 4π d f(ν), f(ν) = ν q1(ν) with q1 = n1 cos θ1, is split into a linear carrier and a
-// residual. With `slopes` off ("the index held constant per band") the carrier is
-// φ_c + 4π d g (ν − ν_c), g = q1 − λ dq1/dλ the group value of q1, and the series' coefficients
-// are held at the centre. With `slopes` on, each term's coefficient times its residual phase,
-// P_m(ν) = G q^{m-1} e^{imφ} e^{−2πi m τ1 (ν − ν_c)}, is interpolated through the band's seven
-// Chebyshev nodes x_j, where it is exact: P_m = Σ_j P_m(x_j) ℓ_j(x), x the wavenumber mapped onto
-// [−1, 1] over the band and ℓ_j the Lagrange polynomials of the nodes, so the term is
-// Σ_j P_m(x_j) U_j(m τ1) with the nodal transforms U_j(τ) = Σ_i w_i ℓ_j(x_i) e^{2πiτ(ν_i − ν_c)}
-// tabulated beside V (Σ_j U_j = V). τ1 is the slope of the Chebyshev fit of φ, so what is left
-// to interpolate is only the curvature of the phase and of the amplitudes. Media whose indices
-// the nodes' interpolant misses by more than 1e-4 anywhere in 380–780 nm (a metal's table) are
-// summed instead. A film past its own critical angle at every wavelength has no phase, only
-// an evanescent field: its reflectance is smooth in wavenumber and is summed by nested
-// Chebyshev–Lobatto quadratures over the spectrum (9, 17, 33, 65, 129 nodes), each checked
-// against the one before; where the series does not apply the same quadratures are tried before
-// the sum. One band is
-// exact for wavelength-independent media; for dispersive ones (water, oil, silica, metals) see
-// docs/OPTICS.md, "The fast exact film colour", for what each part buys.
+// Dispersive media (water, oil, silica) are followed through seven Chebyshev nodes per band
+// (`slopes`). Where the series does not apply (a film past its critical angle, a metal's
+// table, a critical wavelength inside the spectrum, aliasing) FourierFilm uses nested
+// quadratures or the 1 nm sum. The derivation, the error budgets and the accuracy against the
+// 1 nm sum, measured over each film's thickness and angle ranges, are in docs/OPTICS.md ("The
+// fast exact film colour"); the speeds in docs/PERFORMANCE.md.
 
 #include <irid/color/types.h>
 #include <irid/optics/film.h>
