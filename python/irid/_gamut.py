@@ -363,5 +363,5 @@ def clip_report(set="all", target="srgb", min_seconds=0.2):
     >>> report[0]["methods"]["clamp"]["delta_e2000"].keys()
     dict_keys(['mean', 'p95', 'max', 'count'])
     """
-    return _irid.clip_report(_name(set, "set"), _name(target, "target"),
-                             _number(min_seconds, "min_seconds"))
+    seconds = _number(min_seconds, "min_seconds")  # checked first, as before the split
+    return _irid.clip_report(_name(set, "set"), _name(target, "target"), seconds)

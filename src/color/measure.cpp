@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace irid {
@@ -25,10 +26,14 @@ double percentile(std::vector<double> values, double p) {
 }
 
 Statistics summarize(std::vector<double> values) {
-    std::erase_if(values, [](double v) { return std::isnan(v); });
     Statistics s;
     s.count = values.size();
     if (values.empty()) return s;
+    if (std::any_of(values.begin(), values.end(), [](double v) { return std::isnan(v); })) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        s.mean = s.median = s.p95 = s.p99 = s.max = nan;
+        return s;
+    }
     std::sort(values.begin(), values.end());
     double sum = 0.0;
     for (const double v : values) sum += v;

@@ -10,6 +10,8 @@
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC optimize("fp-contract=off")
 #endif
+// oklab_pairs-inl.h checks that its includer turned contraction off.
+#define IRID_FP_CONTRACT_OFF 1
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE __BASE_FILE__

@@ -12,6 +12,10 @@
 #define IRID_GAMUT_OKLAB_PAIRS_INL_H_
 #endif
 
+#ifndef IRID_FP_CONTRACT_OFF
+#error "oklab_pairs-inl.h needs floating-point contraction off: define IRID_FP_CONTRACT_OFF after the pragma"
+#endif
+
 #include <hwy/highway.h>
 #include <irid/color/matrix.h>
 

@@ -8,8 +8,8 @@
 #include <irid/render/sky.h>
 #include <irid/text_input.h>
 
-#include "builtin_scenes.h"
-#include "json_reader.h"  // generated from scenes/*.json (cmake/EmbedScenes.cmake)
+#include "builtin_scenes.h"  // generated from scenes/*.json (cmake/EmbedScenes.cmake)
+#include "json_reader.h"
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>

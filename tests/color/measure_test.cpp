@@ -57,16 +57,23 @@ TEST(Measure, SummaryOfOneToAHundred) {
     EXPECT_EQ(s.max, 100.0);
 }
 
-TEST(Measure, SummaryLeavesOutNaNsAndIsZeroWhenEmpty) {
+TEST(Measure, ANaNShowsInEveryFigureAndNothingIsZero) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const Statistics s = summarize({nan, 2.0, nan, 4.0});
-    EXPECT_EQ(s.count, 2u);
-    EXPECT_DOUBLE_EQ(s.mean, 3.0);
-    EXPECT_EQ(s.max, 4.0);
-    const Statistics none = summarize({nan});
+    EXPECT_EQ(s.count, 4u);
+    EXPECT_TRUE(std::isnan(s.mean));
+    EXPECT_TRUE(std::isnan(s.median));
+    EXPECT_TRUE(std::isnan(s.p95));
+    EXPECT_TRUE(std::isnan(s.max));
+    const Statistics none = summarize({});
     EXPECT_EQ(none.count, 0u);
     EXPECT_EQ(none.mean, 0.0);
     EXPECT_EQ(none.max, 0.0);
+    // The first four fields keep ClipStatistics' order: {mean, p95, max, count}.
+    const Statistics old_style{8.0, 9.0, 9.5, 4};
+    EXPECT_EQ(old_style.p95, 9.0);
+    EXPECT_EQ(old_style.max, 9.5);
+    EXPECT_EQ(old_style.count, 4u);
     StatisticsCollector c;
     for (double v : one_to(10)) c.add(v);
     EXPECT_EQ(c.size(), 10u);

@@ -4,7 +4,7 @@
 // kept and colours per second measured in this run, as Markdown tables (one per set, and for
 // --set all one more over the union); under each, a second table of what the methods do to
 // gradients and to colours already in the gamut (in-gamut ΔE2000, banding and collapse on the
-// set's ramps). The definitions are in include/irid/gamut/report.h and docs/GAMUT.md. SPACE is
+// set's ramps). The definitions are in docs/GAMUT.md. SPACE is
 // an RGB space, encoded or linear (the gamut is its linear cube [0, 1]³); aces-rgc is measured
 // with clip = true, as a display gets it. The sets are built here and given to the report: the
 // interference set needs the film optics, which the gamut library does not know, so they come

@@ -22,14 +22,17 @@ namespace irid {
 /// The same for values in any order (sorts a copy).
 [[nodiscard]] double percentile(std::vector<double> values, double p);
 
-/// Count, mean, median, 95th and 99th percentiles (nearest rank) and maximum; all 0 when
-/// there are no values.
+/// Count, mean, 95th percentile, maximum, median and 99th percentile (nearest rank); all 0 when
+/// there are no values. (The first four keep the order of the clip report's former
+/// ClipStatistics, so aggregate initialisers written for it still mean the same.)
 struct Statistics {
-    double mean = 0.0, median = 0.0, p95 = 0.0, p99 = 0.0, max = 0.0;
+    double mean = 0.0, p95 = 0.0, max = 0.0;
     std::size_t count = 0;
+    double median = 0.0, p99 = 0.0;
 };
 
-/// The statistics of `values`. NaNs are not counted (a colour without a hue has no hue shift).
+/// The statistics of `values`. A NaN among them is counted and makes every figure NaN, so
+/// that a broken input shows; callers leave out what has no value (a colour without a hue).
 [[nodiscard]] Statistics summarize(std::vector<double> values);
 
 /// Collects values one at a time, then summarises them.

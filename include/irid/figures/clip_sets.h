@@ -19,7 +19,7 @@
 //   exposure that keeps every colour below the white's luminance (max Y = 0.96), so every colour
 //   still has a grey of its luminance inside the gamut, while the brightest also cross the upper
 //   faces (158 out of sRGB).
-// - spectrum, rec2020, ramps: irid_gamut's (see report.h).
+// - spectrum, rec2020, ramps: irid_gamut's (docs/GAMUT.md, "The sets").
 
 #include <irid/color/rgb.h>
 #include <irid/gamut/report.h>

@@ -9,7 +9,7 @@
 // analyse_clip() measures what any clip method does to every colour of a set on these three
 // counts, and summarises the set.
 //
-// Conventions (those of the clip report, include/irid/gamut/report.h, so the two agree):
+// Conventions (those of the clip report, defined in docs/GAMUT.md, so the two agree):
 // - Each colour of the set (XYZ relative to the destination's white) becomes linear RGB of the
 //   destination; its XYZ is recomputed from that RGB (the input); it is clipped by
 //   GamutClipper::clip, or for smits-xyz by GamutClipper::clip_xyz on its XYZ (the output).
