@@ -26,6 +26,18 @@ TEST(Pq, ReferenceWhiteAndPeaksAsBt2408GivesThem) {
     EXPECT_NEAR(pq_encode(1000.0), 0.75, 0.005);
 }
 
+TEST(Pq, OpenColorIOsPublishedValues) {
+    // OpenColorIO's built-in transform tests (tests/cpu/transforms/BuiltinTransform_tests.cpp,
+    // "CURVE - LINEAR_to_ST-2084" and its inverse, linear 1.0 = 100 cd/m²), at their 1e-5.
+    EXPECT_NEAR(pq_encode(50.0), 0.440281573420, 1e-5);
+    EXPECT_NEAR(pq_encode(40.0), 0.419284117712, 1e-5);
+    EXPECT_NEAR(pq_encode(30.0), 0.392876186489, 1e-5);
+    EXPECT_NEAR(pq_encode(20.0), 0.357012421, 1e-5);
+    EXPECT_NEAR(pq_decode(0.5) / 100.0, 0.922457089941, 4e-5);
+    EXPECT_NEAR(pq_decode(0.4) / 100.0, 0.324479178538, 4e-5);
+    EXPECT_NEAR(pq_decode(0.3) / 100.0, 0.100382263105, 4e-5);
+}
+
 TEST(Pq, RoundTripsAndRisesEverywhere) {
     double last = -1.0;
     for (double nits = 0.0; nits <= 10000.0; nits += 0.37) {
