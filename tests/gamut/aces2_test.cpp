@@ -1,7 +1,9 @@
 // The ACES 2.0 rendering against OpenColorIO's published test vectors (data/ocio-aces2), at
 // OpenColorIO's tolerance: |error| / max(|expected|, 1) <= 1e-5 forward.
+#include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/gamut/aces2.h>
+#include <irid/gamut/aces2_display.h>
 
 #include <gtest/gtest.h>
 
@@ -132,6 +134,66 @@ TEST(Aces2, PeaksOutsideTheTransformsRangeAreRefused) {
     for (double peak : {99.0, 10001.0, std::nan("")}) {
         d.peak_nits = peak;
         EXPECT_THROW(Aces2Rendering{d}, Error) << peak;
+    }
+}
+
+TEST(Aces2Display, EveryBuiltInChainMatchesOpenColorIO) {
+    // One colour through each of the 31 built-in displays, OpenColorIO's published outputs at
+    // its tolerance 1e-4 (data/ocio-aces2/builtin_displays_20.csv).
+    std::ifstream in(std::string(IRID_SOURCE_DIR) + "/data/ocio-aces2/builtin_displays_20.csv");
+    ASSERT_TRUE(in.good());
+    std::string line;
+    int rows = 0;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#' || line.rfind("display,", 0) == 0) continue;
+        std::replace(line.begin(), line.end(), ',', ' ');
+        std::istringstream s(line);
+        std::string name;
+        std::array<double, 6> v{};
+        s >> name;
+        for (double& x : v) s >> x;
+        ASSERT_FALSE(s.fail()) << line;
+        const Aces2Output out(aces2_display(name));
+        const Xyz xyz = out.forward({v[0], v[1], v[2]});
+        EXPECT_LE(relative_error(xyz.X, v[3]), 1e-4) << name;
+        EXPECT_LE(relative_error(xyz.Y, v[4]), 1e-4) << name;
+        EXPECT_LE(relative_error(xyz.Z, v[5]), 1e-4) << name;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 31);
+    EXPECT_EQ(aces2_displays().size(), 31u);
+}
+
+TEST(Aces2Display, NamesAreShortOrOpenColorIOsAndUnknownOnesListTheKnown) {
+    EXPECT_EQ(&aces2_display("sdr-100nit-rec709"), &aces2_displays()[0]);
+    EXPECT_EQ(&aces2_display("ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - SDR-100nit-REC709_2.0"),
+              &aces2_displays()[0]);
+    EXPECT_EQ(aces2_display("HDR-1000nit-P3-D65").peak_nits, 1000.0);
+    try {
+        (void)aces2_display("hdr-9000nit-p3");
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("hdr-9000nit-p3"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("sdr-100nit-rec709"), std::string::npos);
+    }
+}
+
+TEST(Aces2Display, WhiteIsTheDisplaysAndTheChainStaysInsideIt) {
+    for (const Aces2DisplaySpec& spec : aces2_displays()) {
+        const Aces2Output out(spec);
+        // A bright grey ends at the limiting white, below the peak (times the linear scale).
+        const Xyz grey = out.forward({64.0, 64.0, 64.0});
+        const Xyz white = xy_to_xyz(spec.limiting_white, grey.Y);
+        EXPECT_NEAR(grey.X, white.X, 1e-9 * std::max(1.0, grey.Y)) << spec.name;
+        EXPECT_NEAR(grey.Z, white.Z, 1e-9 * std::max(1.0, grey.Y)) << spec.name;
+        EXPECT_LE(grey.Y, spec.peak_nits / 100.0 * spec.linear_scale * (1.0 + 1e-12)) << spec.name;
+        // Hostile input: finite, non-negative luminance.
+        for (const Vec3& x : {Vec3{1e30, -1e30, 0.0}, Vec3{std::nan(""), 1.0, 2.0}, Vec3{-5.0, -5.0, -5.0}}) {
+            const Xyz y = out.forward(x);
+            EXPECT_TRUE(std::isfinite(y.X) && std::isfinite(y.Y) && std::isfinite(y.Z)) << spec.name;
+            const Vec3 back = out.inverse(y);
+            EXPECT_TRUE(std::isfinite(back[0]) && std::isfinite(back[1]) && std::isfinite(back[2])) << spec.name;
+        }
     }
 }
 

@@ -1,0 +1,79 @@
+#pragma once
+
+// The ACES 2.0 Output Transform as OpenColorIO's built-in display transforms apply it
+// ("ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - <display>_2.0"): ACES2065-1 to CIE XYZ of a D65
+// display, 1.0 = 100 cd/m², and back. The chain around the rendering (aces2.h):
+// 1. ACES2065-1 to AP1, clamped to [0, forward_limit], and back;
+// 2. the rendering, to RGB of the limiting primaries;
+// 3. a clamp to [0, peak/100];
+// 4. the white scaling: a limiting white other than the encoding's (a D60 white shown on a D65
+//    display) is scaled so that it fits the encoding gamut;
+// 5. a linear scale (the cinema presets of 108 and 300 cd/m² render for 225 and 625 and scale
+//    by 0.48);
+// 6. limiting RGB to XYZ (no adaptation: the limiting white is the white shown).
+
+#include <irid/color/matrix.h>
+#include <irid/color/rgb.h>
+#include <irid/color/types.h>
+#include <irid/gamut/aces2.h>
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace irid {
+
+/// One display of the ACES 2.0 Output Transform.
+struct Aces2DisplaySpec {
+    /// The short name, lower case ("sdr-100nit-rec709"); the OCIO style is
+    /// "ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - " + the name in OCIO's case + "_2.0".
+    std::string name;
+    /// The peak the rendering targets [cd/m²] (225 and 625 for the 108 and 300 cinema presets).
+    double peak_nits = 100.0;
+    RgbPrimaries limiting{};
+    Xy limiting_white{};
+    /// The encoding's primaries and white; ignored when encoding_xyz (CIE XYZ itself, white E).
+    RgbPrimaries encoding{};
+    Xy encoding_white{};
+    bool encoding_xyz = false;
+    /// The linear scale after the rendering (0.48 for the cinema presets, else 1).
+    double linear_scale = 1.0;
+    /// Whether the limiting white is scaled into the encoding gamut (OpenColorIO's
+    /// SDR-100nit-P3-D60-in-XYZ-E does not scale).
+    bool scale_white = true;
+};
+
+/// The 31 built-in displays of OpenColorIO 2.4+, in its order.
+[[nodiscard]] std::span<const Aces2DisplaySpec> aces2_displays();
+
+/// The display of a name: the short name or the full OCIO style, in any case. Throws
+/// irid::Error listing the short names for an unknown one.
+[[nodiscard]] const Aces2DisplaySpec& aces2_display(std::string_view name);
+
+/// The whole chain for one display; its tables are built at construction.
+class Aces2Output {
+public:
+    /// Throws irid::Error for a spec Aces2Rendering refuses.
+    explicit Aces2Output(const Aces2DisplaySpec& spec);
+
+    /// ACES2065-1 to CIE XYZ of the D65 display, 1.0 = 100 cd/m².
+    [[nodiscard]] Xyz forward(const Vec3& aces) const noexcept;
+    /// CIE XYZ (1.0 = 100 cd/m²) to ACES2065-1. XYZ outside what the display shows is clamped
+    /// to its limiting cube first.
+    [[nodiscard]] Vec3 inverse(const Xyz& xyz) const noexcept;
+
+    [[nodiscard]] const Aces2DisplaySpec& spec() const noexcept { return m_spec; }
+    [[nodiscard]] const Aces2Rendering& rendering() const noexcept { return m_rendering; }
+    /// The factor of steps 4 and 5 together.
+    [[nodiscard]] double output_scale() const noexcept { return m_scale; }
+
+private:
+    Aces2DisplaySpec m_spec;
+    Aces2Rendering m_rendering;
+    Mat3 m_ap0_to_ap1, m_ap1_to_ap0;
+    Mat3 m_limiting_to_xyz, m_xyz_to_limiting;
+    double m_scale = 1.0;
+};
+
+}  // namespace irid
