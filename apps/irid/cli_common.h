@@ -31,6 +31,7 @@ using Runner = std::function<int()>;
 
 /// Each subcommand registers itself on the app and, when chosen, stores its runner.
 void add_convert_command(CLI::App& app, Runner& runner);
+void add_display_command(CLI::App& app, Runner& runner);
 void add_xyz_command(CLI::App& app, Runner& runner);
 void add_delta_e_command(CLI::App& app, Runner& runner);
 void add_film_command(CLI::App& app, Runner& runner);

@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
     add_film_error_command(app, runner);
     add_clip_command(app, runner);
     add_clip_report_command(app, runner);
+    add_display_command(app, runner);
     add_lut_command(app, runner);
     add_ocio_config_command(app, runner);
     add_figure_command(app, runner);

@@ -1,5 +1,5 @@
 # Type stubs of the irid package, whose names __init__.py re-exports from its modules (_color.py,
-# _gamut.py, _io.py, _optics.py, _render.py; their docstrings document every function).
+# _display.py, _gamut.py, _io.py, _optics.py, _render.py; their docstrings document every function).
 from typing import Any, Sequence, Tuple, Union
 
 import numpy as np
@@ -67,6 +67,12 @@ def clip_image(pixels: _Array, channels: Sequence[str], method: str,
                max: float = 1.0, white: _White = "D65", adaptation: str = "bradford",
                threads: int = 0, inverse: bool = False,
                **params: float | bool) -> Tuple[np.ndarray, list[str]]: ...
+
+# --- Display rendering ---
+def display_names() -> list[str]: ...
+def display_transform(rgb: _Array, view: str = "aces2", display: str | None = None,
+                      source: str = "aces2065-1", target: str = "xyz", inverse: bool = False,
+                      out: np.ndarray | None = None, threads: int = 0) -> np.ndarray: ...
 
 # --- Images ---
 def read_image(path: str | Any) -> Tuple[np.ndarray, dict[str, Any]]: ...

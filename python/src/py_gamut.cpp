@@ -7,6 +7,7 @@
 #include <irid/color.h>
 #include <irid/gamut/batch.h>
 #include <irid/gamut/clip.h>
+#include <irid/gamut/display_transform.h>
 #include <irid/gamut/pipeline.h>
 #include <irid/gamut/report.h>
 #include <irid/exchange/icc.h>
@@ -84,6 +85,19 @@ py::array run_pipeline(const ClipPipeline& p, const py::handle& a, int threads, 
         } else {
             p.clip(in.values(), dst, threads);
         }
+    }
+    return result;
+}
+
+template <class T>
+py::array run_display(const DisplayTransform& t, const py::handle& a, int threads, const py::object& out) {
+    if (threads < 0) throw py::value_error("threads: " + std::to_string(threads) + " must be >= 0 (0: all)");
+    Rows<T> in = rows_of<T>(a, 3, "colours");
+    py::array_t<T> result = result_array<T>(out, in.shape);
+    std::span<T> dst = mutable_values(result);
+    {
+        py::gil_scoped_release release;
+        t.apply(in.values(), dst, threads);
     }
     return result;
 }
@@ -191,6 +205,26 @@ void add_gamut(py::module_& m) {
              py::arg("facts"), py::arg("xyz_channels"), py::arg("given"))
         .def_property_readonly("notes", [](const ImageSource& s) { return s.notes; })
         .def_property_readonly("described", [](const ImageSource& s) { return s.described; });
+
+    py::class_<DisplayTransform>(m, "DisplayTransform")
+        .def(py::init([](const std::string& view, const std::string& display, const std::string& source,
+                         const std::string& target, bool inverse) {
+                 return DisplayTransform(DisplayTransformOptions{view, display, source, target, inverse});
+             }),
+             py::arg("view"), py::arg("display"), py::arg("source"), py::arg("target"), py::arg("inverse"))
+        .def(
+            "run",
+            [](const DisplayTransform& t, const py::handle& a, int threads, const py::object& out) {
+                const py::array numbers = numeric_array(a, "colours");
+                if (is_float32(numbers)) return run_display<float>(t, numbers, threads, out);
+                return run_display<double>(t, numbers, threads, out);
+            },
+            py::arg("colours"), py::arg("threads"), py::arg("out"));
+    m.def("display_names", [] {
+        std::vector<std::string> names;
+        for (const Aces2DisplaySpec& d : aces2_displays()) names.push_back(d.name);
+        return names;
+    });
 
     py::class_<ClipPipeline>(m, "ClipPipeline")
         .def(py::init([](const std::string& method, const std::string& source,

@@ -86,9 +86,11 @@ const Aces2DisplaySpec& aces2_display(std::string_view name) {
         key = key.substr(ocio_prefix.size(), key.size() - ocio_prefix.size() - ocio_suffix.size());
     for (const Aces2DisplaySpec& d : aces2_displays())
         if (d.name == key) return d;
-    std::vector<std::string_view> names;
+    std::vector<std::string> names;
     for (const Aces2DisplaySpec& d : aces2_displays()) names.push_back(d.name);
-    throw Error(fmt::format("unknown ACES 2.0 display {}; known: {}", quote_untrusted(name, 80), fmt::join(names, ", ")));
+    const std::string message =
+        fmt::format("unknown ACES 2.0 display {}; known: {}", quote_untrusted(name, 80), fmt::join(names, ", "));
+    throw UnknownNameError(message, std::move(names));
 }
 
 Aces2Output::Aces2Output(const Aces2DisplaySpec& spec)

@@ -1,0 +1,66 @@
+#pragma once
+
+// A display transform from a scene space to a display (and back), as `irid display`,
+// `irid.display_transform` and the renderer use it. The one view so far is "aces2", the ACES 2.0
+// Output Transform through one of OpenColorIO's built-in displays (aces2_display.h).
+//
+// Forward: scene colours in `source` (any space of irid/color/convert.h; aces2065-1 by default)
+// are converted to ACES2065-1 (Bradford adaptation where the whites differ), rendered to CIE XYZ
+// of the D65 display with 1.0 = 100 cd/m², and written in `target`: "xyz", or an RGB space,
+// linear or encoded (the RGB of that space with 1.0 = 100 cd/m²).
+// Inverse: display colours in `source` ("xyz" or an RGB space) back to scene colours in
+// `target` (aces2065-1 by default).
+
+#include <irid/color/convert.h>
+#include <irid/gamut/aces2_display.h>
+
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace irid {
+
+struct DisplayTransformOptions {
+    std::string view = "aces2";
+    std::string display;
+    std::string source = "aces2065-1";
+    std::string target = "xyz";
+    bool inverse = false;
+};
+
+/// The views a display transform knows.
+[[nodiscard]] std::vector<std::string> display_views();
+
+class DisplayTransform {
+public:
+    /// Throws irid::UnknownNameError for an unknown view, display or space, and irid::Error
+    /// for a display side that is not XYZ or RGB (the display side is `target` forward,
+    /// `source` inverse).
+    explicit DisplayTransform(const DisplayTransformOptions& options);
+
+    /// One colour; finite for any input (non-finite values are taken as 0). Throws irid::Error
+    /// for an input that has no XYZ (an xyY chromaticity y = 0 with Y ≠ 0).
+    [[nodiscard]] Vec3 operator()(const Vec3& in) const;
+
+    /// Interleaved RGB triples, `in` to `out` (the same size; they may be the same array), on up
+    /// to `threads` threads (0: all). Computed in double for either type, so a colour's result
+    /// is the same for any number of threads. Throws irid::Error for sizes that are not triples.
+    void apply(std::span<const double> in, std::span<double> out, int threads = 0) const;
+    void apply(std::span<const float> in, std::span<float> out, int threads = 0) const;
+
+    [[nodiscard]] const DisplayTransformOptions& options() const noexcept { return m_options; }
+    [[nodiscard]] const Aces2Output& output() const noexcept { return *m_output; }
+
+private:
+    template <class T>
+    void apply_batch(std::span<const T> in, std::span<T> out, int threads) const;
+
+    DisplayTransformOptions m_options;
+    std::shared_ptr<const Aces2Output> m_output;
+    std::unique_ptr<Converter> m_scene;    // source → aces2065-1-linear (forward) or aces → target
+    std::unique_ptr<Converter> m_display;  // xyz → target (forward) or source → xyz (inverse)
+};
+
+}  // namespace irid

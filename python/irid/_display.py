@@ -1,0 +1,53 @@
+"""Display rendering: scene colours through the ACES 2.0 Output Transform to a display, and back."""
+
+from __future__ import annotations
+
+from . import _irid
+from ._args import _flag, _name, _whole
+
+__all__ = ["display_names", "display_transform"]
+
+
+def display_names():
+    """The displays of :func:`display_transform` (OpenColorIO's 31 built-in ACES 2.0 displays).
+
+    >>> import irid
+    >>> len(irid.display_names()), irid.display_names()[0]
+    (31, 'sdr-100nit-rec709')
+    """
+    return list(_irid.display_names())
+
+
+def display_transform(rgb, view="aces2", display=None, source="aces2065-1", target="xyz",
+                      inverse=False, out=None, threads=0):
+    """Scene colours through a display transform (what ``irid display`` does), or back.
+
+    rgb: array (..., 3) of colours of ``source``.
+    view: "aces2", the ACES 2.0 Output Transform as OpenColorIO's built-in display transforms
+        apply it.
+    display: one of :func:`display_names` ("sdr-100nit-rec709", "hdr-1000nit-p3-d65", ...) or
+        its full OpenColorIO name.
+    source, target: forward, scene colours in ``source`` (any space of :func:`convert`) to
+        ``target``: "xyz" (CIE XYZ of the D65 display, 1.0 = 100 cd/m²) or an RGB space, linear
+        or encoded. With ``inverse``, display colours in ``source`` ("xyz" or an RGB space) back
+        to scene colours in ``target``.
+    out, threads: as for :func:`clip`. float32 and float64 are both computed in double.
+
+    Raises KeyError for unknown names and ValueError for bad values.
+
+    OpenColorIO's published output of one colour on a 1000 cd/m² P3 display, and back:
+
+    >>> import numpy as np, irid
+    >>> xyz = irid.display_transform([0.5, 0.4, 0.3], display="hdr-1000nit-p3-d65")
+    >>> np.round(xyz, 5).tolist()
+    [0.46537, 0.43853, 0.33688]
+    >>> aces = irid.display_transform(xyz, display="hdr-1000nit-p3-d65", source="xyz",
+    ...                               target="aces2065-1", inverse=True)
+    >>> np.round(aces, 6).tolist()
+    [0.5, 0.4, 0.3]
+    """
+    if display is None:
+        raise ValueError("display: give one of irid.display_names()")
+    t = _irid.DisplayTransform(_name(view, "view"), _name(display, "display"), _name(source, "source"),
+                               _name(target, "target"), _flag(inverse, "inverse"))
+    return t.run(rgb, _whole(threads, "threads", 0, 1 << 20), out)

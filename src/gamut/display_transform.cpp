@@ -1,0 +1,92 @@
+#include <irid/error.h>
+#include <irid/gamut/display_transform.h>
+#include <irid/parallel.h>
+#include <irid/text_input.h>
+
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+
+namespace irid {
+namespace {
+
+bool display_side_ok(const ColorSpace& s) noexcept { return s.family == SpaceFamily::xyz || s.is_rgb(); }
+
+ColorSpace space_of(const std::string& name, const char* option) {
+    if (const std::optional<ColorSpace> s = find_color_space(name)) return *s;
+    std::vector<std::string> names = color_space_names();
+    const std::string message =
+        fmt::format("{}: unknown space {}; known: {}", option, quote_untrusted(name), fmt::join(names, ", "));
+    throw UnknownNameError(message, std::move(names));
+}
+
+}  // namespace
+
+std::vector<std::string> display_views() { return {"aces2"}; }
+
+DisplayTransform::DisplayTransform(const DisplayTransformOptions& options) : m_options(options) {
+    if (options.view != "aces2")
+        throw UnknownNameError(fmt::format("view: unknown view {}; known: {}", quote_untrusted(options.view),
+                                           fmt::join(display_views(), ", ")),
+                               display_views());
+    m_output = std::make_shared<const Aces2Output>(aces2_display(options.display));
+    const ColorSpace source = space_of(options.source, "source");
+    const ColorSpace target = space_of(options.target, "target");
+    const ColorSpace aces = color_space("aces2065-1-linear");
+    const ColorSpace xyz = color_space("xyz");
+    const ColorSpace& display = options.inverse ? source : target;
+    if (!display_side_ok(display))
+        throw Error(fmt::format("{}: {} is not a display space; use xyz or an RGB space",
+                                options.inverse ? "source" : "target", options.inverse ? options.source : options.target));
+    // XYZ of the display is relative to D65 (the display's white), with Y = 1 at 100 cd/m².
+    if (!options.inverse) {
+        m_scene = std::make_unique<Converter>(source, aces, d65_xy);
+        m_display = std::make_unique<Converter>(xyz, target, d65_xy);
+    } else {
+        m_display = std::make_unique<Converter>(source, xyz, d65_xy);
+        m_scene = std::make_unique<Converter>(aces, target, d65_xy);
+    }
+}
+
+Vec3 DisplayTransform::operator()(const Vec3& in) const {
+    const auto finite = [](Vec3 v) {
+        for (double& x : v) x = std::isfinite(x) ? x : 0.0;
+        return v;
+    };
+    if (!m_options.inverse) {
+        const Vec3 aces = finite((*m_scene)(finite(in)));
+        const Xyz x = m_output->forward(aces);
+        return finite((*m_display)({x.X, x.Y, x.Z}));
+    }
+    const Vec3 x = finite((*m_display)(finite(in)));
+    return finite((*m_scene)(m_output->inverse({x[0], x[1], x[2]})));
+}
+
+template <class T>
+void DisplayTransform::apply_batch(std::span<const T> in, std::span<T> out, int threads) const {
+    if (in.size() % 3 != 0 || out.size() != in.size())
+        throw Error(fmt::format("display transform: {} values in and {} out; give RGB triples, as many out as in",
+                                in.size(), out.size()));
+    // In place is allowed: each triple is read before it is written.
+    parallel_ranges(
+        in.size() / 3, threads,
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const Vec3 c = (*this)({static_cast<double>(in[3 * i]), static_cast<double>(in[3 * i + 1]),
+                                        static_cast<double>(in[3 * i + 2])});
+                for (int k = 0; k < 3; ++k) out[3 * i + static_cast<std::size_t>(k)] = static_cast<T>(c[static_cast<std::size_t>(k)]);
+            }
+        },
+        256);
+}
+
+void DisplayTransform::apply(std::span<const double> in, std::span<double> out, int threads) const {
+    apply_batch(in, out, threads);
+}
+
+void DisplayTransform::apply(std::span<const float> in, std::span<float> out, int threads) const {
+    apply_batch(in, out, threads);
+}
+
+}  // namespace irid

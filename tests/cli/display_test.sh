@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# The contract of `irid display`: scene colours (CSV on stdin) through the ACES 2.0 display
+# transform to CIE XYZ (1.0 = 100 cd/m²) or an RGB space, and back with --inverse; --list; exit
+# statuses 0, 1 (bad data, with <stdin>:LINE) and 2 (usage, the valid values named). Expected
+# values are OpenColorIO's published outputs (data/ocio-aces2/builtin_displays_20.csv) and
+# consistency with `irid convert`.
+#
+#   bash tests/cli/display_test.sh <path-to-irid>
+set -u
+
+if [[ $# -ne 1 ]]; then
+    echo "usage: bash $0 <path-to-irid>" >&2
+    exit 2
+fi
+IRID=$1
+# shellcheck source=lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+
+# --- OpenColorIO's published outputs (BuiltinTransform_tests.cpp, tolerance 1e-4) -------------
+run $'0.5,0.4,0.3\n' display --view aces2 --display hdr-1000nit-p3-d65
+expect_close "0.46536559,0.43852845,0.33688101" 1e-4
+expect_stdout_has "X,Y,Z"
+run $'0.5,0.4,0.3\n' display --view aces2 --display sdr-100nit-rec709 --to xyz
+expect_close "0.26260215,0.25207460,0.20617345" 1e-4
+run $'0.5,0.4,0.3\n' display --display 'ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - SDR-100nit-REC709-D60-in-REC709-D65_2.0'
+expect_close "0.25147712,0.24029461,0.18221153" 1e-4
+run $'0.5,0.4,0.3\n' display --display hdr-108nit-p3-d65
+expect_close "0.16253395,0.15513620,0.12449738" 1e-4
+
+# --- --inverse returns the scene values -------------------------------------------------------
+run $'0.46536559,0.43852845,0.33688101\n' display --display hdr-1000nit-p3-d65 --inverse
+expect_close "0.5,0.4,0.3" 1e-5
+run $'0.26260215,0.25207460,0.20617345\n' display --display sdr-100nit-rec709 --inverse --to aces2065-1
+expect_close "0.5,0.4,0.3" 1e-5
+
+# --- 18 % grey: neutral at 10 cd/m² on a 100 cd/m² display (aces-docs) ------------------------
+run $'0.18,0.18,0.18\n' display --display sdr-100nit-rec709 --to srgb-linear
+expect_close "0.1,0.1,0.1" 1e-4
+
+# --- --to SPACE and --from SPACE agree with irid convert --------------------------------------
+printf '0.5,0.4,0.3\n0.02,0.9,1.7\n' >"$TMP/scene"
+"$IRID" display --display sdr-100nit-p3-d65 <"$TMP/scene" | tail -n +2 >"$TMP/xyz"
+"$IRID" convert --from xyz --to display-p3 <"$TMP/xyz" | tail -n +2 >"$TMP/want"
+run_file "$TMP/scene" display --display sdr-100nit-p3-d65 --to display-p3
+tail -n +2 "$TMP/out" >"$TMP/got"
+verdict=$(compare_csv "$TMP/want" "$TMP/got" 1e-12)
+if [[ $STATUS -eq 0 && -z $verdict ]]; then pass; else fail "--to display-p3 as convert" "$(outcome) $verdict"; fi
+
+"$IRID" convert --from aces2065-1-linear --to acescg-linear <"$TMP/scene" | tail -n +2 >"$TMP/cg"
+run_file "$TMP/cg" display --display hdr-1000nit-rec2020 --from acescg-linear
+tail -n +2 "$TMP/out" >"$TMP/got"
+"$IRID" display --display hdr-1000nit-rec2020 <"$TMP/scene" | tail -n +2 >"$TMP/want"
+verdict=$(compare_csv "$TMP/want" "$TMP/got" 1e-9)
+if [[ $STATUS -eq 0 && -z $verdict ]]; then pass; else fail "--from acescg-linear as aces2065-1" "$(outcome) $verdict"; fi
+
+# --- --list ------------------------------------------------------------------------------------
+run '' display --list
+expect_status 0
+lines=$(wc -l <"$TMP/out")
+if [[ $lines -eq 32 ]]; then pass; else fail "header and 31 displays" "$lines lines"; fi
+expect_stdout_has "display,peak_nits,limiting_primaries,limiting_white,encoding_primaries,encoding_white,linear_scale"
+expect_stdout_has "hdr-108nit-p3-d65,108,0.68 0.32 0.265 0.69 0.15 0.06,0.3127 0.329,"
+expect_stdout_has "sdr-100nit-p3-d60-in-xyz-e,100,0.68 0.32 0.265 0.69 0.15 0.06,0.32168 0.33767,CIE XYZ,E,1"
+
+# --- usage errors (2) and bad data (1) ---------------------------------------------------------
+run $'1,1,1\n' display --display hdr-9000nit-p3
+expect_status 2
+expect_stderr_has "sdr-100nit-rec709"
+expect_empty_stdout
+run $'1,1,1\n' display
+expect_status 2
+expect_stderr_has "--display"
+run $'1,1,1\n' display --view aces1 --display sdr-100nit-rec709
+expect_status 2
+expect_stderr_has "aces2"
+run $'1,1,1\n' display --display sdr-100nit-rec709 --to lab
+expect_status 2
+expect_stderr_has "not a display space"
+run $'1,1,1\n' display --display sdr-100nit-rec709 --inverse --from oklab
+expect_status 2
+run $'1,1,1\n' display --display sdr-100nit-rec709 --to nonsense
+expect_status 2
+run $'0.1,0.2,0.3\n1,nan,2\n' display --display sdr-100nit-rec709
+expect_bad_data 2
+
+echo "$passed passed, $failed failed"
+[[ $failed -eq 0 ]]

@@ -1,0 +1,71 @@
+"""irid.display_transform: OpenColorIO's published ACES 2.0 outputs, arrays like irid.clip, errors."""
+
+import csv
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import irid
+
+DATA = pathlib.Path(__file__).resolve().parents[2] / "data" / "ocio-aces2"
+
+
+def published():
+    """OpenColorIO's output of ACES2065-1 (0.5, 0.4, 0.3) for each built-in display."""
+    rows = []
+    with open(DATA / "builtin_displays_20.csv", newline="") as f:
+        for row in csv.reader(line for line in f if not line.startswith("#")):
+            if row[0] == "display":
+                continue
+            rows.append((row[0], [float(v) for v in row[1:4]], [float(v) for v in row[4:7]]))
+    return rows
+
+
+def test_every_display_gives_opencolorios_published_output():
+    rows = published()
+    assert len(rows) == 31
+    assert sorted(r[0].lower() for r in rows) == sorted(irid.display_names())
+    for name, scene, xyz in rows:
+        got = irid.display_transform(np.array(scene), display=name)
+        assert np.allclose(got, xyz, rtol=0, atol=1e-4), name
+        back = irid.display_transform(got, display=name, source="xyz", target="aces2065-1", inverse=True)
+        assert np.allclose(back, scene, rtol=0, atol=1e-6), name
+
+
+def test_matches_the_command_line_and_keeps_shapes_dtypes_and_out():
+    rng = np.random.default_rng(3)
+    scene = rng.uniform(-0.5, 16, size=(4, 5, 3))
+    a = irid.display_transform(scene, display="hdr-1000nit-p3-d65", target="display-p3-linear")
+    assert a.shape == (4, 5, 3) and a.dtype == np.float64
+    # Computed in double for float32 too: the float32 result is the double one rounded.
+    f = irid.display_transform(scene.astype(np.float32), display="hdr-1000nit-p3-d65",
+                               target="display-p3-linear")
+    assert f.dtype == np.float32
+    ref = irid.display_transform(scene.astype(np.float32).astype(np.float64), display="hdr-1000nit-p3-d65",
+                                 target="display-p3-linear")
+    assert np.array_equal(f, ref.astype(np.float32))
+    # Any thread count gives the same bits, and out= may be the input.
+    one = irid.display_transform(scene, display="hdr-1000nit-p3-d65", threads=1)
+    buf = scene.copy()
+    res = irid.display_transform(buf, display="hdr-1000nit-p3-d65", out=buf, threads=4)
+    assert res is buf and np.array_equal(buf, one)
+    assert np.all(np.isfinite(irid.display_transform([[np.nan, np.inf, -np.inf]], display="sdr-100nit-rec709")))
+
+
+def test_names_and_values_are_checked():
+    with pytest.raises(KeyError):
+        irid.display_transform([0.1, 0.2, 0.3], display="hdr-9000nit")
+    with pytest.raises(KeyError):
+        irid.display_transform([0.1, 0.2, 0.3], view="aces1", display="sdr-100nit-rec709")
+    with pytest.raises(KeyError):
+        irid.display_transform([0.1, 0.2, 0.3], display="sdr-100nit-rec709", target="nonsense")
+    with pytest.raises(ValueError):
+        irid.display_transform([0.1, 0.2, 0.3], display="sdr-100nit-rec709", target="lab")
+    with pytest.raises(ValueError):
+        irid.display_transform([0.1, 0.2, 0.3])
+    with pytest.raises(ValueError):
+        irid.display_transform([0.1, 0.2], display="sdr-100nit-rec709")
+    with pytest.raises(ValueError):
+        irid.display_transform([0.1, 0.2, 0.3], display="sdr-100nit-rec709", threads=-1)
