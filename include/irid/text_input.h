@@ -31,6 +31,10 @@ enum class StreamInput { refuse, accept };
 /// is a directory, a read fails (with the system's reason), or it holds more than `max_bytes`.
 [[nodiscard]] std::string read_standard_input(std::size_t max_bytes = max_text_input_bytes);
 
+/// `s` with the ASCII letters A-Z made lower case (names are compared this way; other bytes,
+/// UTF-8 included, are kept as they are).
+[[nodiscard]] std::string ascii_lower(std::string_view s);
+
 /// A piece of untrusted input for a message: in single quotes, with control characters, quotes,
 /// backslashes and bytes that are not UTF-8 written as escapes (\n, \t, \\, \', \x1b), and cut
 /// to at most `max_chars` characters followed by "..." (inside the quotes) when longer. Nothing

@@ -48,6 +48,21 @@ def display_transform(rgb, view="aces2", display=None, source="aces2065-1", targ
     """
     if display is None:
         raise ValueError("display: give one of irid.display_names()")
-    t = _irid.DisplayTransform(_name(view, "view"), _name(display, "display"), _name(source, "source"),
-                               _name(target, "target"), _flag(inverse, "inverse"))
+    # The transforms already built (each builds its display's tables, several milliseconds), by
+    # their arguments as given, as clip keeps its pipelines.
+    try:
+        key = (view, display, source, target, inverse, inverse.__class__)  # 1 == True: keep the check
+        t = _recent.get(key)
+    except TypeError:   # an unhashable argument: the checks below refuse it
+        key, t = None, None
+    if t is None:
+        t = _irid.DisplayTransform(_name(view, "view"), _name(display, "display"), _name(source, "source"),
+                                   _name(target, "target"), _flag(inverse, "inverse"))
+        if key is not None:
+            if len(_recent) >= 64:
+                _recent.clear()
+            _recent[key] = t
     return t.run(rgb, _whole(threads, "threads", 0, 1 << 20), out)
+
+
+_recent = {}

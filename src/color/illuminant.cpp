@@ -39,13 +39,6 @@ DenseSpectrum from_5nm_table(const std::array<double, Size>& table) {
 /// 6504 K".
 constexpr double c2_ratio = 1.4388 / 1.4380;
 
-std::string lower(std::string_view s) {
-    std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return out;
-}
-
 bool parse_double(std::string_view s, double& v) {
     while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
     while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
@@ -152,7 +145,7 @@ DenseSpectrum blackbody(double temperature_k) {
 }
 
 DenseSpectrum illuminant_by_name(std::string_view name) {
-    const std::string n = lower(name);
+    const std::string n = ascii_lower(name);
     if (n == "d65") return illuminant_d65();
     if (n == "d50") return illuminant_d50();
     if (n == "d55") return daylight_illuminant(5500.0 * c2_ratio);
@@ -186,7 +179,7 @@ DenseSpectrum illuminant_by_name(std::string_view name) {
 std::vector<std::string> white_point_names() { return {"D65", "D50", "D55", "D75", "A", "C", "E"}; }
 
 Xy white_point_xy(std::string_view name) {
-    const std::string n = lower(name);
+    const std::string n = ascii_lower(name);
     if (n == "d65") return d65_xy;
     if (n == "d50") return {0.34567, 0.35850};
     if (n == "d55") return {0.33242, 0.34743};

@@ -191,6 +191,13 @@ std::string read_standard_input(std::size_t max_bytes) {
     return text;
 }
 
+std::string ascii_lower(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    return out;
+}
+
 std::string quote_untrusted(std::string_view text, std::size_t max_chars) {
     std::string out = "'";
     const bool whole = append_escaped(out, text, max_chars, false, true);

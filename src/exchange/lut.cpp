@@ -31,12 +31,6 @@ double log_offset(const LutDomain& d) noexcept { return (d.max - d.min) * std::e
 /// log2(max − min + e) − log2(e) = log2(1 + 2^stops): the shaper's span in stops.
 double log_span(const LutDomain& d) noexcept { return std::log2(1.0 + std::exp2(d.stops)); }
 
-std::string lower(std::string_view s) {
-    std::string out(s);
-    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return out;
-}
-
 /// "[0, 1]", "log2 over [0, 16], 14 stops": the domain in words.
 std::string describe_domain(const LutDomain& d) {
     const std::string range = fmt::format("[{}, {}]", format_shortest(d.min), format_shortest(d.max));
@@ -194,7 +188,7 @@ std::string_view lut_format_name(LutFormat format) noexcept {
 }
 
 LutFormat lut_format_for(const std::filesystem::path& path) {
-    const std::string ext = lower(path.extension().string());
+    const std::string ext = ascii_lower(path.extension().string());
     std::vector<std::string> valid;
     for (const LutFormat f : formats) {
         std::string dotted = fmt::format(".{}", lut_format_name(f));

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 
 namespace irid {
 namespace {
@@ -64,12 +63,6 @@ std::vector<Aces2DisplaySpec> build_displays() {
     return d;
 }
 
-std::string lower(std::string_view s) {
-    std::string r(s);
-    for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return r;
-}
-
 constexpr std::string_view ocio_prefix = "aces-output - aces2065-1_to_cie-xyz-d65 - ";
 constexpr std::string_view ocio_suffix = "_2.0";
 
@@ -81,7 +74,7 @@ std::span<const Aces2DisplaySpec> aces2_displays() {
 }
 
 const Aces2DisplaySpec& aces2_display(std::string_view name) {
-    std::string key = lower(name);
+    std::string key = ascii_lower(name);
     if (key.starts_with(ocio_prefix) && key.ends_with(ocio_suffix))
         key = key.substr(ocio_prefix.size(), key.size() - ocio_prefix.size() - ocio_suffix.size());
     for (const Aces2DisplaySpec& d : aces2_displays())
