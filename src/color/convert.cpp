@@ -39,9 +39,9 @@ std::vector<std::string> color_space_names() {
 
 std::vector<std::string> rgb_color_space_names() {
     std::vector<std::string> names;
-    for (const RgbSpace* s : builtin_rgb_spaces()) {
-        names.push_back(s->name());
-        names.push_back(s->name() + "-linear");
+    for (const std::string& n : rgb_space_names()) {
+        names.push_back(n);
+        names.push_back(n + "-linear");
     }
     return names;
 }

@@ -1,3 +1,4 @@
+#include <irid/color/hdr_transfer.h>
 #include <irid/color/numeric_table.h>
 #include <irid/color/rgb.h>
 #include <irid/color/spaces.h>
@@ -151,7 +152,8 @@ std::optional<TransferFunction::Parameters> TransferFunction::parameters() const
         case Kind::rec2020: return camera(rec2020_alpha, rec2020_beta);
         case Kind::gamma: return Parameters{m_gamma, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         case Kind::parametric: return m_params;
-        case Kind::sampled: return std::nullopt;
+        case Kind::sampled:
+        case Kind::pq: return std::nullopt;
     }
     return std::nullopt;
 }
@@ -209,11 +211,15 @@ double TransferFunction::encode_magnitude(double v) const noexcept {
     return (static_cast<double>(i) + t) / last;
 }
 
+/// Linear 1.0 is this many cd/m² for the PQ kind (irid's display-light scale).
+constexpr double pq_linear_nits = 100.0;
+
 double TransferFunction::encode(double linear) const noexcept {
     const double v = std::abs(linear);
     double e = v;
     switch (m_kind) {
         case Kind::linear: return linear;
+        case Kind::pq: return pq_encode(std::isnan(linear) ? 0.0 : linear * pq_linear_nits);
         case Kind::parametric:
         case Kind::sampled:
             // Mirrored by the sign of the input (a curve may decode below 0: negative offsets);
@@ -242,6 +248,7 @@ double TransferFunction::decode(double encoded) const noexcept {
     double v = e;
     switch (m_kind) {
         case Kind::linear: return encoded;
+        case Kind::pq: return pq_decode(encoded) / pq_linear_nits;
         case Kind::parametric:
         case Kind::sampled:
             if (std::isnan(encoded)) return encoded;
@@ -385,6 +392,47 @@ const RgbSpace& acescg() {
     return space;
 }
 
+const RgbSpace& rec1886() {
+    // ITU-R BT.709-6 Item 1.3 primaries; ITU-R BT.1886 Annex 1 EOTF with L_B = 0: γ = 2.4.
+    static const RgbSpace space("rec1886", {{0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}}, d65_xy,
+                                TransferFunction(Kind::gamma, 2.4));
+    return space;
+}
+
+const RgbSpace& rec1886_rec2020() {
+    // ITU-R BT.2020-2 Table 3 primaries; ITU-R BT.1886 Annex 1 EOTF with L_B = 0: γ = 2.4.
+    static const RgbSpace space("rec1886-rec2020", {{0.708, 0.292}, {0.170, 0.797}, {0.131, 0.046}},
+                                d65_xy, TransferFunction(Kind::gamma, 2.4));
+    return space;
+}
+
+const RgbSpace& p3_d65() {
+    // SMPTE EG 432-1:2010 primaries with D65; SMPTE RP 431-2:2011 §7.1 decoding γ = 2.6.
+    static const RgbSpace space("p3-d65", {{0.680, 0.320}, {0.265, 0.690}, {0.150, 0.060}}, d65_xy,
+                                TransferFunction(Kind::gamma, 2.6));
+    return space;
+}
+
+const RgbSpace& rec2100_pq() {
+    // ITU-R BT.2100-2 Table 1 (the BT.2020 primaries, D65) and Table 4 (PQ).
+    static const RgbSpace space("rec2100-pq", {{0.708, 0.292}, {0.170, 0.797}, {0.131, 0.046}},
+                                d65_xy, TransferFunction(Kind::pq));
+    return space;
+}
+
+const RgbSpace& p3_d65_pq() {
+    // SMPTE EG 432-1:2010 primaries with D65; SMPTE ST 2084:2014.
+    static const RgbSpace space("p3-d65-pq", {{0.680, 0.320}, {0.265, 0.690}, {0.150, 0.060}},
+                                d65_xy, TransferFunction(Kind::pq));
+    return space;
+}
+
+std::span<const RgbSpace* const> display_rgb_spaces() {
+    static const std::array<const RgbSpace*, 5> spaces{&rec1886(), &rec1886_rec2020(), &p3_d65(), &rec2100_pq(),
+                                                       &p3_d65_pq()};
+    return spaces;
+}
+
 std::span<const RgbSpace* const> builtin_rgb_spaces() {
     static const std::array<const RgbSpace*, 8> spaces{
         &srgb(),     &display_p3(), &rec2020(),    &adobe_rgb(),
@@ -392,8 +440,18 @@ std::span<const RgbSpace* const> builtin_rgb_spaces() {
     return spaces;
 }
 
+std::vector<std::string> rgb_space_names() {
+    std::vector<std::string> names;
+    for (const auto list : {builtin_rgb_spaces(), display_rgb_spaces()})
+        for (const RgbSpace* s : list) names.push_back(s->name());
+    return names;
+}
+
 const RgbSpace* find_rgb_space(std::string_view name) noexcept {
     for (const RgbSpace* space : builtin_rgb_spaces()) {
+        if (space->name() == name) return space;
+    }
+    for (const RgbSpace* space : display_rgb_spaces()) {
         if (space->name() == name) return space;
     }
     return nullptr;

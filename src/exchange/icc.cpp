@@ -383,8 +383,12 @@ std::string IccProfile::summary() const {
 }
 
 std::vector<unsigned char> make_icc_profile(const RgbSpace& space, std::string_view description) {
-    Context ctx;
     const TransferFunction& t = space.transfer();
+    if (t.kind() == TransferFunction::Kind::pq) {
+        throw Error("ICC profile of " + space.name() + ": its PQ (SMPTE ST 2084) signal is absolute "
+                    "luminance up to 10000 cd/m², which an ICC.1 tone curve (relative, to 1) cannot hold");
+    }
+    Context ctx;
     Curve curve;
     if (const auto p = t.parameters()) {
         const auto& q = *p;
@@ -620,7 +624,12 @@ void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format) 
         }
     } else {
         image.color_space = space.name();
-        image.icc_profile = make_icc_profile(space);
+        // No ICC.1 curve holds PQ: such a file carries the space's name alone.
+        if (space.transfer().kind() == TransferFunction::Kind::pq) {
+            image.icc_profile.clear();
+        } else {
+            image.icc_profile = make_icc_profile(space);
+        }
         image.chromaticities.clear();
         image.adopted_neutral.clear();
     }

@@ -41,6 +41,9 @@ std::string encode_transform(const RgbSpace& space) {
             return fmt::format("!<ExponentTransform> {{value: [{0}, {0}, {0}, 1], style: mirror, "
                                "direction: inverse}}",
                                t.gamma());
+        case TransferFunction::Kind::pq:
+            // OCIO 2.1's built-in curve has irid's scale: linear 1.0 = 100 cd/m².
+            return "!<BuiltinTransform> {style: \"CURVE - ST-2084_to_LINEAR\", direction: inverse}";
         case TransferFunction::Kind::parametric:
         case TransferFunction::Kind::sampled: break;
     }

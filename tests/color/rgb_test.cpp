@@ -305,5 +305,73 @@ TEST(TransferFunction, RefusesCurvesThatAreNotDecodings) {
     EXPECT_THROW((void)TransferFunction(TransferFunction::Kind::sampled), Error);
 }
 
+// --- the display encodings ---------------------------------------------------------------
+
+/// SMPTE ST 2084:2014 §5.3's inverse EOTF written out from its constants (BT.2100-2 Table 4),
+/// for luminance in cd/m²: independent of irid/color/hdr_transfer.h.
+double st2084_signal(double nits) {
+    const double m1 = 2610.0 / 16384.0, m2 = 2523.0 / 4096.0 * 128.0;
+    const double c1 = 3424.0 / 4096.0, c2 = 2413.0 / 4096.0 * 32.0, c3 = 2392.0 / 4096.0 * 32.0;
+    const double y = std::pow(nits / 10000.0, m1);
+    return std::pow((c1 + c2 * y) / (1.0 + c3 * y), m2);
+}
+
+TEST(TransferFunction, PqEncodesDisplayLightWithOneAtOneHundredNits) {
+    const TransferFunction pq(TransferFunction::Kind::pq);
+    for (const double nits : {0.0, 0.005, 1.0, 48.0, 100.0, 203.0, 1000.0, 4000.0, 10000.0}) {
+        EXPECT_NEAR(pq.encode(nits / 100.0), st2084_signal(nits), 1e-12) << nits;
+        EXPECT_NEAR(pq.decode(st2084_signal(nits)), nits / 100.0, 1e-9 * std::max(1.0, nits / 100.0)) << nits;
+    }
+    // ITU-R BT.2408-7 §2.2: the HDR reference white, 203 cd/m², is a PQ signal of 58 %.
+    EXPECT_NEAR(pq.encode(2.03), 0.58, 0.001);
+    // The signal holds 0 to 10000 cd/m²: beyond is clamped, a negative value is black, NaN too.
+    EXPECT_DOUBLE_EQ(pq.encode(100.0), 1.0);
+    EXPECT_DOUBLE_EQ(pq.encode(250.0), 1.0);
+    EXPECT_EQ(pq.encode(-0.5), pq.encode(0.0));
+    EXPECT_EQ(pq.encode(std::nan("")), pq.encode(0.0));
+    EXPECT_EQ(pq.decode(-0.5), 0.0);
+    EXPECT_EQ(pq.decode(pq.encode(0.0)), 0.0);
+    EXPECT_DOUBLE_EQ(pq.decode(1.5), 100.0);
+    EXPECT_EQ(pq.decode(std::nan("")), 0.0);
+    EXPECT_FALSE(pq.parameters().has_value());
+    // It rises and round-trips over its whole range.
+    double last = -1.0;
+    for (int i = 0; i <= 400; ++i) {
+        const double v = 100.0 * std::pow(10.0, -0.02 * i);  // 100 down to 1e-6
+        const double e = pq.encode(v);
+        EXPECT_NEAR(pq.decode(e), v, 1e-9 * v + 1e-15) << v;
+        if (i > 0) {
+            EXPECT_LT(e, last) << v;
+        }
+        last = e;
+    }
+}
+
+TEST(RgbSpace, DisplayEncodingsAreNamedSpacesButNotWorkingSpaces) {
+    // BT.1886 with a black of 0 is a pure 2.4 power law on the BT.709 primaries.
+    EXPECT_DOUBLE_EQ(rec1886().decode({0.5, 0.25, 1.0}).r, std::pow(0.5, 2.4));
+    EXPECT_DOUBLE_EQ(p3_d65().decode({0.5, 0.25, 1.0}).g, std::pow(0.25, 2.6));
+    const auto same_primaries = [](const RgbSpace& a, const RgbSpace& b) {
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                if (a.to_xyz_matrix()[i][j] != b.to_xyz_matrix()[i][j]) return false;
+            }
+        }
+        return true;
+    };
+    EXPECT_TRUE(same_primaries(rec1886(), srgb()));
+    EXPECT_TRUE(same_primaries(rec2100_pq(), rec2020()));
+    EXPECT_TRUE(same_primaries(rec1886_rec2020(), rec2020()));
+    EXPECT_DOUBLE_EQ(rec1886_rec2020().decode({0.5, 0.25, 1.0}).r, std::pow(0.5, 2.4));
+    EXPECT_TRUE(same_primaries(p3_d65_pq(), display_p3()));
+    EXPECT_TRUE(same_primaries(p3_d65(), display_p3()));
+    EXPECT_EQ(rec2100_pq().transfer().kind(), TransferFunction::Kind::pq);
+    for (const RgbSpace* s : display_rgb_spaces()) {
+        EXPECT_EQ(find_rgb_space(s->name()), s);
+        for (const RgbSpace* w : builtin_rgb_spaces()) EXPECT_NE(w, s);
+    }
+    EXPECT_EQ(display_rgb_spaces().size(), 5U);
+}
+
 }  // namespace
 }  // namespace irid

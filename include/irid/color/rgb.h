@@ -16,7 +16,7 @@ namespace irid {
 /// A transfer function (opto-electronic encoding) of an RGB space. Encoding maps linear light
 /// to the encoded signal, decoding is its exact inverse. Negative values are encoded with the
 /// sign mirrored, f(−v) = −f(v), so out-of-gamut values survive a round trip (as extended
-/// sRGB and CSS Color 4 do).
+/// sRGB and CSS Color 4 do); PQ, an absolute display signal, is the exception (see Kind::pq).
 class TransferFunction {
 public:
     enum class Kind {
@@ -32,6 +32,12 @@ public:
         rec2020,
         /// A pure power law v^(1/γ).
         gamma,
+        /// SMPTE ST 2084 (PQ, ITU-R BT.2100-2 Table 4) with irid's display-light scale, linear
+        /// 1.0 = 100 cd/m²: encode(v) = pq_encode(100 v) (irid/color/hdr_transfer.h). PQ's signal
+        /// holds 0 to 10000 cd/m² and nothing else, so linear values are clamped to [0, 100]
+        /// (a negative one encodes as 0 cd/m², whose signal is 7.3e-7, not 0) and signals to
+        /// [0, 1]; NaN encodes as 0 cd/m². The round trip is exact within [0, 100] only.
+        pq,
         /// ICC.1:2022 §10.18 parametricCurveType in its general form (function type 4): the
         /// decoding is (a e + b)^g + ec for e >= d, else c e + f. Types 0-3 are special cases
         /// of it (see parametric()).
@@ -68,7 +74,7 @@ public:
     [[nodiscard]] Kind kind() const noexcept { return m_kind; }
     [[nodiscard]] double gamma() const noexcept { return m_gamma; }
     /// The curve as an ICC parametric curve of type 4, (g, a, b, c, d, e, f): exact for every
-    /// kind but sampled (for which it is empty). sRGB: g 2.4, a 1/1.055, b 0.055/1.055,
+    /// kind but sampled and pq (for which it is empty). sRGB: g 2.4, a 1/1.055, b 0.055/1.055,
     /// c 1/12.92, d 12.92 × 0.0031308; BT.709/BT.2020: g 1/0.45, a 1/α, b (α−1)/α, c 1/4.5,
     /// d 4.5 β; gamma γ: g γ, a 1; linear: g 1, a 1.
     [[nodiscard]] std::optional<Parameters> parameters() const noexcept;
@@ -152,10 +158,37 @@ private:
 /// ACEScg: AP1 primaries, the ACES white, linear (Academy S-2014-004). Named "acescg".
 [[nodiscard]] const RgbSpace& acescg();
 
-/// Every built-in space, in a stable order (the order of the names in messages).
+// The display encodings: how a display's signal is written to a file, for the display
+// transforms (irid/gamut/display_transform.h). Their linear values are display light with
+// 1.0 = 100 cd/m². They are named spaces like the ones above (convert, clip and Python take
+// them) but not working spaces: builtin_rgb_spaces() leaves them out.
+
+/// ITU-R BT.1886: BT.709 primaries, D65, the reference EOTF with a black of 0, L = V^2.4
+/// (BT.1886 Annex 1 with L_B = 0). Named "rec1886".
+[[nodiscard]] const RgbSpace& rec1886();
+/// ITU-R BT.1886 on the BT.2020 primaries (OpenColorIO's "Rec.1886 Rec.2020 - Display"): D65,
+/// γ = 2.4. Named "rec1886-rec2020".
+[[nodiscard]] const RgbSpace& rec1886_rec2020();
+/// SMPTE RP 431-2 / EG 432-1 "P3-D65" for projection: P3 primaries, D65, γ = 2.6 (RP 431-2
+/// §7.1's decoding gamma). Named "p3-d65".
+[[nodiscard]] const RgbSpace& p3_d65();
+/// ITU-R BT.2100-2 PQ: BT.2020 primaries, D65, ST 2084 (TransferFunction::Kind::pq). Named
+/// "rec2100-pq".
+[[nodiscard]] const RgbSpace& rec2100_pq();
+/// P3 primaries, D65, ST 2084: the HDR mastering display of SMPTE ST 2084 with P3-D65 (as
+/// OpenColorIO's "ST2084-P3-D65 - Display"). Named "p3-d65-pq".
+[[nodiscard]] const RgbSpace& p3_d65_pq();
+
+/// Every built-in working space, in a stable order (the order of the names in messages).
 [[nodiscard]] std::span<const RgbSpace* const> builtin_rgb_spaces();
+/// The display encodings, in a stable order: rec1886, rec1886-rec2020, p3-d65, rec2100-pq,
+/// p3-d65-pq.
+[[nodiscard]] std::span<const RgbSpace* const> display_rgb_spaces();
+/// The names of the working spaces and then of the display encodings (the names
+/// find_rgb_space knows), in that stable order.
+[[nodiscard]] std::vector<std::string> rgb_space_names();
 /// The built-in space with this name ("srgb", "display-p3", "rec2020", "adobe-rgb",
-/// "smpte-c", "ntsc1953", "aces2065-1", "acescg"), or nullptr.
+/// "smpte-c", "ntsc1953", "aces2065-1", "acescg", or a display encoding), or nullptr.
 [[nodiscard]] const RgbSpace* find_rgb_space(std::string_view name) noexcept;
 
 }  // namespace irid
