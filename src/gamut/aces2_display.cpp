@@ -1,5 +1,7 @@
 // The built-in ACES 2.0 displays and the chain around the rendering (aces2_display.h).
 
+#include <irid/color/illuminant.h>
+#include <irid/color/numeric_table.h>
 #include <irid/error.h>
 #include <irid/gamut/aces2_display.h>
 #include <irid/text_input.h>
@@ -9,6 +11,9 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
+#include <cmath>
+#include <optional>
 
 namespace irid {
 namespace {
@@ -65,16 +70,142 @@ std::vector<Aces2DisplaySpec> build_displays() {
 
 constexpr std::string_view ocio_prefix = "aces-output - aces2065-1_to_cie-xyz-d65 - ";
 constexpr std::string_view ocio_suffix = "_2.0";
+constexpr std::string_view custom_prefix = "custom:";
+constexpr std::string_view custom_form = "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz]";
+
+const RgbSpace& custom_space(std::string_view value, const char* key) {
+    if (const RgbSpace* s = find_rgb_space(value)) return *s;
+    std::vector<std::string> valid = rgb_space_names();
+    throw UnknownNameError(fmt::format("custom display: unknown {} space {}; valid: {}", key,
+                                       quote_untrusted(value, 40), fmt::join(valid, ", ")),
+                           valid);
+}
+
+Xy custom_white(std::string_view value) {
+    if (value == "aces") return d60;
+    std::string text(value);
+    std::replace(text.begin(), text.end(), ':', ',');
+    try {
+        return white_point_xy(text);
+    } catch (const Error& e) {
+        throw Error(std::string("custom display: white: ") + e.what() + "; or aces, or x:y");
+    }
+}
+
+/// The custom form (see aces2_display), lower case without its prefix.
+Aces2DisplaySpec parse_custom(std::string_view name, std::string_view body) {
+    std::optional<double> peak;
+    const RgbSpace* limiting = nullptr;
+    const RgbSpace* encoding = nullptr;
+    bool encoding_xyz = false;
+    std::optional<Xy> white;
+    std::vector<std::string_view> seen;
+    for (std::string_view rest = body; !rest.empty();) {
+        const std::size_t comma = rest.find(',');
+        const std::string_view item = rest.substr(0, comma);
+        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+        const std::size_t eq = item.find('=');
+        if (eq == std::string_view::npos || eq == 0) {
+            throw Error(fmt::format("custom display {}: {} is not key=value; the form is {}", quote_untrusted(name, 80),
+                                    quote_untrusted(item, 40), custom_form));
+        }
+        const std::string_view key = item.substr(0, eq), value = item.substr(eq + 1);
+        if (std::find(seen.begin(), seen.end(), key) != seen.end())
+            throw Error(fmt::format("custom display: {} is given twice", quote_untrusted(key, 20)));
+        seen.push_back(key);
+        if (key == "peak") {
+            double v = 0.0;
+            const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+            if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v))
+                throw Error(fmt::format("custom display: peak {} is not a number", quote_untrusted(value, 40)));
+            peak = v;
+        } else if (key == "limiting") {
+            limiting = &custom_space(value, "limiting");
+        } else if (key == "encoding") {
+            if (value == "xyz") {
+                encoding_xyz = true;
+            } else {
+                encoding = &custom_space(value, "encoding");
+            }
+        } else if (key == "white") {
+            white = custom_white(value);
+        } else {
+            throw Error(fmt::format("custom display: unknown key {}; the form is {}", quote_untrusted(key, 20),
+                                    custom_form));
+        }
+    }
+    if (!peak || limiting == nullptr)
+        throw Error(fmt::format("custom display {} needs peak and limiting; the form is {}", quote_untrusted(name, 80),
+                                custom_form));
+    if (encoding == nullptr && !encoding_xyz) encoding = limiting;
+    return custom_aces2_display(*peak, *limiting, white.value_or(limiting->white()), encoding);
+}
 
 }  // namespace
+
+Aces2DisplaySpec custom_aces2_display(double peak_nits, const RgbSpace& limiting, const Xy& limiting_white,
+                                      const RgbSpace* encoding) {
+    if (!(peak_nits >= 100.0 && peak_nits <= 10000.0)) {
+        throw Error(fmt::format("custom display: peak {} cd/m² is outside 100 to 10000, the ACES 2.0 "
+                                "rendering's range",
+                                format_shortest(peak_nits)));
+    }
+    (void)rgb_to_xyz_matrix(limiting.primaries(), limiting_white);  // the white inside the primaries
+    Aces2DisplaySpec d;
+    d.name = fmt::format("custom:peak={},limiting={}", format_shortest(peak_nits), limiting.name());
+    if (limiting_white.x != limiting.white().x || limiting_white.y != limiting.white().y)
+        d.name += fmt::format(",white={}:{}", format_shortest(limiting_white.x), format_shortest(limiting_white.y));
+    d.name += ",encoding=" + (encoding != nullptr ? encoding->name() : std::string("xyz"));
+    d.peak_nits = peak_nits;
+    d.limiting = limiting.primaries();
+    d.limiting_white = limiting_white;
+    if (encoding != nullptr) {
+        d.encoding = encoding->primaries();
+        d.encoding_white = encoding->white();
+    } else {
+        d.encoding_xyz = true;
+    }
+    return d;
+}
 
 std::span<const Aces2DisplaySpec> aces2_displays() {
     static const std::vector<Aces2DisplaySpec> displays = build_displays();
     return displays;
 }
 
-const Aces2DisplaySpec& aces2_display(std::string_view name) {
+const RgbSpace* default_display_encoding(const Aces2DisplaySpec& spec) noexcept {
+    if (spec.encoding_xyz) return nullptr;
+    const auto same = [&](const RgbSpace& s) {
+        const auto near = [](const Xy& a, const Xy& b) { return std::abs(a.x - b.x) < 1e-4 && std::abs(a.y - b.y) < 1e-4; };
+        return near(spec.encoding.red, s.primaries().red) && near(spec.encoding.green, s.primaries().green) &&
+               near(spec.encoding.blue, s.primaries().blue) && near(spec.encoding_white, s.white());
+    };
+    const bool hdr = spec.peak_nits * spec.linear_scale > 100.0;
+    if (hdr) {
+        if (same(p3_d65_pq())) return &p3_d65_pq();
+        // BT.2100's container holds any D65 gamut inside BT.2020's triangle (Rec.709 too).
+        const RgbSpace& bt2100 = rec2100_pq();
+        const auto inside = [&](const Xy& c) {
+            const Mat3& to_rgb = bt2100.from_xyz_matrix();
+            const Vec3 rgb = to_rgb * Vec3{c.x / c.y, 1.0, (1.0 - c.x - c.y) / c.y};
+            return rgb[0] >= -1e-9 && rgb[1] >= -1e-9 && rgb[2] >= -1e-9;
+        };
+        const bool d65 = std::abs(spec.encoding_white.x - d65_xy.x) < 1e-4 &&
+                         std::abs(spec.encoding_white.y - d65_xy.y) < 1e-4;
+        if (d65 && inside(spec.encoding.red) && inside(spec.encoding.green) && inside(spec.encoding.blue))
+            return &bt2100;
+        return nullptr;
+    }
+    for (const RgbSpace* s : {&srgb(), &display_p3(), &rec1886_rec2020()})
+        if (same(*s)) return s;
+    for (const RgbSpace* s : builtin_rgb_spaces())
+        if (same(*s)) return s;
+    return nullptr;
+}
+
+Aces2DisplaySpec aces2_display(std::string_view name) {
     std::string key = ascii_lower(name);
+    if (key.starts_with(custom_prefix)) return parse_custom(name, std::string_view(key).substr(custom_prefix.size()));
     if (key.starts_with(ocio_prefix) && key.ends_with(ocio_suffix))
         key = key.substr(ocio_prefix.size(), key.size() - ocio_prefix.size() - ocio_suffix.size());
     for (const Aces2DisplaySpec& d : aces2_displays())

@@ -11,6 +11,8 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <random>
+#include <utility>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -165,9 +167,9 @@ TEST(Aces2Display, EveryBuiltInChainMatchesOpenColorIO) {
 }
 
 TEST(Aces2Display, NamesAreShortOrOpenColorIOsAndUnknownOnesListTheKnown) {
-    EXPECT_EQ(&aces2_display("sdr-100nit-rec709"), &aces2_displays()[0]);
-    EXPECT_EQ(&aces2_display("ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - SDR-100nit-REC709_2.0"),
-              &aces2_displays()[0]);
+    EXPECT_EQ(aces2_display("sdr-100nit-rec709").name, aces2_displays()[0].name);
+    EXPECT_EQ(aces2_display("ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - SDR-100nit-REC709_2.0").name,
+              aces2_displays()[0].name);
     EXPECT_EQ(aces2_display("HDR-1000nit-P3-D65").peak_nits, 1000.0);
     try {
         (void)aces2_display("hdr-9000nit-p3");
@@ -176,6 +178,96 @@ TEST(Aces2Display, NamesAreShortOrOpenColorIOsAndUnknownOnesListTheKnown) {
         EXPECT_NE(std::string(e.what()).find("hdr-9000nit-p3"), std::string::npos);
         EXPECT_NE(std::string(e.what()).find("sdr-100nit-rec709"), std::string::npos);
     }
+}
+
+TEST(Aces2Display, ACustomDisplayOfABuiltInOnesPartsIsThatDisplay) {
+    const std::pair<const char*, const char*> pairs[] = {
+        {"custom:peak=1000,limiting=display-p3,encoding=display-p3", "hdr-1000nit-p3-d65"},
+        {"CUSTOM:peak=1000,limiting=display-p3", "hdr-1000nit-p3-d65"},
+        {"custom:peak=100,limiting=srgb,white=aces,encoding=rec2020", "sdr-100nit-rec709-d60-in-rec2020-d65"},
+        {"custom:encoding=rec2100-pq,white=0.32168:0.33767,peak=4000,limiting=rec2020",
+         "hdr-4000nit-rec2020-d60-in-rec2020-d65"},
+    };
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> scene(-0.5, 64.0);
+    for (const auto& [custom, builtin] : pairs) {
+        const Aces2Output a(aces2_display(custom)), b(aces2_display(builtin));
+        EXPECT_EQ(a.output_scale(), b.output_scale()) << custom;
+        for (int i = 0; i < 200; ++i) {
+            const Vec3 aces{scene(rng), scene(rng), scene(rng)};
+            const Xyz x = a.forward(aces), y = b.forward(aces);
+            ASSERT_EQ(x.X, y.X) << custom;
+            ASSERT_EQ(x.Y, y.Y) << custom;
+            ASSERT_EQ(x.Z, y.Z) << custom;
+        }
+    }
+    // Its name is the form it reads, normalised.
+    EXPECT_EQ(aces2_display("custom:limiting=srgb,peak=600").name, "custom:peak=600,limiting=srgb,encoding=srgb");
+    EXPECT_EQ(aces2_display("custom:peak=600,limiting=srgb,encoding=xyz").encoding_xyz, true);
+}
+
+TEST(Aces2Display, AMalformedCustomDisplaySaysWhatIsWrong) {
+    const std::pair<const char*, const char*> bad[] = {
+        {"custom:peak=50,limiting=srgb", "100 to 10000"},
+        {"custom:peak=20000,limiting=srgb", "100 to 10000"},
+        {"custom:peak=nan,limiting=srgb", "not a number"},
+        {"custom:peak=1e400,limiting=srgb", "not a number"},
+        {"custom:peak=,limiting=srgb", "not a number"},
+        {"custom:limiting=srgb", "needs peak and limiting"},
+        {"custom:", "needs peak and limiting"},
+        {"custom:peak=100", "needs peak and limiting"},
+        {"custom:peak=100,limiting=srgb,gamma=2", "unknown key"},
+        {"custom:peak=100,limiting=srgb,peak=200", "twice"},
+        {"custom:peak=100,,limiting=srgb", "not key=value"},
+        {"custom:peak=100,limiting=srgb,white=blue", "white"},
+        {"custom:peak=100,limiting=srgb,white=0.9:0.9", "white"},
+    };
+    for (const auto& [name, expected] : bad) {
+        try {
+            (void)aces2_display(name);
+            ADD_FAILURE() << name << ": no error";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << name << ": " << e.what();
+        }
+    }
+    try {
+        (void)aces2_display("custom:peak=100,limiting=srgbx");
+        ADD_FAILURE() << "no error";
+    } catch (const UnknownNameError& e) {
+        EXPECT_NE(std::string(e.what()).find("srgbx"), std::string::npos);
+        EXPECT_NE(std::find(e.valid().begin(), e.valid().end(), "rec2100-pq"), e.valid().end());
+    }
+}
+
+TEST(Aces2Display, EachDisplayHasTheFileEncodingItsSignalNeeds) {
+    EXPECT_EQ(default_display_encoding(aces2_display("sdr-100nit-rec709")), &srgb());
+    EXPECT_EQ(default_display_encoding(aces2_display("sdr-100nit-p3-d65")), &display_p3());
+    EXPECT_EQ(default_display_encoding(aces2_display("sdr-100nit-rec709-d60-in-rec2020-d65")), &rec1886_rec2020());
+    EXPECT_EQ(default_display_encoding(aces2_display("hdr-108nit-p3-d65")), &p3_d65_pq());
+    EXPECT_EQ(default_display_encoding(aces2_display("hdr-1000nit-rec2020")), &rec2100_pq());
+    EXPECT_EQ(default_display_encoding(aces2_display("hdr-500nit-p3-d60-in-rec2020-d65")), &rec2100_pq());
+    EXPECT_EQ(default_display_encoding(aces2_display("custom:peak=100,limiting=adobe-rgb")), &adobe_rgb());
+    EXPECT_EQ(default_display_encoding(aces2_display("custom:peak=1000,limiting=adobe-rgb")), &rec2100_pq());
+    EXPECT_EQ(default_display_encoding(aces2_display("custom:peak=1000,limiting=srgb")), &rec2100_pq());
+    // AP1's green lies outside BT.2020, and the ACES white is not D65.
+    EXPECT_EQ(default_display_encoding(aces2_display("custom:peak=1000,limiting=acescg,white=d65")), nullptr);
+    EXPECT_EQ(default_display_encoding(aces2_display("custom:peak=1000,limiting=display-p3,white=aces,encoding=acescg")),
+              nullptr);
+    int xyz = 0;
+    for (const Aces2DisplaySpec& d : aces2_displays()) {
+        const RgbSpace* e = default_display_encoding(d);
+        if (d.encoding_xyz) {
+            EXPECT_EQ(e, nullptr) << d.name;
+            ++xyz;
+            continue;
+        }
+        ASSERT_NE(e, nullptr) << d.name;
+        // PQ exactly for the displays above 100 cd/m²; the encoding's primaries and white.
+        EXPECT_EQ(e->transfer().kind() == TransferFunction::Kind::pq, d.peak_nits * d.linear_scale > 100.0) << d.name;
+        EXPECT_NEAR(e->primaries().red.x, d.encoding.red.x, 1e-12) << d.name;
+        EXPECT_NEAR(e->white().x, d.encoding_white.x, 1e-12) << d.name;
+    }
+    EXPECT_EQ(xyz, 2);
 }
 
 TEST(Aces2Display, WhiteIsTheDisplaysAndTheChainStaysInsideIt) {

@@ -47,9 +47,27 @@ struct Aces2DisplaySpec {
 /// The 31 built-in displays of OpenColorIO 2.4+, in its order.
 [[nodiscard]] std::span<const Aces2DisplaySpec> aces2_displays();
 
-/// The display of a name: the short name or the full OCIO style, in any case. Throws
-/// irid::Error listing the short names for an unknown one.
-[[nodiscard]] const Aces2DisplaySpec& aces2_display(std::string_view name);
+/// A display of one's own: the rendering for `peak_nits` (100 to 10000) within the limiting
+/// primaries and white, shown in the encoding's primaries and white (CIE XYZ when `encoding` is
+/// nullptr), the white scaled into the encoding gamut as the built-in displays do. Named in the
+/// form aces2_display() reads. Throws irid::Error for a peak out of range.
+[[nodiscard]] Aces2DisplaySpec custom_aces2_display(double peak_nits, const RgbSpace& limiting,
+                                                    const Xy& limiting_white, const RgbSpace* encoding);
+
+/// The display of a name: a built-in one by its short name or the full OCIO style, in any case;
+/// or a custom one, "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz]" with the
+/// spaces named as irid/color/rgb.h names them, the limiting white W (default the limiting
+/// space's) a name of white_point_xy, "aces" (the ACES white) or "x:y", and the encoding
+/// defaulting to the limiting space. Throws irid::UnknownNameError listing the names for an
+/// unknown display or space, irid::Error for a malformed custom form or a peak out of range.
+[[nodiscard]] Aces2DisplaySpec aces2_display(std::string_view name);
+
+/// The display encoding (irid/color/rgb.h) a file of the display's signal is written in unless
+/// one is named: above 100 cd/m² (nominal) PQ, p3-d65-pq for P3-D65 and else rec2100-pq for any
+/// D65 encoding gamut inside BT.2020's; at 100 cd/m² srgb for BT.709, display-p3 for P3-D65,
+/// rec1886-rec2020 for BT.2020, else the built-in space of the encoding's primaries and white.
+/// nullptr when none fits (CIE XYZ, or other primaries).
+[[nodiscard]] const RgbSpace* default_display_encoding(const Aces2DisplaySpec& spec) noexcept;
 
 /// The whole chain for one display; its tables are built at construction.
 class Aces2Output {
