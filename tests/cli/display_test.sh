@@ -62,6 +62,37 @@ expect_stdout_has "display,peak_nits,limiting_primaries,limiting_white,encoding_
 expect_stdout_has "hdr-108nit-p3-d65,108,0.68 0.32 0.265 0.69 0.15 0.06,0.3127 0.329,"
 expect_stdout_has "sdr-100nit-p3-d60-in-xyz-e,100,0.68 0.32 0.265 0.69 0.15 0.06,0.32168 0.33767,CIE XYZ,E,1"
 
+expect_stdout_has ",linear_scale,file_encoding"
+expect_stdout_has ",1,srgb"
+expect_stdout_has "hdr-1000nit-rec2020,1000,"
+expect_stdout_has ",1,rec2100-pq"
+expect_stdout_has ",0.48,p3-d65-pq"
+expect_stdout_has ",CIE XYZ,E,1,none"
+
+# --- the display encodings are spaces of irid convert: PQ of 100 cd/m² (linear 1) is 0.50808 ----
+run $'1,1,1\n0,0,0\n100,100,100\n' convert --from rec2100-pq-linear --to rec2100-pq
+expect_status 0
+expect_stdout_has "0.50807"
+expect_stdout_has $'\n1,1,1'
+run $'0.5,0.5,0.5\n' convert --from rec1886 --to rec1886-linear
+expect_close "0.18946457081379978,0.18946457081379978,0.18946457081379978" 1e-12
+
+# --- a custom display: the built-in one it repeats ------------------------------------------------
+run $'0.5,0.4,0.3\n' display --display custom:peak=1000,limiting=display-p3
+expect_status 0
+custom=$(cat "$TMP/out")
+run $'0.5,0.4,0.3\n' display --display hdr-1000nit-p3-d65
+if [[ "$(cat "$TMP/out")" == "$custom" ]]; then pass; else fail "custom display equals its built-in" "$custom"; fi
+run $'0.5,0.4,0.3\n' display --display custom:peak=50,limiting=srgb
+expect_status 2
+expect_stderr_has "100 to 10000"
+run $'0.5,0.4,0.3\n' display --display custom:peak=500,limiting=nonsense
+expect_status 2
+expect_stderr_has "rec2100-pq"
+run $'0.5,0.4,0.3\n' display --display sdr-100nit-rec709 --bits 16
+expect_status 2
+expect_stderr_has "--bits"
+
 # --- usage errors (2) and bad data (1) ---------------------------------------------------------
 run $'1,1,1\n' display --display hdr-9000nit-p3
 expect_status 2

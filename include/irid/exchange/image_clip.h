@@ -1,37 +1,18 @@
 #pragma once
 
-// Clipping an image's colours (what `irid clip IN OUT` does between reading and writing): the
-// colour channels found by name, alpha handled, every other channel left as it was.
-//
-// - Colour channels: R, G and B by name; else X, Y and Z (a CIE XYZ image, whose pipeline must
-//   then start from xyz).
-// - Alpha: an EXR's colour is premultiplied by alpha (associated alpha, the OpenEXR
-//   convention), a PNG's or TIFF's is not. The colour is clipped unpremultiplied and
-//   premultiplied again only for an EXR output; a fully transparent pixel keeps its values on
-//   the way in (light added without covering), and a transparent EXR pixel is not multiplied by
-//   its alpha of 0 on the way out.
-// - The pipeline's float path (irid/gamut/pipeline.h): conversion, the batch kernels, and the
-//   destination's transfer function when the output is an integer file.
+// Clipping an image's colours (what `irid clip IN OUT` does between reading and writing),
+// through change_image_colours (irid/exchange/image_colours.h: the channels by name, alpha), with
+// the pipeline's float path (irid/gamut/pipeline.h): conversion, the batch kernels, and the
+// destination's transfer function when the output is an integer file.
 
 #include <irid/exchange/icc.h>
+#include <irid/exchange/image_colours.h>
 #include <irid/gamut/pipeline.h>
 #include <irid/io/image.h>
 
-#include <array>
 #include <string>
 
 namespace irid {
-
-/// Where an image's colour channels are and what they hold.
-struct ImageColourChannels {
-    std::array<int, 3> index{};
-    /// X, Y and Z channels: the image is CIE XYZ.
-    bool xyz = false;
-};
-
-/// R, G and B by name, else X, Y and Z; throws irid::Error naming `what` (the file) and the
-/// channels it has otherwise.
-[[nodiscard]] ImageColourChannels image_colour_channels(const io::Image& image, const std::string& what);
 
 struct ImageClipOptions {
     /// The input's colour is premultiplied by its "A" channel (an EXR with alpha).
