@@ -261,17 +261,26 @@ GalleryResult make_gallery(const GalleryOptions& o) {
             "<h2>From scene light to a display</h2>\n<p>The oil slick at {}×{}, {} samples per "
             "pixel, under the Preetham–Shirley–Smits daylight sky: with the thesis' path "
             "(<code>render.view = thesis</code>: the gamut clip alone, so every luminance above "
-            "the display's white becomes white) and with the default view, which first rolls "
+            "the display's white becomes white); with the default view, which first rolls "
             "the highlights off on luminance (the identity up to the knee, Reinhard et al. 2002's "
-            "L/(1 + L) above it) and then clips the chroma that is left outside the gamut. The "
+            "L/(1 + L) above it) and then clips the chroma that is left outside the gamut; and "
+            "through the ACES 2.0 Output Transform for an SDR Rec.709 display "
+            "(<code>render.view = aces2</code>, <code>sdr-100nit-rec709</code>), whose tonescale "
+            "shows 18 % grey at 10 cd/m² where the others show it at 18, and whose highlights "
+            "desaturate toward white. The same exposure for all three. The "
             "numbers are the share of pixels stored as 255 in all three channels and the brightest "
-            "scene luminance (white = 1); below each image, the brightest glint at 4× (nearest "
-            "neighbour).</p>\n<div class=\"pair\">\n",
+            "scene luminance (white = 1); below the images, the brightest glint of each at 4× "
+            "(nearest neighbour).</p>\n<div class=\"pair\">\n",
             vw, vh, o.spp));
         constexpr int zoom = 4;
         const int gw = std::max(8, vw / 4), gh = std::max(6, vh / 4);
         int glint_x = 0, glint_y = 0;
-        for (const char* view : {"thesis", "rolloff"}) {
+        struct Glint {
+            io::Image part;
+            std::string file, title;
+        };
+        std::vector<Glint> glints;
+        for (const char* view : {"thesis", "rolloff", "aces2"}) {
             std::vector<std::string> set = size_overrides(vw, vh, o.spp);
             set.push_back(fmt::format("render.view={}", view));
             const render::RenderResult r = render::render(render::load_scene("oil-slick", set), ropt);
@@ -289,20 +298,24 @@ GalleryResult make_gallery(const GalleryOptions& o) {
             }
             const std::string file = fmt::format("oil-slick-view-{}.png", view);
             io::write_image(dir / file, r.display);
-            const std::string title =
-                std::string(view) == "thesis" ? "render.view = thesis (clip only)"
-                                              : "render.view = rolloff (the default)";
+            const std::string title = std::string(view) == "thesis"    ? "render.view = thesis (clip only)"
+                                      : std::string(view) == "rolloff" ? "render.view = rolloff (the default)"
+                                                                       : "render.view = aces2 (ACES 2.0, SDR Rec.709)";
             page.image(file, vw, vh, title, "", title,
                        fmt::format("<code>irid render oil-slick --set render.view={}</code>", view),
                        {{"clipped white", format_number(100.0 * static_cast<double>(white) /
                                                             static_cast<double>(r.display.pixel_count()),
                                                         3) + " %"},
                         {"brightest scene Y", format_number(brightest, 3)}});
-            const std::string glint = fmt::format("oil-slick-view-{}-glint.png", view);
-            const io::Image part = crop(r.display, glint_x - gw / 2, glint_y - gh / 2, gw, gh);
-            io::write_image(dir / glint, magnify(part, zoom));
-            page.image(glint, part.width * zoom, part.height * zoom, title + ", the glint", "",
-                       title + ", the glint", "The brightest glint of the image above, 4×.", {});
+            glints.push_back({crop(r.display, glint_x - gw / 2, glint_y - gh / 2, gw, gh),
+                              fmt::format("oil-slick-view-{}-glint.png", view), title});
+        }
+        // The glints in a row of their own, each below its view.
+        page.add("</div>\n<div class=\"pair\">\n");
+        for (const Glint& g : glints) {
+            io::write_image(dir / g.file, magnify(g.part, zoom));
+            page.image(g.file, g.part.width * zoom, g.part.height * zoom, g.title + ", the glint", "",
+                       g.title + ", the glint", "The brightest glint of the image above, 4×.", {});
         }
         page.add("</div>\n");
     }

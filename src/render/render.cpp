@@ -10,10 +10,12 @@
 #include <irid/error.h>
 #include <irid/gamut/batch.h>
 #include <irid/gamut/clip.h>
+#include <irid/gamut/display_transform.h>
 #include <irid/gamut/tone.h>
 #include <irid/render/render.h>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -328,10 +330,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         throw Error(fmt::format("render: threads is {}; it must be >= 0", options.threads));
     const RgbSpace* space = find_rgb_space(scene.render.space);
     if (!space) {
-        std::string names;
-        for (const RgbSpace* s : builtin_rgb_spaces()) names += (names.empty() ? "" : ", ") + s->name();
         throw Error(fmt::format("{}: 'render.space' is \"{}\"; allowed: {}", scene.source,
-                                scene.render.space, names));
+                                scene.render.space, fmt::join(rgb_space_names(), ", ")));
     }
     const ClipMethod method = scene.render.clip;
 
@@ -436,16 +436,27 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             for (int k = 0; k < 3; ++k) rgb[3 * i + k] = static_cast<float>(rgb[3 * i + k] * f);
         }
     }
-    // The displayed image must fit the display: aces-rgc with its final clip, as irid clip
-    // does for images.
-    const GamutClipper clipper(method, Gamut(*space, 1.0), display_clip_settings(method));
-    arena.execute([&] { clip_batch(clipper, rgb, BatchOptions{threads}); });
     result.display = io::Image::blank(W, H, 3);
     result.display.color_space = space->name();
-    const TransferFunction& transfer = space->transfer();
-    for (std::size_t i = 0; i < rgb.size(); ++i)
-        result.display.pixels[i] =
-            static_cast<float>(std::clamp(transfer.encode(std::clamp<double>(rgb[i], 0.0, 1.0)), 0.0, 1.0));
+    if (scene.render.view == ViewTransform::aces2) {
+        // The scene's XYZ (D65 white) through the ACES 2.0 chain to the display's signal,
+        // encoded; the transform keeps it inside the display, so no gamut method follows.
+        const DisplayTransform view(DisplayTransformOptions{
+            .view = "aces2", .display = scene.render.display, .source = "xyz", .target = space->name()});
+        std::vector<float> signal = result.xyz.pixels;
+        arena.execute([&] { view.apply(signal, signal, threads); });
+        for (std::size_t i = 0; i < signal.size(); ++i)
+            result.display.pixels[i] = std::clamp(signal[i], 0.0f, 1.0f);
+    } else {
+        // The displayed image must fit the display: aces-rgc with its final clip, as irid clip
+        // does for images.
+        const GamutClipper clipper(method, Gamut(*space, 1.0), display_clip_settings(method));
+        arena.execute([&] { clip_batch(clipper, rgb, BatchOptions{threads}); });
+        const TransferFunction& transfer = space->transfer();
+        for (std::size_t i = 0; i < rgb.size(); ++i)
+            result.display.pixels[i] =
+                static_cast<float>(std::clamp(transfer.encode(std::clamp<double>(rgb[i], 0.0, 1.0)), 0.0, 1.0));
+    }
 
     result.stats.camera_rays = static_cast<std::uint64_t>(W) * H * spp;
     for (const auto r : tile_rays) result.stats.rays += r;

@@ -1,6 +1,7 @@
 // Scene files: JSON → Scene, every value checked once with its key path and allowed range.
 #include <irid/color/rgb.h>
 #include <irid/error.h>
+#include <irid/gamut/aces2_display.h>
 #include <irid/gamut/clip.h>
 #include <irid/gamut/tone.h>
 #include <irid/optics/material.h>
@@ -88,12 +89,21 @@ std::string_view color_path_name(ColorPath path) noexcept {
     return "table";
 }
 
+std::string_view view_transform_name(ViewTransform view) noexcept {
+    switch (view) {
+        case ViewTransform::rolloff: return "rolloff";
+        case ViewTransform::thesis: return "thesis";
+        case ViewTransform::aces2: return "aces2";
+    }
+    return "rolloff";
+}
+
 namespace {
 
 void read_render(const Json& j, const std::string& source, RenderParams& p) {
     ObjectReader r(j, "render", source,
                    {"path", "optics", "antialias", "max_depth", "seed", "space", "clip",
-                    "exposure", "view", "rolloff_knee", "filter_radius", "filter_sigma"});
+                    "exposure", "view", "rolloff_knee", "display", "filter_radius", "filter_sigma"});
     r.choice("path", p.path,
              {{"table", ColorPath::table}, {"spectral", ColorPath::spectral}, {"fourier", ColorPath::fourier}});
     r.choice("optics", p.optics, {{"thesis", OpticsModel::thesis}, {"exact", OpticsModel::exact}});
@@ -108,11 +118,29 @@ void read_render(const Json& j, const std::string& source, RenderParams& p) {
             r.fail("render.seed", "must be an integer in [0, 18446744073709551615]");
         p.seed = v->get<std::uint64_t>();
     }
+    r.choice("view", p.view,
+             {{"rolloff", ViewTransform::rolloff}, {"thesis", ViewTransform::thesis}, {"aces2", ViewTransform::aces2}});
+    if (r.find("display") != nullptr) {
+        if (p.view != ViewTransform::aces2) r.fail("render.display", "applies to render.view \"aces2\" only");
+        r.text("display", p.display);
+    }
+    if (p.view == ViewTransform::aces2) {
+        try {
+            p.display = aces2_display(p.display).name;
+        } catch (const Error& e) {
+            r.fail("render.display", e.what());
+        }
+        if (r.find("space") == nullptr) {
+            const RgbSpace* encoding = default_display_encoding(aces2_display(p.display));
+            if (encoding == nullptr)
+                r.fail("render.display", fmt::format("\"{}\" has no RGB encoding of its own; set render.space",
+                                                     p.display));
+            p.space = encoding->name();
+        }
+    }
     r.text("space", p.space);
     if (!find_rgb_space(p.space)) {
-        std::vector<std::string> names;
-        for (const RgbSpace* s : builtin_rgb_spaces()) names.push_back(s->name());
-        r.fail("render.space", fmt::format("is \"{}\"; allowed: {}", p.space, fmt::join(names, ", ")));
+        r.fail("render.space", fmt::format("is \"{}\"; allowed: {}", p.space, fmt::join(rgb_space_names(), ", ")));
     }
     std::string clip(clip_method_name(p.clip));
     r.text("clip", clip);
@@ -122,7 +150,6 @@ void read_render(const Json& j, const std::string& source, RenderParams& p) {
         r.fail("render.clip", e.what());
     }
     r.number("exposure", p.exposure, 0.0, 1.0e3);
-    r.choice("view", p.view, {{"rolloff", ViewTransform::rolloff}, {"thesis", ViewTransform::thesis}});
     r.number("rolloff_knee", p.rolloff_knee, 0.0, HighlightRolloff::max_knee);
     r.number("filter_radius", p.filter_radius, 0.5, 4.0);
     r.number("filter_sigma", p.filter_sigma, 0.1, 4.0);

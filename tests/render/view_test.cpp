@@ -4,6 +4,8 @@
 #include <irid/color/rgb.h>
 #include <irid/gamut/batch.h>
 #include <irid/gamut/clip.h>
+#include <irid/gamut/display_transform.h>
+#include <irid/error.h>
 #include <irid/gamut/tone.h>
 #include <irid/render/render.h>
 #include <irid/render/scene.h>
@@ -208,6 +210,51 @@ TEST(ViewTransform, OilSlickKeepsItsColours) {
         for (int x = 0; x < 320; x += 4, ++sampled)
             saturated += hls_saturation(r.display, static_cast<std::size_t>(y) * 320 + x) > 0.25 ? 1 : 0;
     EXPECT_GE(saturated, sampled / 50) << saturated << " of " << sampled;
+}
+
+// The ACES 2.0 view: the same scene light, and a display that is the ACES 2.0 chain of the XYZ
+// image (itself checked against OpenColorIO in tests/gamut), encoded in the display's encoding.
+TEST(ViewTransform, Aces2ViewIsTheDisplayTransformOfTheXyzImage) {
+    for (const std::string& name : builtin_scene_names()) {
+        const RenderResult aces = render_at(name, 48, 36, {"render.view=aces2"});
+        const RenderResult rolled = render_at(name, 48, 36);
+        EXPECT_EQ(aces.linear.pixels, rolled.linear.pixels) << name;
+        EXPECT_EQ(aces.xyz.pixels, rolled.xyz.pixels) << name;
+        EXPECT_EQ(aces.display.color_space, "srgb") << name;
+        std::vector<float> expect = aces.xyz.pixels;
+        const DisplayTransform view(DisplayTransformOptions{
+            .view = "aces2", .display = "sdr-100nit-rec709", .source = "xyz", .target = "srgb"});
+        view.apply(expect, expect, 1);
+        for (float& v : expect) v = std::clamp(v, 0.0f, 1.0f);
+        EXPECT_EQ(aces.display.pixels, expect) << name;
+    }
+    // An HDR display: its PQ encoding by default, and nothing above its peak.
+    const RenderResult hdr = render_at("oil-slick", 48, 36, {"render.view=aces2", "render.display=hdr-1000nit-p3-d65"});
+    EXPECT_EQ(hdr.display.color_space, "p3-d65-pq");
+    const float peak = static_cast<float>(p3_d65_pq().transfer().encode(10.0));
+    EXPECT_LE(*std::max_element(hdr.display.pixels.begin(), hdr.display.pixels.end()), peak + 1e-6f);
+    EXPECT_GT(*std::max_element(hdr.display.pixels.begin(), hdr.display.pixels.end()), 0.6f);
+}
+
+TEST(ViewTransform, Aces2SceneKeysAreChecked) {
+    const auto message = [](std::vector<std::string> set) {
+        try {
+            (void)load_scene("oil-slick", set);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(message({"render.display=sdr-100nit-rec709"}).find("aces2"), std::string::npos);
+    EXPECT_NE(message({"render.view=aces2", "render.display=hdr-9000nit"}).find("sdr-100nit-rec709"),
+              std::string::npos);
+    EXPECT_NE(message({"render.view=aces2", "render.display=sdr-100nit-p3-d60-in-xyz-e"}).find("render.space"),
+              std::string::npos);
+    EXPECT_EQ(message({"render.view=aces2", "render.display=sdr-100nit-p3-d60-in-xyz-e", "render.space=display-p3"}),
+              "no error");
+    const Scene custom = load_scene("oil-slick", {"render.view=aces2", "render.display=CUSTOM:peak=600,limiting=srgb"});
+    EXPECT_EQ(custom.render.display, "custom:peak=600,limiting=srgb,encoding=srgb");
+    EXPECT_EQ(custom.render.space, "rec2100-pq");
 }
 
 }  // namespace

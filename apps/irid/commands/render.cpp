@@ -150,12 +150,16 @@ int run_render(const RenderCliOptions& o) {
                                      scene.image.spp,
                                      render::color_path_name(scene.render.path),
                                      scene.render.optics == render::OpticsModel::exact ? "exact" : "thesis",
-                                     scene.render.view == render::ViewTransform::thesis ? "thesis" : "rolloff",
+                                     scene.render.view == render::ViewTransform::aces2
+                                         ? "aces2 " + scene.render.display
+                                         : std::string(render::view_transform_name(scene.render.view)),
                                      clip_method_name(scene.render.clip));
     // Both files or neither: each is written whole under a temporary name beside its target,
     // and both are renamed into place only when both are complete.
     io::OutputFile main_file(out);
-    io::write_image(main_file, image);
+    // PQ's 8-bit steps are visible: a PQ display image is written with 16 bits.
+    const bool pq = space.transfer().kind() == TransferFunction::Kind::pq;
+    io::write_image(main_file, image, io::ImageEncoding{.bits = pq ? 16 : 8, .compression = {}});
     if (o.linear) {
         io::Image linear = result.linear;
         tag_image(linear, space, io::image_format_for(*o.linear));

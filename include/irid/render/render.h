@@ -43,8 +43,8 @@ struct RenderResult {
     /// transform and the clip ("R", "G", "B").
     io::Image linear;
     /// The displayed image: `linear` through the view transform (the roll-off, unless
-    /// render.view = thesis) and the clip, encoded with the destination space's transfer
-    /// function, in [0, 1].
+    /// render.view = thesis) and the clip, or `xyz` through the ACES 2.0 chain (render.view =
+    /// aces2), encoded with the destination space's transfer function, in [0, 1].
     io::Image display;
     /// CIE XYZ per pixel (relative, the D65 white at Y = 1, exposure applied), for comparisons.
     io::Image xyz;

@@ -53,8 +53,14 @@ enum class FilmAntialias { none, footprint };
 ///   up to `rolloff_knee`, Reinhard et al. 2002's L/(1 + L) above it, tending to white) → the
 ///   gamut method `clip` → the encoding;
 /// - thesis: exposure → the gamut method → the encoding, as the thesis does (every luminance
-///   above the display's white is clipped to it).
-enum class ViewTransform { rolloff, thesis };
+///   above the display's white is clipped to it);
+/// - aces2: exposure → ACES2065-1 (Bradford from D65) → the ACES 2.0 Output Transform for
+///   `display` (irid/gamut/display_transform.h, its own tonescale and gamut compression; no
+///   gamut method) → the encoding.
+enum class ViewTransform { rolloff, thesis, aces2 };
+
+/// "rolloff", "thesis", "aces2".
+[[nodiscard]] std::string_view view_transform_name(ViewTransform view) noexcept;
 
 /// The environment's sky when no environment image is given: the two-colour gradient, or the
 /// Preetham–Shirley–Smits daylight sky (irid/render/sky.h) with the sun's colour from the same
@@ -91,6 +97,9 @@ struct RenderParams {
     /// the roll-off is the identity).
     ViewTransform view = ViewTransform::rolloff;
     double rolloff_knee = 0.4;
+    /// The display of view aces2 (irid/gamut/aces2_display.h: a built-in name or a custom form).
+    /// With view aces2, `space` defaults to the display's encoding (default_display_encoding).
+    std::string display = "sdr-100nit-rec709";
     /// Gaussian reconstruction filter: radius in pixels and standard deviation in pixels.
     double filter_radius = 1.5;
     double filter_sigma = 0.5;
