@@ -20,9 +20,10 @@ std::array<T, 9> to_array(const Mat3& m) noexcept {
     return a;
 }
 
-/// Peaks above which the float forward computes its gamut compression and output stage in
-/// double: in float they reached 1.3e-5 of an output channel at 1000 cd/m² (docs/KERNELS.md).
-constexpr double precise_above_nits = 500.0;
+/// Peaks above which the float forward computes its tonescale, gamut compression and output
+/// stage in double: in float they reached 1.05e-5 of an output channel at 500 cd/m² and
+/// 1.3e-5 at 1000 (docs/KERNELS.md).
+constexpr double precise_above_nits = 250.0;
 
 }  // namespace
 

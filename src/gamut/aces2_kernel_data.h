@@ -43,8 +43,8 @@ struct Aces2Params {
     std::array<T, 361> reach{};
     std::array<Index, aces2_buckets> bucket_lo{};
     int bucket_steps = 0;  // the most hue entries in one bucket
-    /// The float forward's gamut compression and output stage in double (peaks above 500
-    /// cd/m²: docs/KERNELS.md).
+    /// The float forward's tonescale, gamut compression and output stage in double (peaks
+    /// above 250 cd/m²: docs/KERNELS.md).
     bool precise = false;
 };
 

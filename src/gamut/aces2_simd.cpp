@@ -356,62 +356,40 @@ HWY_INLINE std::array<V, N> InDouble(D d, const std::array<V, K>& in, const Fn& 
     return out;
 }
 
-/// The input (InClamped) to the model's A, a, b (the cone responses and the opponent matrix). In
-/// double when D is float: a and b are differences of the three responses, which cancel for all but
-/// the most saturated colours (in float the forward's M was off by up to 7e-4 and its hue by 0.02°,
-/// which moved outputs by up to 2.6e-5).
+/// The input (InClamped) to the model's achromatic A and opponent a, b (the cone responses and
+/// the opponent matrix).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void Aab(D d, const Params<D>& p, V x0, V x1, V x2, V& A, V& a, V& b) {
+    V r, g, bl, c0, c1, c2;
+    InClamped(d, p, x0, x1, x2, r, g, bl);
+    Mul3(d, p.to_cone, r, g, bl, c0, c1, c2);
+    Mul3(d, p.to_aab, Response(d, p, c0), Response(d, p, c1), Response(d, p, c2), A, a, b);
+}
+
+/// Aab and the Tonescale of A. The first in double when D is float: a and b are differences of the
+/// three responses, which cancel for all but the most saturated colours (in float the forward's
+/// M was off by up to 7e-4 and its hue by 0.02°, which moved outputs by up to 2.6e-5). The
+/// tonescale too when precise.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void ToAab(D d, const Params<D>& p, const detail::Aces2Params<double>& pd, V x0, V x1,
                       V x2, V& A, V& a, V& bb, V& a_ts, V& j_ts, V& flag) {
     if constexpr (sizeof(hn::TFromD<D>) == 8) {
         (void)pd;
-        V r, g, b, c0, c1, c2;
-        InClamped(d, p, x0, x1, x2, r, g, b);
-        Mul3(d, p.to_cone, r, g, b, c0, c1, c2);
-        Mul3(d, p.to_aab, Response(d, p, c0), Response(d, p, c1), Response(d, p, c2), A, a, bb);
+        Aab(d, p, x0, x1, x2, A, a, bb);
         Tonescale(d, p, A, a_ts, j_ts, flag);
     } else {
-        (void)p;
         const auto o = InDouble<6>(d, std::array<V, 3>{x0, x1, x2}, [&](auto dd, const auto& x) {
-            using VD = hn::Vec<decltype(dd)>;
-            VD r, g, b, c0, c1, c2;
-            std::array<VD, 6> y;
-            InClamped(dd, pd, x[0], x[1], x[2], r, g, b);
-            Mul3(dd, pd.to_cone, r, g, b, c0, c1, c2);
-            Mul3(dd, pd.to_aab, Response(dd, pd, c0), Response(dd, pd, c1), Response(dd, pd, c2),
-                 y[0], y[1], y[2]);
-            Tonescale(dd, pd, y[0], y[3], y[4], y[5]);
+            std::array<hn::Vec<decltype(dd)>, 6> y;
+            Aab(dd, pd, x[0], x[1], x[2], y[0], y[1], y[2]);
+            if (pd.precise) Tonescale(dd, pd, y[0], y[3], y[4], y[5]);
             return y;
         });
-        A = o[0], a = o[1], bb = o[2], a_ts = o[3], j_ts = o[4], flag = o[5];
-    }
-}
-
-/// The forward's gamut compression, in double when D is float: near the peak's J it subtracts
-/// J from limit_j (the focus gain, the upper hull), where float's rounding of J grew to output
-/// errors of 1.3e-5 on bright HDR colours.
-template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
-HWY_INLINE void CompressForward(D d, const Params<D>& p, const detail::Aces2Params<double>& pd,
-                                const HueValues<V>& hv, V h, V j, V m, V& j_out, V& m_out,
-                                M& hard) {
-    if constexpr (sizeof(hn::TFromD<D>) == 8) {
-        (void)pd;
-        (void)h;
-        Compress(d, p, hv, j, m, j, false, j_out, m_out, hard);
-    } else {
-        (void)p;
-        (void)hv;
-        const auto o = InDouble<3>(d, std::array<V, 3>{h, j, m}, [&](auto dd, const auto& x) {
-            using VD = hn::Vec<decltype(dd)>;
-            std::array<VD, 3> y;
-            auto hard_d = hn::FirstN(dd, 0);
-            Compress(dd, pd, AtHue(dd, pd, x[0]), x[1], x[2], x[1], false, y[0], y[1], hard_d);
-            y[2] = hn::IfThenElseZero(hard_d, C(dd, 1.0));
-            return y;
-        });
-        j_out = o[0];
-        m_out = o[1];
-        hard = hn::Or(hard, hn::Gt(o[2], hn::Zero(d)));
+        A = o[0], a = o[1], bb = o[2];
+        if (p.precise) {
+            a_ts = o[3], j_ts = o[4], flag = o[5];
+        } else {
+            Tonescale(d, p, A, a_ts, j_ts, flag);
+        }
     }
 }
 
@@ -432,27 +410,21 @@ HWY_INLINE hn::Mask<D> OutputStage(D d, const Params<D>& p, V j, V m, V cos_h, V
     return hard;
 }
 
-/// OutputStage in double when D is float: the output's luminance grows as J^2.7 and its
-/// matrices cancel, which turned float's rounding into errors of up to 1.2e-5 of an output
-/// channel on bright HDR colours.
+/// The forward from the model's JMh on: chroma compression, gamut compression and OutputStage;
+/// returns the lanes for the double path.
 template <class D, class V = hn::Vec<D>>
-HWY_INLINE hn::Mask<D> FromJmh(D d, const Params<D>& p, const detail::Aces2Params<double>& pd, V j,
-                               V m, V cos_h, V sin_h, V& x0, V& x1, V& x2) {
-    if constexpr (sizeof(hn::TFromD<D>) == 8) {
-        (void)pd;
-        return OutputStage(d, p, j, m, cos_h, sin_h, x0, x1, x2);
-    } else {
-        (void)p;
-        const auto o =
-            InDouble<4>(d, std::array<V, 4>{j, m, cos_h, sin_h}, [&](auto dd, const auto& x) {
-                std::array<hn::Vec<decltype(dd)>, 4> y;
-                const auto hard = OutputStage(dd, pd, x[0], x[1], x[2], x[3], y[0], y[1], y[2]);
-                y[3] = hn::IfThenElseZero(hard, C(dd, 1.0));
-                return y;
-            });
-        x0 = o[0], x1 = o[1], x2 = o[2];
-        return hn::Gt(o[3], hn::Zero(d));
-    }
+HWY_INLINE hn::Mask<D> ForwardFromJmh(D d, const Params<D>& p, V A, V M_, V h, V cos_h, V sin_h,
+                                      V a_ts, V j_ts, V& x0, V& x1, V& x2) {
+    hn::Mask<D> hard = hn::FirstN(d, 0);
+    const HueValues<V> hv = AtHue(d, p, h);
+    const V norm = Norm(d, p, cos_h, sin_h);
+    const V nj = hn::Div(j_ts, hn::Set(d, p.limit_j));
+    const V m = ChromaCompress(d, p, M_, nj, hn::Div(a_ts, hn::Set(d, p.limit_a)), hn::Div(a_ts, A),
+                               norm, hv.reach, false);
+    V j_out, m_out;
+    Compress(d, p, hv, j_ts, hn::IfThenZeroElse(hn::Eq(M_, hn::Zero(d)), m), j_ts, false, j_out,
+             m_out, hard);
+    return hn::Or(hard, OutputStage(d, p, j_out, m_out, cos_h, sin_h, x0, x1, x2));
 }
 
 /// One vector of the forward chain, in place on (x0, x1, x2) (finite); returns the lanes for the
@@ -475,22 +447,22 @@ HWY_INLINE M Forward(D d, const Params<D>& p, const detail::Aces2Params<double>&
     const V inv_m = hn::Div(C(d, 1.0), hn::IfThenElse(no_hue, C(d, 1.0), M_));
     const V cos_h = hn::IfThenElse(no_hue, C(d, 1.0), hn::Mul(a, inv_m));
     const V sin_h = hn::Mul(bb, inv_m);
-    // Chroma compression.
-    const HueValues<V> hv = AtHue(d, p, h);
-    const V norm = Norm(d, p, cos_h, sin_h);
-    const V nj = hn::Div(j_ts, hn::Set(d, p.limit_j));
-    const V m = ChromaCompress(d, p, M_, nj, hn::Div(a_ts, hn::Set(d, p.limit_a)), hn::Div(a_ts, A),
-                               norm, hv.reach, false);
-    // Gamut compression.
-    V j_out, m_out;
-    // To RGB of the limiting primaries, clamped, and to the output. Above 500 cd/m² both in
-    // double (Aces2Params::precise).
-    if (p.precise) {
-        CompressForward(d, p, pd, hv, h, j_ts, hn::IfThenZeroElse(no_hue, m), j_out, m_out, hard);
-        hard = hn::Or(hard, FromJmh(d, p, pd, j_out, m_out, cos_h, sin_h, x0, x1, x2));
+    // The rest, in double when precise: near the peak's J the gamut compression subtracts J from
+    // limit_j (the focus gain, the upper hull), and the output's luminance grows as J^2.7 through
+    // matrices that cancel, which turned float's rounding into errors of 1.3e-5 at 1000 cd/m².
+    if (sizeof(T) == 8 || !p.precise) {
+        hard = hn::Or(hard, ForwardFromJmh(d, p, A, M_, h, cos_h, sin_h, a_ts, j_ts, x0, x1, x2));
     } else {
-        Compress(d, p, hv, j_ts, hn::IfThenZeroElse(no_hue, m), j_ts, false, j_out, m_out, hard);
-        hard = hn::Or(hard, OutputStage(d, p, j_out, m_out, cos_h, sin_h, x0, x1, x2));
+        const auto o = InDouble<4>(
+            d, std::array<V, 7>{A, M_, h, cos_h, sin_h, a_ts, j_ts}, [&](auto dd, const auto& x) {
+                std::array<hn::Vec<decltype(dd)>, 4> y;
+                const auto hard_d = ForwardFromJmh(dd, pd, x[0], x[1], x[2], x[3], x[4], x[5], x[6],
+                                                   y[0], y[1], y[2]);
+                y[3] = hn::IfThenElseZero(hard_d, C(dd, 1.0));
+                return y;
+            });
+        x0 = o[0], x1 = o[1], x2 = o[2];
+        hard = hn::Or(hard, hn::Gt(o[3], zero));
     }
     x0 = hn::IfThenZeroElse(black, x0);
     x1 = hn::IfThenZeroElse(black, x1);
@@ -504,16 +476,8 @@ HWY_INLINE M Inverse(D d, const Params<D>& p, V& x0, V& x1, V& x2) {
     using T = hn::TFromD<D>;
     const V zero = hn::Zero(d), tiny = hn::Set(d, std::numeric_limits<T>::min());
     M hard = hn::Gt(hn::Max(hn::Max(hn::Abs(x0), hn::Abs(x1)), hn::Abs(x2)), C(d, large_input));
-    V r, g, b;
-    Mul3(d, p.in, x0, x1, x2, r, g, b);
-    const V in_max = hn::Set(d, p.in_max);
-    r = hn::Min(hn::Max(r, zero), in_max);
-    g = hn::Min(hn::Max(g, zero), in_max);
-    b = hn::Min(hn::Max(b, zero), in_max);
-    V c0, c1, c2;
-    Mul3(d, p.to_cone, r, g, b, c0, c1, c2);
-    V A, a, bb;
-    Mul3(d, p.to_aab, Response(d, p, c0), Response(d, p, c1), Response(d, p, c2), A, a, bb);
+    V r, g, b, A, a, bb;
+    Aab(d, p, x0, x1, x2, A, a, bb);
     const M black = hn::Le(A, zero);
     A = hn::Max(A, tiny);
     const V j = hn::Mul(C(d, 100.0), Pow(d, A, hn::Set(d, p.cz)));
