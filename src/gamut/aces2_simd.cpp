@@ -143,7 +143,7 @@ HWY_INLINE HueValues<V> AtHue(D d, const Params<D>& p, V h) {
     const V t_reach = hn::Sub(h, hn::ConvertTo(d, deg));
     v.reach = Lerp<D>(hn::GatherIndex(d, p.reach.data(), deg),
                       hn::GatherIndex(d, p.reach.data(), hn::Add(deg, hn::Set(di, 1))), t_reach);
-    // The cusp: the last entry below h, from its bucket's and stepping on.
+    // The cusp: the last entry below h, from its bucket's first and stepping on.
     const VI bucket =
         hn::Min(hn::Max(hn::ConvertTo(di, hn::Mul(h, C(d, detail::aces2_buckets_per_degree))),
                         hn::Zero(di)),
