@@ -58,6 +58,8 @@ public:
     [[nodiscard]] double exponent() const noexcept { return m_cz; }
 
 private:
+    friend class Aces2Kernel;  // converts the matrices and constants to float once
+
     Mat3 m_rgb_to_cone;  // RGB to the adapted cone response, scaled by the reference 100
     Mat3 m_cone_to_rgb;
     Mat3 m_cone_to_aab;  // the opponent matrix, A normalised by the white's
@@ -121,6 +123,8 @@ public:
     };
 
 private:
+    friend class Aces2Kernel;  // converts the parameters and tables to float once
+
     [[nodiscard]] double reach_m(double h) const noexcept;
     [[nodiscard]] Cusp cusp_at(double h) const noexcept;
     [[nodiscard]] double m_norm(double h) const noexcept;

@@ -87,6 +87,8 @@ public:
     [[nodiscard]] double output_scale() const noexcept { return m_scale; }
 
 private:
+    friend class Aces2Kernel;  // folds the matrices into its own
+
     Aces2DisplaySpec m_spec;
     Aces2Rendering m_rendering;
     Mat3 m_ap0_to_ap1, m_ap1_to_ap0;

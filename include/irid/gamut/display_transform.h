@@ -13,6 +13,7 @@
 
 #include <irid/color/convert.h>
 #include <irid/gamut/aces2_display.h>
+#include <irid/gamut/aces2_kernel.h>
 
 #include <memory>
 #include <span>
@@ -45,8 +46,10 @@ public:
     [[nodiscard]] Vec3 operator()(const Vec3& in) const;
 
     /// Interleaved RGB triples, `in` to `out` (the same size; they may be the same array), on up
-    /// to `threads` threads (0: all). Computed in double for either type, so a colour's result
-    /// is the same for any number of threads. Throws irid::Error for sizes that are not triples.
+    /// to `threads` threads (0: all); a colour's result is the same for any number of threads.
+    /// Doubles are computed in double; floats by the float SIMD kernel (aces2_kernel.h, within
+    /// 1e-5 × max(|result|, 1) of the double path) when both sides are linear, else in double.
+    /// Throws irid::Error for sizes that are not triples.
     void apply(std::span<const double> in, std::span<double> out, int threads = 0) const;
     void apply(std::span<const float> in, std::span<float> out, int threads = 0) const;
 
@@ -61,6 +64,7 @@ private:
     std::shared_ptr<const Aces2Output> m_output;
     std::unique_ptr<Converter> m_scene;    // source → aces2065-1-linear (forward) or aces → target
     std::unique_ptr<Converter> m_display;  // xyz → target (forward) or source → xyz (inverse)
+    std::unique_ptr<const Aces2Kernel> m_kernel;  // floats, when both converters are linear
 };
 
 }  // namespace irid

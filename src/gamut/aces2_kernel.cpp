@@ -1,0 +1,138 @@
+// Aces2Kernel: the display chain's constants folded and converted once (aces2_kernel.h); the
+// Highway kernel that reads them is aces2_simd.cpp.
+
+#include <irid/gamut/aces2_kernel.h>
+
+#include "aces2_kernel_data.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace irid {
+namespace {
+
+template <class T>
+std::array<T, 9> to_array(const Mat3& m) noexcept {
+    std::array<T, 9> a{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            a[static_cast<std::size_t>(3 * i + j)] = static_cast<T>(m[i][j]);
+    return a;
+}
+
+/// Peaks above which the float forward computes its tonescale, gamut compression and output
+/// stage in double: in float they reached 1.05e-5 of an output channel at 500 cd/m² and
+/// 1.3e-5 at 1000 (docs/KERNELS.md).
+constexpr double precise_above_nits = 250.0;
+
+}  // namespace
+
+struct Aces2Kernel::Builder {
+    /// The constants of one direction, in T (see Aces2Params).
+    template <class T>
+    static detail::Aces2Params<T> params(const Aces2Output& o, bool inverse, const Mat3& in,
+                                         const Mat3& out) {
+        const Aces2Rendering& r = o.m_rendering;
+        const Aces2JmhModel& input = r.m_input;
+        const Aces2JmhModel& limiting = r.m_limiting;
+        const Aces2JmhModel& from = inverse ? limiting : input;
+        const Aces2JmhModel& to = inverse ? input : limiting;
+        const double peak = o.m_spec.peak_nits / 100.0;
+        const double limit = r.forward_limit();
+        detail::Aces2Params<T> p;
+        if (!inverse) {
+            p.in = to_array<T>(o.m_ap0_to_ap1 * in);
+            p.in_max = static_cast<T>(limit);
+            p.to_cone = to_array<T>(from.m_rgb_to_cone * o.m_ap1_to_ap0);
+            p.from_cone = to_array<T>(to.m_cone_to_rgb);
+            p.out_max = static_cast<T>(peak);
+            p.out = to_array<T>(out * Mat3::diagonal({o.m_scale, o.m_scale, o.m_scale}) *
+                                o.m_limiting_to_xyz);
+        } else {
+            const double s = 1.0 / o.m_scale;
+            p.in = to_array<T>(Mat3::diagonal({s, s, s}) * o.m_xyz_to_limiting * in);
+            p.in_max = static_cast<T>(peak);
+            p.to_cone = to_array<T>(from.m_rgb_to_cone);
+            p.from_cone = to_array<T>(o.m_ap0_to_ap1 * to.m_cone_to_rgb);
+            p.out_max = static_cast<T>(limit);
+            p.out = to_array<T>(out * o.m_ap1_to_ap0);
+        }
+        p.to_aab = to_array<T>(from.m_cone_to_aab);
+        p.from_aab = to_array<T>(to.m_aab_to_cone);
+        p.fl_n = static_cast<T>(input.m_fl_n);
+        p.a_w_j = static_cast<T>(input.m_a_w_j);
+        p.cz = static_cast<T>(input.m_cz);
+        p.cz_inv = static_cast<T>(1.0 / input.m_cz);
+        p.limit_j = static_cast<T>(r.m_limit_j_max);
+        p.limit_a = static_cast<T>(input.j_to_a(r.m_limit_j_max));
+        const Aces2Rendering::Tonescale& t = r.m_tone;
+        p.m_2 = static_cast<T>(t.m_2);
+        p.s_2 = static_cast<T>(t.s_2);
+        p.g = static_cast<T>(t.g);
+        p.g_inv = static_cast<T>(1.0 / t.g);
+        p.t_1 = static_cast<T>(t.t_1);
+        p.inverse_limit = static_cast<T>(t.inverse_limit);
+        p.sat = static_cast<T>(r.m_sat);
+        p.sat_thr = static_cast<T>(r.m_sat_thr);
+        p.compr = static_cast<T>(r.m_compr);
+        p.chroma_scale = static_cast<T>(r.m_chroma_scale);
+        p.mid_j = static_cast<T>(r.m_mid_j);
+        p.focus_dist = static_cast<T>(r.m_focus_dist);
+        p.lower_gamma_inv = static_cast<T>(r.m_lower_hull_gamma_inv);
+        for (std::size_t i = 0; i < detail::aces2_hue_entries; ++i) {
+            p.hue[i] = static_cast<T>(r.m_hues[i]);
+            p.cusp_j[i] = static_cast<T>(r.m_cusps[i][0]);
+            p.cusp_m[i] = static_cast<T>(r.m_cusps[i][1]);
+            p.gamma_top_inv[i] = static_cast<T>(r.m_cusps[i][2]);
+        }
+        for (std::size_t i = 0; i < 360; ++i) p.reach[i] = static_cast<T>(r.m_reach[i]);
+        p.reach[360] = p.reach[0];
+        // Per bucket [b/k, (b+1)/k) of hue, the last entry whose hue (in T, as the kernel compares)
+        // is below the bucket's start; the kernel steps on from there while the next is below h.
+        for (std::size_t b = 0; b < detail::aces2_buckets; ++b) {
+            const T start =
+                static_cast<T>(static_cast<double>(b) / detail::aces2_buckets_per_degree);
+            const T end =
+                static_cast<T>(static_cast<double>(b + 1) / detail::aces2_buckets_per_degree);
+            std::size_t lo = 0;
+            while (lo + 1 < detail::aces2_hue_entries - 1 && p.hue[lo + 1] < start) ++lo;
+            p.bucket_lo[b] = static_cast<typename detail::Aces2Params<T>::Index>(lo);
+            int inside = 0;
+            for (std::size_t i = lo + 1; i < detail::aces2_hue_entries && p.hue[i] < end; ++i)
+                ++inside;
+            p.bucket_steps = std::max(p.bucket_steps, inside);
+        }
+        p.precise = o.m_spec.peak_nits > precise_above_nits;
+        return p;
+    }
+};
+
+Aces2Kernel::Aces2Kernel(const Aces2Output& output, bool inverse, const Mat3& in, const Mat3& out)
+    : m_output(output), m_inverse(inverse), m_in(in), m_out(out) {
+    auto data = std::make_unique<detail::Aces2KernelData>();
+    data->f = Builder::params<float>(output, inverse, in, out);
+    data->d = Builder::params<double>(output, inverse, in, out);
+    m_data = std::move(data);
+}
+
+Aces2Kernel::~Aces2Kernel() = default;
+
+std::size_t Aces2Kernel::run(std::span<const float> in, std::span<float> out) const noexcept {
+    return detail::aces2_run(*this, *m_data, in.data(), out.data(),
+                             std::min(in.size(), out.size()) / 3);
+}
+
+Vec3 Aces2Kernel::reference(const Vec3& in) const noexcept {
+    Vec3 x = in;
+    for (double& v : x) v = std::isfinite(v) ? v : 0.0;
+    x = m_in * x;
+    if (!m_inverse) {
+        const Xyz xyz = m_output.forward(x);
+        x = {xyz.X, xyz.Y, xyz.Z};
+    } else {
+        x = m_output.inverse({x[0], x[1], x[2]});
+    }
+    return m_out * x;
+}
+
+}  // namespace irid
