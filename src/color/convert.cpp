@@ -220,8 +220,10 @@ void Converter::convert(std::span<const float> in, std::span<float> out) const {
 }
 
 std::optional<Mat3> Converter::linear_matrix() const {
+    // An encoded space whose curve is the identity (aces2065-1, acescg) is linear too.
     const auto linear = [](const ColorSpace& s) {
-        return s.family == SpaceFamily::xyz || s.family == SpaceFamily::rgb_linear;
+        return s.family == SpaceFamily::xyz || s.family == SpaceFamily::rgb_linear ||
+               (s.family == SpaceFamily::rgb_encoded && s.rgb->transfer().kind() == TransferFunction::Kind::linear);
     };
     if (!linear(m_from) || !linear(m_to)) return std::nullopt;
     // The map is linear: its columns are the images of the unit vectors.

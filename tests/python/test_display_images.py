@@ -53,7 +53,8 @@ def test_an_hdr_png_is_16_bit_pq_and_an_exr_is_linear_with_its_chromaticities(ir
     run(irid_cli, "--view", "aces2", "--display", "hdr-1000nit-p3-d65", src, tmp_path / "lin.exr")
     lin, meta = irid.read_image(tmp_path / "lin.exr")
     want = irid.display_transform(scene, display="hdr-1000nit-p3-d65", target="p3-d65-pq-linear")
-    assert np.allclose(lin, want, rtol=1e-6, atol=1e-7)
+    # Linear float to linear float runs the float kernel, within 1e-5 of max(|value|, 1).
+    assert np.allclose(lin, want, rtol=1e-5, atol=1e-5)
     assert np.allclose(meta["chromaticities"], [0.68, 0.32, 0.265, 0.69, 0.15, 0.06, 0.3127, 0.329])
     assert np.max(lin) <= 10.0 + 1e-6
 
@@ -71,13 +72,13 @@ def test_the_scene_space_is_the_files_or_from_and_aces_when_it_says_nothing(irid
     irid.write_image(tmp_path / "bare.exr", scene, tag=False)
     run(irid_cli, "--display", "sdr-100nit-p3-d65", tmp_path / "bare.exr", tmp_path / "b.exr")
     b, _ = irid.read_image(tmp_path / "b.exr")
-    assert np.allclose(b, want, rtol=1e-6, atol=1e-7)
+    assert np.allclose(b, want, rtol=1e-5, atol=1e-5)
     r = run(irid_cli, "--display", "sdr-100nit-p3-d65", "--from", "aces2065-1-linear", tmp_path / "srgb.exr",
             tmp_path / "c.exr")
     assert "--from" in r.stderr
     c, _ = irid.read_image(tmp_path / "c.exr")
     over = irid.display_transform(srgb, display="sdr-100nit-p3-d65", target="display-p3-linear")
-    assert np.allclose(c, over, rtol=1e-6, atol=1e-7)
+    assert np.allclose(c, over, rtol=1e-5, atol=1e-5)
 
 
 def test_alpha_passes_and_exr_colour_stays_premultiplied(irid_cli, tmp_path):
@@ -92,8 +93,8 @@ def test_alpha_passes_and_exr_colour_stays_premultiplied(irid_cli, tmp_path):
     assert meta["channels"] == ["R", "G", "B", "A"]
     want = irid.display_transform(scene, display="sdr-100nit-rec709", target="srgb-linear")
     assert np.allclose(got[..., 3], alpha[..., 0])
-    assert np.allclose(got[1:, :, :3], want[1:] * 0.5, rtol=1e-6, atol=1e-7)
-    assert np.allclose(got[0, 0, :3], want[0, 0], rtol=1e-6, atol=1e-7)
+    assert np.allclose(got[1:, :, :3], want[1:] * 0.5, rtol=1e-5, atol=1e-5)
+    assert np.allclose(got[0, 0, :3], want[0, 0], rtol=1e-5, atol=1e-5)
     run(irid_cli, "--display", "sdr-100nit-rec709", tmp_path / "a.exr", tmp_path / "o.png")
     png, _ = irid.read_image(tmp_path / "o.png")
     enc = irid.display_transform(scene, display="sdr-100nit-rec709", target="srgb")

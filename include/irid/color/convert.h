@@ -95,7 +95,8 @@ public:
     /// identity when the destination has none or it is the reference white).
     [[nodiscard]] Xyz to_destination_white(const Xyz& c) const { return apply(m_to_native, c); }
 
-    /// When both spaces are linear (XYZ or linear RGB) the whole conversion is one matrix,
+    /// When both spaces are linear (XYZ, linear RGB, or an RGB space whose curve is the identity)
+    /// the whole conversion is one matrix,
     /// which this returns (in · columns); otherwise nothing.
     [[nodiscard]] std::optional<Mat3> linear_matrix() const;
 
