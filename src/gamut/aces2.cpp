@@ -325,9 +325,16 @@ Aces2Jmh Aces2Rendering::gamut_compress_inverse(const Aces2Jmh& jmh) const noexc
     const Cusp cusp = cusp_at(jmh.h);
     const double reach = reach_m(jmh.h);
     double jx = jmh.J;
-    // Above the threshold the focus gain depends on the unknown source J: approximated by one
-    // inverse step (as the Academy's inverse does).
-    if (jx > cusp.analytical_threshold) jx = compress(jmh, jx, cusp, reach, true).J;
+    // Above the cusp's threshold the focus gain depends on the source J, which is unknown. The
+    // Academy's inverse takes one step of the fixed point jx = J(inverse at jx), and only where
+    // the display's J is above the threshold (a source above it can show below it). irid
+    // iterates from every J to convergence, which makes the inverse exact (docs/DISPLAY.md).
+    for (int k = 0; k < aces2_inverse_focus_iterations; ++k) {
+        const double next = compress(jmh, jx, cusp, reach, true).J;
+        const bool done = std::abs(next - jx) <= 1e-13 * std::max(1.0, std::abs(jx));
+        jx = next;
+        if (done) break;
+    }
     return compress(jmh, jx, cusp, reach, true);
 }
 

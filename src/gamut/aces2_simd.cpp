@@ -487,13 +487,19 @@ HWY_INLINE M Inverse(D d, const Params<D>& p, V& x0, V& x1, V& x2) {
     const V inv_m = hn::Div(C(d, 1.0), hn::IfThenElse(no_hue, C(d, 1.0), M_));
     const V cos_h = hn::IfThenElse(no_hue, C(d, 1.0), hn::Mul(a, inv_m));
     const V sin_h = hn::Mul(bb, inv_m);
-    // Gamut compression inverse, the focus gain above the threshold from one inverse step.
+    // Gamut compression inverse: the focus gain's J solved by the reference's fixed point
+    // (Aces2Rendering::gamut_compress_inverse), each lane frozen at its own convergence so that
+    // its result does not depend on its neighbours.
     const HueValues<V> hv = AtHue(d, p, h);
     V jx = j, j_c, m_c;
-    const M stepped = hn::Gt(j, hv.threshold);
-    if (!hn::AllFalse(d, stepped)) {
-        Compress(d, p, hv, j, M_, j, true, j_c, m_c, hard);
-        jx = hn::IfThenElse(stepped, j_c, j);
+    M done = hn::Not(hn::Eq(zero, zero));
+    for (int k = 0; k < aces2_inverse_focus_iterations; ++k) {
+        Compress(d, p, hv, j, M_, jx, true, j_c, m_c, hard);
+        const V tol = hn::Mul(C(d, 1e-13), hn::Max(C(d, 1.0), hn::Abs(jx)));
+        const M small = hn::Le(hn::Abs(hn::Sub(j_c, jx)), tol);
+        jx = hn::IfThenElse(done, jx, j_c);
+        done = hn::Or(done, small);
+        if (hn::AllTrue(d, done)) break;
     }
     Compress(d, p, hv, j, M_, jx, true, j_c, m_c, hard);
     // Tonescale inverse (Aces2Rendering::tonescale_inverse).

@@ -109,6 +109,36 @@ TEST(Aces2, ForwardThenInverseReturnsTheVectorsInputs) {
     }
 }
 
+// Every display value of the limiting cube has a scene value, and the inverse finds it: the
+// focus gain's source J is solved to convergence (the Academy's one step leaves up to 1.2e-3 at
+// 4000 cd/m²). Through the whole chain the same holds wherever that scene value lies inside the
+// chain's AP1 clamp; the few display values whose scene value lies outside are never shown.
+TEST(Aces2, EveryDisplayValueComesBackThroughTheInverse) {
+    std::mt19937 rng(5);
+    for (const char* name : {"sdr-100nit-rec709", "hdr-108nit-p3-d65", "hdr-1000nit-p3-d65", "hdr-4000nit-rec2020",
+                             "sdr-100nit-rec709-d60-in-rec709-d65"}) {
+        const Aces2Output out(aces2_display(name));
+        const Aces2Rendering& r = out.rendering();
+        const double peak = out.spec().peak_nits / 100.0;
+        std::uniform_real_distribution<double> cube(0.0, peak);
+        const Mat3 to_xyz = rgb_to_xyz_matrix(out.spec().limiting, out.spec().limiting_white);
+        int outside_clamp = 0;
+        for (int i = 0; i < 20000; ++i) {
+            const Vec3 d{cube(rng), cube(rng), cube(rng)};
+            const Vec3 back = r.forward(r.inverse(d));
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(back[c], d[c], 1e-10 * peak) << name << " " << d[0] << " " << d[1] << " " << d[2];
+            const Vec3 x = to_xyz * d;
+            const double k = out.output_scale();
+            const Xyz xyz{x[0] * k, x[1] * k, x[2] * k};
+            const Xyz again = out.forward(out.inverse(xyz));
+            const double err = std::max({std::abs(again.X - xyz.X), std::abs(again.Y - xyz.Y), std::abs(again.Z - xyz.Z)});
+            if (err > 1e-10 * peak) ++outside_clamp;
+        }
+        // Measured: 0, 0, 0, 1 and 0 of 20 000 (a scene value beyond AP1's faces).
+        EXPECT_LE(outside_clamp, 5) << name;
+    }
+}
+
 TEST(Aces2, GreysAreNeutralAndMidGreyIsThePublishedLuminance) {
     // ACES 2.0 shows 18 % grey at 10 cd/m² on a 100 cd/m² display (aces-docs, "Output
     // Transforms"; the curve's anchor c_d = 10.013 makes it 10.00). Brighter displays show it

@@ -69,6 +69,10 @@ private:
     double m_a_w_j = 0.0;  // the response of the reference luminance
 };
 
+/// The most steps of the inverse's focus-gain fixed point (Aces2Rendering::inverse); it
+/// converges to 1e-13 in far fewer.
+inline constexpr int aces2_inverse_focus_iterations = 64;
+
 /// A display's rendering parameters: peak luminance and limiting primaries and white.
 struct Aces2Display {
     double peak_nits = 100.0;
@@ -86,9 +90,10 @@ public:
     /// function alone: no clamp before or after).
     [[nodiscard]] Vec3 forward(const Vec3& aces) const noexcept;
     /// Its inverse, for display values inside the limiting cube [0, peak/100]³ (beyond it the
-    /// result may not be finite; the display chain clamps to the cube first). Exact where the
-    /// forward's focus gain is 1; above the cusp's analytical threshold it solves the source J
-    /// by one step, as the Academy's inverse does (docs/DISPLAY.md measures it).
+    /// result may not be finite; the display chain clamps to the cube first). Exact: the source
+    /// J on which the focus gain depends is solved by iterating to convergence the fixed point
+    /// of which the Academy's inverse takes one step (forward(inverse(d)) returns d to 6e-13
+    /// over the cube; docs/DISPLAY.md).
     [[nodiscard]] Vec3 inverse(const Vec3& display) const noexcept;
 
     // The stages, in the order forward() applies them.
