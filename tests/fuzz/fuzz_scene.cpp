@@ -11,6 +11,7 @@
 
 #include <irid/color/rgb.h>
 #include <irid/error.h>
+#include <irid/gamut/aces2_display.h>
 #include <irid/gamut/clip.h>
 #include <irid/optics/material.h>
 #include <irid/render/scene.h>
@@ -46,6 +47,15 @@ void check_scene(const render::Scene& s) {
     IRID_FUZZ_REQUIRE(1LL * im.width * im.height * im.spp <= render::max_samples, "samples");
     IRID_FUZZ_REQUIRE(irid::find_rgb_space(s.render.space) != nullptr,
                       "render.space '" + s.render.space + "'");
+    // An aces2 view keeps a display that names itself (custom ones in their normalised form).
+    if (s.render.view == render::ViewTransform::aces2) {
+        try {
+            IRID_FUZZ_REQUIRE(irid::aces2_display(s.render.display).name == s.render.display,
+                              "render.display does not round-trip through its name");
+        } catch (const irid::Error& e) {
+            IRID_FUZZ_REQUIRE(false, "render.display stored a display without a name: " + std::string(e.what()));
+        }
+    }
     // The clip is parsed once when read: what was stored is a method that names itself.
     try {
         IRID_FUZZ_REQUIRE(irid::parse_clip_method(irid::clip_method_name(s.render.clip)) == s.render.clip,
