@@ -319,5 +319,49 @@ TEST(Aces2Display, WhiteIsTheDisplaysAndTheChainStaysInsideIt) {
     }
 }
 
+// The chain's promises, on every display: what it shows lies inside the limiting gamut under
+// the peak (times the output scale), and greys of every exposure are shown as the limiting
+// white, brighter with exposure, the brightest inside the encoding's cube (the white scaling
+// makes a D60 white fit a D65 encoding). Colours need not fit the encoding: P3's red lies just
+// outside BT.2020, so a P3-limited display encoded in BT.2020 can show a blue below 0 (-3.7e-4
+// at 500 cd/m2 in one colour of this walk).
+TEST(Aces2Display, EveryOutputFitsTheLimitingGamutAndGreysAreTheWhite) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> scene(-0.5, 64.0), unit(0.0, 1.0);
+    for (const Aces2DisplaySpec& spec : aces2_displays()) {
+        const Aces2Output out(spec);
+        const Mat3 to_limiting = irid::inverse(rgb_to_xyz_matrix(spec.limiting, spec.limiting_white), "limiting");
+        const double peak = spec.peak_nits / 100.0, scale = out.output_scale();
+        for (int i = 0; i < 3000; ++i) {
+            const double k = std::exp2(unit(rng) * 16.0 - 10.0);
+            const Vec3 aces = i % 2 == 0 ? Vec3{scene(rng), scene(rng), scene(rng)}
+                                         : Vec3{k * unit(rng), k * unit(rng), k * unit(rng)};
+            const Xyz x = out.forward(aces);
+            const Vec3 rgb = to_limiting * Vec3{x.X / scale, x.Y / scale, x.Z / scale};
+            for (int c = 0; c < 3; ++c) {
+                ASSERT_GE(rgb[c], -1e-9 * peak) << spec.name << " channel " << c;
+                ASSERT_LE(rgb[c], peak * (1.0 + 1e-9)) << spec.name << " channel " << c;
+            }
+        }
+        if (!spec.encoding_xyz) {
+            const Mat3 to_encoding = irid::inverse(rgb_to_xyz_matrix(spec.encoding, spec.encoding_white), "encoding");
+            const Xyz w = out.forward({64.0, 64.0, 64.0});
+            const Vec3 e = to_encoding * Vec3{w.X, w.Y, w.Z};
+            const double top = spec.peak_nits / 100.0 * spec.linear_scale;
+            EXPECT_LE(std::max({e[0], e[1], e[2]}), top * (1.0 + 1e-9)) << spec.name;
+            EXPECT_GE(std::min({e[0], e[1], e[2]}), 0.0) << spec.name;
+        }
+        double last = -1.0;
+        for (double e = 1.0 / 1024.0; e <= 64.0; e *= 1.5) {
+            const Xyz g = out.forward({e, e, e});
+            const Xyz w = xy_to_xyz(spec.limiting_white, g.Y);
+            EXPECT_NEAR(g.X, w.X, 1e-9 * std::max(1.0, g.Y)) << spec.name << " " << e;
+            EXPECT_NEAR(g.Z, w.Z, 1e-9 * std::max(1.0, g.Y)) << spec.name << " " << e;
+            EXPECT_GT(g.Y, last) << spec.name << " " << e;
+            last = g.Y;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace irid
