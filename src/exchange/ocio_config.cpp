@@ -41,6 +41,12 @@ std::string encode_transform(const RgbSpace& space) {
             return fmt::format("!<ExponentTransform> {{value: [{0}, {0}, {0}, 1], style: mirror, "
                                "direction: inverse}}",
                                t.gamma());
+        case TransferFunction::Kind::acescct:
+            // OCIO 2.1 LogCameraTransform, forward = linear to log: y = log_side_slope · log2(x) +
+            // log_side_offset above lin_side_break, the linear toe of slope linear_slope below
+            // (its offset follows from continuity: 0.0729055341958355 of S-2016-001).
+            return "!<LogCameraTransform> {log_side_slope: 0.0570776255707763, log_side_offset: "
+                   "0.554794520547945, lin_side_break: 0.0078125, linear_slope: 10.5402377416545}";
         case TransferFunction::Kind::pq:
             // OCIO 2.1's built-in curve has irid's scale: linear 1.0 = 100 cd/m².
             return "!<BuiltinTransform> {style: \"CURVE - ST-2084_to_LINEAR\", direction: inverse}";
