@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The contract of `irid lut` and `irid ocio-config`: a clip method baked as a .cube, .clf or .spi3d file (-o FILE, the
+# The contract of `irid lut` and `irid ocio-config`: a clip method (or, with --view, a display
+# transform) baked as a .cube, .clf or .spi3d file (-o FILE, the
 # format by the extension); exit statuses 0, 1 (the file cannot be written) and 2 (usage: the
 # valid values named). Expected files come from closed forms: clamp of a space onto itself is
 # the identity, so its nodes are the node inputs. Whether OpenColorIO and ffmpeg read the files
@@ -134,6 +135,54 @@ expect_status 1
 run '' lut --method smits -o "$TMP/missing/x.cube"
 expect_status 1
 expect_stderr_has "missing"
+
+# --- irid lut --view: a display transform baked ---------------------------------------------
+run '' lut --view aces2 --display sdr-100nit-rec709 --size 5 -o "$TMP/aces2.clf"
+expect_status 0
+expect_empty_stdout
+# The defaults: from aces2065-1 to the display's encoding, a log2 shaper up to the forward limit
+# (8 × 128 at 100 cd/m², ACES 2.0).
+grep -q -- "--from aces2065-1 --to srgb --size 5; domain log2 shaper over \[0, 1024\]" "$TMP/aces2.clf" &&
+    pass || fail "the title names the defaults" "$(head -3 "$TMP/aces2.clf")"
+run '' lut --view aces2 --display hdr-1000nit-p3-d65 --size 3 -o "$TMP/hdr.clf"
+expect_status 0
+grep -q -- "--to p3-d65-pq --size 3; domain log2 shaper over \[0, 4096\]" "$TMP/hdr.clf" &&
+    pass || fail "an HDR display's PQ encoding and limit" "$(head -3 "$TMP/hdr.clf")"
+run '' lut --view aces2 --display sdr-100nit-rec709 --method clamp -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "no --method, --param or --inverse"
+run '' lut --view aces2 --display sdr-100nit-rec709 --inverse -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--inverse"
+run '' lut --view aces2 -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--display"
+run '' lut --view aces3 --display sdr-100nit-rec709 -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "aces2"
+run '' lut --view aces2 --display nope -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "sdr-100nit-rec709"
+run '' lut --view aces2 --display sdr-100nit-p3-d60-in-xyz-e -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--to"
+# A .cube has no shaper: over linear ACES2065-1 it is refused, saying what to write instead;
+# over ACEScct code values it is uniform over [0, 1] (no LUT_3D_INPUT_RANGE).
+run '' lut --view aces2 --display sdr-100nit-rec709 -o "$TMP/x.cube"
+expect_status 2
+expect_stderr_has "acescct"
+expect_stderr_has ".clf"
+run '' lut --view aces2 --display sdr-100nit-rec709 --from srgb -o "$TMP/x.cube"
+expect_status 2
+expect_stderr_has "acescct"
+run '' lut --view aces2 --display sdr-100nit-rec709 --from acescct --size 3 -o "$TMP/cct.cube"
+expect_status 0
+expect_file_line "$TMP/cct.cube" 3 "LUT_3D_SIZE 3"
+grep -q "^# input: acescct; output: srgb" "$TMP/cct.cube" && pass || fail "the .cube names its spaces" "$(head -3 "$TMP/cct.cube")"
+run '' lut --display sdr-100nit-rec709 --method clamp -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--display applies to --view"
+[[ ! -e $TMP/x.clf && ! -e $TMP/x.cube ]] && pass || fail "nothing written after a refusal" "$(ls "$TMP")"
 
 # --- irid ocio-config ----------------------------------------------------------------------
 run '' ocio-config --methods smits,aces-rgc --size 5 -o "$TMP/cfg"
