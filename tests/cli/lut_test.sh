@@ -191,6 +191,23 @@ expect_stdout_has "2 looks"
 [[ -f $TMP/cfg/config.ocio && -f $TMP/cfg/luts/irid-smits.clf && -f $TMP/cfg/luts/irid-aces-rgc.clf ]] &&
     pass || fail "config.ocio and two LUTs" "$(ls -R "$TMP/cfg" 2>&1)"
 grep -q "looks: irid-aces-rgc" "$TMP/cfg/config.ocio" && pass || fail "a view with the look" "$(cat "$TMP/cfg/config.ocio")"
+# By default the ACES 2.0 displays encoded in sRGB are views, each through its baked LUT.
+expect_stdout_has "2 ACES 2.0 views"
+grep -q "name: ACES 2.0 sdr-100nit-rec709, colorspace: aces2-sdr-100nit-rec709" "$TMP/cfg/config.ocio" &&
+    [[ -f $TMP/cfg/luts/aces2-sdr-100nit-rec709.clf ]] && pass ||
+    fail "the ACES 2.0 view and its LUT" "$(ls -R "$TMP/cfg" 2>&1)"
+run '' ocio-config --methods clamp --size 5 --aces2 none -o "$TMP/noaces"
+expect_status 0
+expect_stdout_has "0 ACES 2.0 views"
+run '' ocio-config --aces2 sdr-100nit-rec709,nope -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "nope"
+run '' ocio-config --aces2 sdr-100nit-rec709,sdr-100nit-rec709 -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "named twice"
+run '' ocio-config --aces2 custom:peak=100,limiting=rec709 -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "built-in displays"
 run '' ocio-config
 expect_status 2
 expect_stderr_has "-o DIR"

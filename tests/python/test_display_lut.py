@@ -74,13 +74,43 @@ def test_opencolorio_applies_the_baked_transform_within_its_measured_delta_e(
     assert mean <= mean_bound and p95 <= p95_bound and worst <= max_bound
 
 
+def test_the_ocio_config_offers_aces2_views_that_opencolorio_applies_as_the_transform(tmp_path, irid_cli):
+    import shutil
+    import PyOpenColorIO as ocio
+    folder = tmp_path / "cfg"
+    r = subprocess.run([irid_cli, "ocio-config", "--from", "acescg-linear", "--to", "srgb", "--methods",
+                        "clamp", "-o", str(folder)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert "2 ACES 2.0 views" in r.stdout
+    tool = shutil.which("ociocheck")
+    assert tool, "ociocheck is missing (scripts/install-deps installs opencolorio-tools)"
+    check = subprocess.run([tool, "--iconfig", str(folder / "config.ocio")], capture_output=True, text=True)
+    assert check.returncode == 0 and "ERROR" not in check.stdout, check.stdout + check.stderr
+    config = ocio.Config.CreateFromFile(str(folder / "config.ocio"))
+    display = config.getDefaultDisplay()
+    views = list(config.getViews(display))
+    assert "ACES 2.0 sdr-100nit-rec709" in views and "ACES 2.0 sdr-100nit-rec709-d60-in-rec709-d65" in views
+    # ACEScg scene colours (the reference) through the view, against the transform.
+    scene = irid.convert(scene_colours(1024.0), "aces2065-1-linear", "acescg-linear")
+    scene = np.clip(scene, 0.0, None)  # the LUT's domain starts at 0
+    t = ocio.DisplayViewTransform(src="acescg-linear", display=display, view="ACES 2.0 sdr-100nit-rec709")
+    out = np.array(scene, np.float32)
+    config.getProcessor(t).getDefaultCPUProcessor().applyRGB(out)
+    direct = irid.display_transform(scene, display="sdr-100nit-rec709", source="acescg-linear", target="srgb")
+    de = np.sort(irid.delta_e(display_lab(direct, "srgb", 1.0), display_lab(out.astype(np.float64), "srgb", 1.0),
+                              "ciede2000"))
+    mean, p95 = de.mean(), de[int(np.ceil(0.95 * len(de))) - 1]
+    print(f"OCIO config view sdr-100nit-rec709 33: {len(de)} colours, mean {mean:.3f} p95 {p95:.3f} max {de[-1]:.3f}")
+    assert mean <= 0.135 and p95 <= 0.53 and de[-1] <= 1.8  # measured 0.120, 0.479, 1.607
+
+
 def test_opencolorio_decodes_acescct_as_irid_does(tmp_path, irid_cli):
     """The config's acescct space (OCIO 2.1's LogCameraTransform) against irid's curve, over code
     values below 0 to above 1 (the toe carries negatives, unmirrored)."""
     import PyOpenColorIO as ocio
     folder = tmp_path / "cct"
     r = subprocess.run([irid_cli, "ocio-config", "--from", "acescct", "--to", "srgb", "--methods", "clamp",
-                        "--size", "5", "-o", str(folder)], capture_output=True, text=True)
+                        "--size", "5", "--aces2", "none", "-o", str(folder)], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     config = ocio.Config.CreateFromFile(str(folder / "config.ocio"))
     codes = np.linspace(-0.2, 1.1, 131)
