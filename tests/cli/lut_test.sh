@@ -148,6 +148,18 @@ run '' lut --view aces2 --display hdr-1000nit-p3-d65 --size 3 -o "$TMP/hdr.clf"
 expect_status 0
 grep -q -- "--to p3-d65-pq --size 3; domain log2 shaper over \[0, 4096\]" "$TMP/hdr.clf" &&
     pass || fail "an HDR display's PQ encoding and limit" "$(head -3 "$TMP/hdr.clf")"
+# --stops and --domain override parts of the default domain, the log2 shaper staying.
+run '' lut --view aces2 --display sdr-100nit-rec709 --stops 20 --size 3 -o "$TMP/stops.clf"
+expect_status 0
+grep -q -- "domain log2 shaper over \[0, 1024\], 20 stops" "$TMP/stops.clf" &&
+    pass || fail "--stops with the default range" "$(head -3 "$TMP/stops.clf")"
+run '' lut --view aces2 --display sdr-100nit-rec709 --domain 0,64 --size 3 -o "$TMP/dom.clf"
+expect_status 0
+grep -q -- "domain log2 shaper over \[0, 64\], 18 stops" "$TMP/dom.clf" &&
+    pass || fail "--domain with the default stops" "$(head -3 "$TMP/dom.clf")"
+run '' lut --view aces2 --display sdr-100nit-rec709 --from acescct --stops 20 -o "$TMP/x.cube"
+expect_status 2
+expect_stderr_has "--stops applies to --shaper log2"
 run '' lut --view aces2 --display sdr-100nit-rec709 --method clamp -o "$TMP/x.clf"
 expect_status 2
 expect_stderr_has "no --method, --param or --inverse"

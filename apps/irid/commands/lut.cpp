@@ -98,18 +98,22 @@ int run_display_lut(const LutOptions& o) {
     } catch (const Error& e) {
         throw UsageError(std::string("--view/--from/--to: ") + e.what());
     }
+    // The library's domain for the format, or for a .clf (the range, the stops) when --shaper
+    // names one; --shaper, --domain and --stops override its parts.
     LutDomain domain;
+    try {
+        domain = display_lut_domain(*transform, o.shaper_option->count() > 0 ? LutFormat::clf : format);
+    } catch (const Error& e) {
+        throw UsageError(o.out + ": " + e.what());
+    }
     if (o.shaper_option->count() > 0 || o.domain_option->count() > 0 || o.stops_option->count() > 0) {
-        domain = make_domain(o);
+        LutOptions given = o;
+        if (o.shaper_option->count() == 0) given.shaper = domain.shaper == LutShaper::log2 ? "log2" : "none";
+        if (o.stops_option->count() == 0) given.stops = domain.stops;
         if (o.domain_option->count() == 0) {
-            domain.max = display_lut_domain(*transform, LutFormat::clf).max;  // the forward limit
+            given.domain = format_shortest(domain.min) + "," + format_shortest(domain.max);
         }
-    } else {
-        try {
-            domain = display_lut_domain(*transform, format);
-        } catch (const Error& e) {
-            throw UsageError(o.out + ": " + e.what());
-        }
+        domain = make_domain(given);
     }
     try {
         check_lut_format(format, domain);
