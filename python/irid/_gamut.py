@@ -255,6 +255,10 @@ def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None,
     range: (lo, hi), the source values the looks cover (default (-1, 16) for a linear source,
         (0, 1) for an encoded one); beyond them inputs clamp.
 
+    The display also gets a view "ACES 2.0 NAME" for each ACES 2.0 display whose default
+    encoding is ``display`` (``irid ocio-config --aces2 auto``), its transform baked in
+    luts/aces2-NAME.clf.
+
     Returns the path of config.ocio. Raises KeyError for unknown names, ValueError for bad
     values (a space that is not RGB, a method named twice, a bad range), OSError when a file
     cannot be written.
@@ -263,7 +267,7 @@ def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None,
     >>> with tempfile.TemporaryDirectory() as folder:
     ...     path = irid.write_ocio_config(folder, methods=["clamp", "smits"], size=5)
     ...     os.path.basename(path), sorted(os.listdir(os.path.join(folder, "luts")))
-    ('config.ocio', ['irid-clamp.clf', 'irid-smits.clf'])
+    ('config.ocio', ['aces2-sdr-100nit-rec709-d60-in-rec709-d65.clf', 'aces2-sdr-100nit-rec709.clf', 'irid-clamp.clf', 'irid-smits.clf'])
     """
     names = list(_names(methods, "methods")) if methods is not None else []
     if range is not None:

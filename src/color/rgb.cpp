@@ -27,6 +27,24 @@ constexpr double rec709_beta = 0.018;
 constexpr double rec2020_alpha = 1.09929682680944;
 constexpr double rec2020_beta = 0.018053968510807;
 
+// ACEScct, Academy S-2016-001 §4.4: the break X_BRK = 0.0078125 (2^-7), its code value
+// Y_BRK = 0.155251141552511, the toe's slope A = 10.5402377416545 and offset B =
+// 0.0729055341958355, and the log piece (log2 v + 9.72) / 17.52.
+constexpr double acescct_x_break = 0.0078125;
+constexpr double acescct_y_break = 0.155251141552511;
+constexpr double acescct_a = 10.5402377416545;
+constexpr double acescct_b = 0.0729055341958355;
+
+double acescct_encode(double v) noexcept {
+    if (v <= acescct_x_break) return acescct_a * v + acescct_b;
+    return (std::log2(v) + 9.72) / 17.52;
+}
+
+double acescct_decode(double e) noexcept {
+    if (e <= acescct_y_break) return (e - acescct_b) / acescct_a;
+    return std::exp2(e * 17.52 - 9.72);
+}
+
 /// The BT.709-style curve: slope 4.5 below beta, alpha v^0.45 - (alpha - 1) above.
 double camera_encode(double v, double alpha, double beta) noexcept {
     return v < beta ? 4.5 * v : alpha * std::pow(v, 0.45) - (alpha - 1.0);
@@ -153,7 +171,8 @@ std::optional<TransferFunction::Parameters> TransferFunction::parameters() const
         case Kind::gamma: return Parameters{m_gamma, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         case Kind::parametric: return m_params;
         case Kind::sampled:
-        case Kind::pq: return std::nullopt;
+        case Kind::pq:
+        case Kind::acescct: return std::nullopt;
     }
     return std::nullopt;
 }
@@ -220,6 +239,7 @@ double TransferFunction::encode(double linear) const noexcept {
     switch (m_kind) {
         case Kind::linear: return linear;
         case Kind::pq: return pq_encode(std::isnan(linear) ? 0.0 : linear * pq_linear_nits);
+        case Kind::acescct: return acescct_encode(linear);
         case Kind::parametric:
         case Kind::sampled:
             // Mirrored by the sign of the input (a curve may decode below 0: negative offsets);
@@ -249,6 +269,7 @@ double TransferFunction::decode(double encoded) const noexcept {
     switch (m_kind) {
         case Kind::linear: return encoded;
         case Kind::pq: return pq_decode(encoded) / pq_linear_nits;
+        case Kind::acescct: return acescct_decode(encoded);
         case Kind::parametric:
         case Kind::sampled:
             if (std::isnan(encoded)) return encoded;
@@ -427,6 +448,18 @@ const RgbSpace& p3_d65_pq() {
     return space;
 }
 
+const RgbSpace& acescct() {
+    // Academy S-2016-001 (ACEScct) §4.1 and §4.4: AP1 primaries, the ACES white, the ACEScct curve.
+    static const RgbSpace space("acescct", {{0.713, 0.293}, {0.165, 0.830}, {0.128, 0.044}},
+                                aces_white_xy, TransferFunction(Kind::acescct));
+    return space;
+}
+
+std::span<const RgbSpace* const> log_rgb_spaces() {
+    static const std::array<const RgbSpace*, 1> spaces{&acescct()};
+    return spaces;
+}
+
 std::span<const RgbSpace* const> display_rgb_spaces() {
     static const std::array<const RgbSpace*, 5> spaces{&rec1886(), &rec1886_rec2020(), &p3_d65(), &rec2100_pq(),
                                                        &p3_d65_pq()};
@@ -442,7 +475,7 @@ std::span<const RgbSpace* const> builtin_rgb_spaces() {
 
 std::vector<std::string> rgb_space_names() {
     std::vector<std::string> names;
-    for (const auto list : {builtin_rgb_spaces(), display_rgb_spaces()})
+    for (const auto list : {builtin_rgb_spaces(), log_rgb_spaces(), display_rgb_spaces()})
         for (const RgbSpace* s : list) names.push_back(s->name());
     return names;
 }
@@ -451,8 +484,10 @@ const RgbSpace* find_rgb_space(std::string_view name) noexcept {
     for (const RgbSpace* space : builtin_rgb_spaces()) {
         if (space->name() == name) return space;
     }
-    for (const RgbSpace* space : display_rgb_spaces()) {
-        if (space->name() == name) return space;
+    for (const auto list : {log_rgb_spaces(), display_rgb_spaces()}) {
+        for (const RgbSpace* space : list) {
+            if (space->name() == name) return space;
+        }
     }
     return nullptr;
 }

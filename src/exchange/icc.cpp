@@ -382,11 +382,15 @@ std::string IccProfile::summary() const {
                        m_space ? "matrix/TRC" : m_not_exact + ", through Little CMS");
 }
 
+bool icc_curve_can_hold(const TransferFunction& t) noexcept { return t.decode(1.0) <= 1.0 + 1e-9; }
+
 std::vector<unsigned char> make_icc_profile(const RgbSpace& space, std::string_view description) {
     const TransferFunction& t = space.transfer();
-    if (t.kind() == TransferFunction::Kind::pq) {
-        throw Error("ICC profile of " + space.name() + ": its PQ (SMPTE ST 2084) signal is absolute "
-                    "luminance up to 10000 cd/m², which an ICC.1 tone curve (relative, to 1) cannot hold");
+    if (!icc_curve_can_hold(t)) {
+        throw Error("ICC profile of " + space.name() + ": its curve decodes the code value 1 to " +
+                    format_shortest(t.decode(1.0)) +
+                    " (PQ: absolute luminance up to 10000 cd/m²; ACEScct: scene light up to 222.86), "
+                    "which an ICC.1 tone curve (relative, 0 to 1) cannot hold");
     }
     Context ctx;
     Curve curve;
@@ -624,8 +628,8 @@ void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format) 
         }
     } else {
         image.color_space = space.name();
-        // No ICC.1 curve holds PQ: such a file carries the space's name alone.
-        if (space.transfer().kind() == TransferFunction::Kind::pq) {
+        // No ICC.1 curve holds PQ or ACEScct: such a file carries the space's name alone.
+        if (!icc_curve_can_hold(space.transfer())) {
             image.icc_profile.clear();
         } else {
             image.icc_profile = make_icc_profile(space);

@@ -308,21 +308,37 @@ double lut_unshape(const LutDomain& d, double s) noexcept {
     return d.min + e * (std::exp2(s * log_span(d)) - 1.0);
 }
 
-Lut3D bake_lut(const ClipPipeline& pipeline, int size, const LutDomain& domain, int threads) {
+Lut3D lut_grid(int size, const LutDomain& domain) {
     if (size < lut_min_size || size > lut_max_size) {
         throw Error("LUT size " + std::to_string(size) + ": valid " + std::to_string(lut_min_size) +
                     " to " + std::to_string(lut_max_size) + " (17, 33 and 65 are usual)");
     }
     check_lut_domain(domain, size);
+    Lut3D lut;
+    lut.size = size;
+    lut.domain = domain;
+    std::vector<float> axis(static_cast<std::size_t>(size));
+    for (int i = 0; i < size; ++i) axis[static_cast<std::size_t>(i)] = static_cast<float>(lut.node(i));
+    const std::size_t n = static_cast<std::size_t>(size) * size * size;
+    lut.values.resize(3 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        lut.values[3 * i + 0] = axis[i % size];
+        lut.values[3 * i + 1] = axis[(i / size) % size];
+        lut.values[3 * i + 2] = axis[i / (static_cast<std::size_t>(size) * size)];
+    }
+    return lut;
+}
+
+std::string describe_lut_domain(const LutDomain& domain) { return describe_domain(domain); }
+
+Lut3D bake_lut(const ClipPipeline& pipeline, int size, const LutDomain& domain, int threads) {
+    Lut3D lut = lut_grid(size, domain);
     if (threads < 0) throw Error("threads " + std::to_string(threads) + " must be >= 0 (0: all)");
     const ColorSpace& from = pipeline.from();
     if (!from.is_rgb() && from.family != SpaceFamily::xyz) {
         throw Error("a LUT's input must be an RGB space or xyz (one range on every axis), not " +
                     color_space_name(from));
     }
-    Lut3D lut;
-    lut.size = size;
-    lut.domain = domain;
     lut.source = color_space_name(pipeline.from());
     lut.destination = color_space_name(pipeline.to());
     std::string params;
@@ -336,16 +352,6 @@ Lut3D bake_lut(const ClipPipeline& pipeline, int size, const LutDomain& domain, 
                             lut.source, lut.destination,
                             peak != 1.0 ? " --max " + format_shortest(peak) : std::string(), size,
                             describe_domain(domain));
-
-    std::vector<float> axis(static_cast<std::size_t>(size));
-    for (int i = 0; i < size; ++i) axis[static_cast<std::size_t>(i)] = static_cast<float>(lut.node(i));
-    const std::size_t n = static_cast<std::size_t>(size) * size * size;
-    lut.values.resize(3 * n);
-    for (std::size_t i = 0; i < n; ++i) {
-        lut.values[3 * i + 0] = axis[i % size];
-        lut.values[3 * i + 1] = axis[(i / size) % size];
-        lut.values[3 * i + 2] = axis[i / (static_cast<std::size_t>(size) * size)];
-    }
     if (const auto bad = pipeline.find_unconvertible(std::span<const float>(lut.values))) {
         throw Error("the LUT's node " + std::to_string(*bad) + " cannot be converted from " +
                     lut.source + " (an xyY y of 0)");

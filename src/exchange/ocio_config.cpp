@@ -1,6 +1,8 @@
 #include <irid/exchange/ocio_config.h>
 
 #include <irid/error.h>
+#include <irid/exchange/display_lut.h>
+#include <irid/gamut/aces2_display.h>
 #include <irid/gamut/pipeline.h>
 #include <irid/io/output_file.h>
 #include <irid/color/numeric_table.h>
@@ -41,6 +43,12 @@ std::string encode_transform(const RgbSpace& space) {
             return fmt::format("!<ExponentTransform> {{value: [{0}, {0}, {0}, 1], style: mirror, "
                                "direction: inverse}}",
                                t.gamma());
+        case TransferFunction::Kind::acescct:
+            // OCIO 2.1 LogCameraTransform, forward = linear to log: y = log_side_slope · log2(x) +
+            // log_side_offset above lin_side_break, the linear toe of slope linear_slope below
+            // (its offset follows from continuity: 0.0729055341958355 of S-2016-001).
+            return "!<LogCameraTransform> {log_side_slope: 0.0570776255707763, log_side_offset: "
+                   "0.554794520547945, lin_side_break: 0.0078125, linear_slope: 10.5402377416545}";
         case TransferFunction::Kind::pq:
             // OCIO 2.1's built-in curve has irid's scale: linear 1.0 = 100 cd/m².
             return "!<BuiltinTransform> {style: \"CURVE - ST-2084_to_LINEAR\", direction: inverse}";
@@ -177,6 +185,34 @@ LutDomain ocio_look_domain(const OcioConfigOptions& o) {
     return d;
 }
 
+std::vector<std::string> ocio_aces2_displays(const OcioConfigOptions& o) {
+    std::vector<std::string> names;
+    if (!o.aces2_displays) {
+        if (!o.display.is_rgb()) return names;
+        const std::string shown = color_space_name(canonical(o.display));
+        for (const Aces2DisplaySpec& d : aces2_displays()) {
+            const RgbSpace* encoding = default_display_encoding(d);
+            if (encoding != nullptr && color_space_name(canonical(color_space(encoding->name()))) == shown) {
+                names.push_back(d.name);
+            }
+        }
+        return names;
+    }
+    for (const std::string& name : *o.aces2_displays) {
+        if (ascii_lower(name).rfind("custom:", 0) == 0) {
+            throw Error("ACES 2.0 display " + quote_untrusted(name, 200) +
+                        ": a config's views take built-in displays (irid display --list), whose names "
+                        "name its views and LUT files");
+        }
+        const Aces2DisplaySpec d = aces2_display(name);
+        if (std::find(names.begin(), names.end(), d.name) != names.end()) {
+            throw Error("the ACES 2.0 display " + d.name + " is named twice; each view is offered once");
+        }
+        names.push_back(d.name);
+    }
+    return names;
+}
+
 OcioConfig make_ocio_config(const OcioConfigOptions& o) {
     if (!o.source.is_rgb()) throw Error("the config's source must be an RGB space, not " + color_space_name(o.source));
     if (!o.display.is_rgb()) throw Error("the config's display must be an RGB space, not " + color_space_name(o.display));
@@ -217,6 +253,13 @@ OcioConfig make_ocio_config(const OcioConfigOptions& o) {
                                  clip_method_name(m), process_name, display_name);
         result.luts.emplace_back(fmt::format("luts/irid-{}.clf", clip_method_name(m)), std::move(lut));
     }
+    const std::vector<std::string> aces2 = ocio_aces2_displays(o);
+    for (const std::string& name : aces2) {
+        const DisplayTransform t(display_lut_options("aces2", name, reference_name, display_name));
+        Lut3D lut = bake_display_lut(t, o.size, display_lut_domain(t, LutFormat::clf), o.threads);
+        lut.title += "; the view 'ACES 2.0 " + name + "' of an OCIO config";
+        result.display_luts.emplace_back(fmt::format("luts/aces2-{}.clf", name), std::move(lut));
+    }
 
     Buffer out;
     const auto put = [&out]<class... A>(fmt::format_string<A...> f, A&&... a) {
@@ -241,7 +284,9 @@ OcioConfig make_ocio_config(const OcioConfigOptions& o) {
     for (const ClipMethod m : methods) {
         put("    - !<View> {{name: {0}, colorspace: {1}, looks: irid-{0}}}\n", clip_method_name(m), display_name);
     }
-    put("    - !<View> {{name: unclipped, colorspace: {}}}\n\n", display_name);
+    put("    - !<View> {{name: unclipped, colorspace: {}}}\n", display_name);
+    for (const std::string& name : aces2) put("    - !<View> {{name: ACES 2.0 {0}, colorspace: aces2-{0}}}\n", name);
+    put("\n");
     put("active_displays: []\nactive_views: []\n\nlooks:\n");
     for (const ClipMethod m : methods) {
         put("  - !<Look>\n    name: irid-{0}\n    process_space: {1}\n"
@@ -279,6 +324,13 @@ OcioConfig make_ocio_config(const OcioConfigOptions& o) {
             put("!<GroupTransform>\n      children:\n        - {}\n        - {}\n\n", to_process, encode);
         }
     }
+    for (const std::string& name : aces2) {
+        put("  - !<ColorSpace>\n    name: aces2-{0}\n    family: irid\n    encoding: {1}\n"
+            "    description: the ACES 2.0 Output Transform for {0}, as {2}, baked by irid\n"
+            "    isdata: false\n"
+            "    from_scene_reference: !<FileTransform> {{src: aces2-{0}.clf, interpolation: tetrahedral}}\n\n",
+            name, aces2_display(name).peak_nits > 100.0 ? "hdr-video" : "sdr-video", display_name);
+    }
     put("  - !<ColorSpace>\n    name: raw\n    family: irid\n    description: data, not colour\n"
         "    isdata: true\n");
     result.config = fmt::to_string(out);
@@ -290,6 +342,7 @@ void write_ocio_config(const std::filesystem::path& dir, const OcioConfig& confi
     std::filesystem::create_directories(dir / "luts", ec);
     if (ec) throw Error("cannot make the folder " + (dir / "luts").string() + ": " + ec.message());
     for (const auto& [name, lut] : config.luts) write_lut(dir / name, lut);
+    for (const auto& [name, lut] : config.display_luts) write_lut(dir / name, lut);
     io::write_output_file(dir / "config.ocio", config.config);
 }
 

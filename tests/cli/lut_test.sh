@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The contract of `irid lut` and `irid ocio-config`: a clip method baked as a .cube, .clf or .spi3d file (-o FILE, the
+# The contract of `irid lut` and `irid ocio-config`: a clip method (or, with --view, a display
+# transform) baked as a .cube, .clf or .spi3d file (-o FILE, the
 # format by the extension); exit statuses 0, 1 (the file cannot be written) and 2 (usage: the
 # valid values named). Expected files come from closed forms: clamp of a space onto itself is
 # the identity, so its nodes are the node inputs. Whether OpenColorIO and ffmpeg read the files
@@ -135,6 +136,66 @@ run '' lut --method smits -o "$TMP/missing/x.cube"
 expect_status 1
 expect_stderr_has "missing"
 
+# --- irid lut --view: a display transform baked ---------------------------------------------
+run '' lut --view aces2 --display sdr-100nit-rec709 --size 5 -o "$TMP/aces2.clf"
+expect_status 0
+expect_empty_stdout
+# The defaults: from aces2065-1 to the display's encoding, a log2 shaper up to the forward limit
+# (8 × 128 at 100 cd/m², ACES 2.0).
+grep -q -- "--from aces2065-1 --to srgb --size 5; domain log2 shaper over \[0, 1024\]" "$TMP/aces2.clf" &&
+    pass || fail "the title names the defaults" "$(head -3 "$TMP/aces2.clf")"
+run '' lut --view aces2 --display hdr-1000nit-p3-d65 --size 3 -o "$TMP/hdr.clf"
+expect_status 0
+grep -q -- "--to p3-d65-pq --size 3; domain log2 shaper over \[0, 4096\]" "$TMP/hdr.clf" &&
+    pass || fail "an HDR display's PQ encoding and limit" "$(head -3 "$TMP/hdr.clf")"
+# --stops and --domain override parts of the default domain, the log2 shaper staying.
+run '' lut --view aces2 --display sdr-100nit-rec709 --stops 20 --size 3 -o "$TMP/stops.clf"
+expect_status 0
+grep -q -- "domain log2 shaper over \[0, 1024\], 20 stops" "$TMP/stops.clf" &&
+    pass || fail "--stops with the default range" "$(head -3 "$TMP/stops.clf")"
+run '' lut --view aces2 --display sdr-100nit-rec709 --domain 0,64 --size 3 -o "$TMP/dom.clf"
+expect_status 0
+grep -q -- "domain log2 shaper over \[0, 64\], 18 stops" "$TMP/dom.clf" &&
+    pass || fail "--domain with the default stops" "$(head -3 "$TMP/dom.clf")"
+run '' lut --view aces2 --display sdr-100nit-rec709 --from acescct --stops 20 -o "$TMP/x.cube"
+expect_status 2
+expect_stderr_has "--stops applies to --shaper log2"
+run '' lut --view aces2 --display sdr-100nit-rec709 --method clamp -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "no --method, --param or --inverse"
+run '' lut --view aces2 --display sdr-100nit-rec709 --inverse -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--inverse"
+run '' lut --view aces2 -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--display"
+run '' lut --view aces3 --display sdr-100nit-rec709 -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "aces2"
+run '' lut --view aces2 --display nope -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "sdr-100nit-rec709"
+run '' lut --view aces2 --display sdr-100nit-p3-d60-in-xyz-e -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--to"
+# A .cube has no shaper: over linear ACES2065-1 it is refused, saying what to write instead;
+# over ACEScct code values it is uniform over [0, 1] (no LUT_3D_INPUT_RANGE).
+run '' lut --view aces2 --display sdr-100nit-rec709 -o "$TMP/x.cube"
+expect_status 2
+expect_stderr_has "acescct"
+expect_stderr_has ".clf"
+run '' lut --view aces2 --display sdr-100nit-rec709 --from srgb -o "$TMP/x.cube"
+expect_status 2
+expect_stderr_has "acescct"
+run '' lut --view aces2 --display sdr-100nit-rec709 --from acescct --size 3 -o "$TMP/cct.cube"
+expect_status 0
+expect_file_line "$TMP/cct.cube" 3 "LUT_3D_SIZE 3"
+grep -q "^# input: acescct; output: srgb" "$TMP/cct.cube" && pass || fail "the .cube names its spaces" "$(head -3 "$TMP/cct.cube")"
+run '' lut --display sdr-100nit-rec709 --method clamp -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--display applies to --view"
+[[ ! -e $TMP/x.clf && ! -e $TMP/x.cube ]] && pass || fail "nothing written after a refusal" "$(ls "$TMP")"
+
 # --- irid ocio-config ----------------------------------------------------------------------
 run '' ocio-config --methods smits,aces-rgc --size 5 -o "$TMP/cfg"
 expect_status 0
@@ -142,6 +203,23 @@ expect_stdout_has "2 looks"
 [[ -f $TMP/cfg/config.ocio && -f $TMP/cfg/luts/irid-smits.clf && -f $TMP/cfg/luts/irid-aces-rgc.clf ]] &&
     pass || fail "config.ocio and two LUTs" "$(ls -R "$TMP/cfg" 2>&1)"
 grep -q "looks: irid-aces-rgc" "$TMP/cfg/config.ocio" && pass || fail "a view with the look" "$(cat "$TMP/cfg/config.ocio")"
+# By default the ACES 2.0 displays encoded in sRGB are views, each through its baked LUT.
+expect_stdout_has "2 ACES 2.0 views"
+grep -q "name: ACES 2.0 sdr-100nit-rec709, colorspace: aces2-sdr-100nit-rec709" "$TMP/cfg/config.ocio" &&
+    [[ -f $TMP/cfg/luts/aces2-sdr-100nit-rec709.clf ]] && pass ||
+    fail "the ACES 2.0 view and its LUT" "$(ls -R "$TMP/cfg" 2>&1)"
+run '' ocio-config --methods clamp --size 5 --aces2 none -o "$TMP/noaces"
+expect_status 0
+expect_stdout_has "0 ACES 2.0 views"
+run '' ocio-config --aces2 sdr-100nit-rec709,nope -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "nope"
+run '' ocio-config --aces2 sdr-100nit-rec709,sdr-100nit-rec709 -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "named twice"
+run '' ocio-config --aces2 custom:peak=100,limiting=rec709 -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "built-in displays"
 run '' ocio-config
 expect_status 2
 expect_stderr_has "-o DIR"

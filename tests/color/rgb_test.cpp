@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 namespace irid {
@@ -371,6 +373,44 @@ TEST(RgbSpace, DisplayEncodingsAreNamedSpacesButNotWorkingSpaces) {
         for (const RgbSpace* w : builtin_rgb_spaces()) EXPECT_NE(w, s);
     }
     EXPECT_EQ(display_rgb_spaces().size(), 5U);
+}
+
+TEST(TransferFunction, AcesCctMatchesS2016001) {
+    // Academy S-2016-001 §4.4: the toe 10.5402377416545 x + 0.0729055341958355 to x = 2^-7,
+    // whose code value is 0.155251141552511; above, (log2 x + 9.72) / 17.52.
+    const TransferFunction& t = acescct().transfer();
+    EXPECT_EQ(t.kind(), TransferFunction::Kind::acescct);
+    EXPECT_NEAR(t.encode(0.0), 0.0729055341958355, 1e-15);
+    EXPECT_NEAR(t.encode(0.0078125), 0.155251141552511, 1e-14);
+    EXPECT_NEAR(t.encode(0.18), (std::log2(0.18) + 9.72) / 17.52, 1e-15);
+    EXPECT_NEAR(t.encode(0.18), 0.4135884, 1e-7);  // the ACEScct mid grey ACES documents
+    EXPECT_NEAR(t.encode(1.0), 9.72 / 17.52, 1e-15);
+    // Not mirrored: a negative takes the toe (S-2016-001 defines it on all reals).
+    EXPECT_NEAR(t.encode(-0.01), 0.0729055341958355 - 0.105402377416545, 1e-15);
+    EXPECT_NEAR(t.decode(1.0), std::exp2(7.8), 1e-10);  // 222.86
+    EXPECT_NEAR(t.decode(0.0), -0.0729055341958355 / 10.5402377416545, 1e-15);
+    // The pieces meet at the break (value and, nearly, slope).
+    const double h = 1e-9;
+    EXPECT_NEAR(t.encode(0.0078125 + h), t.encode(0.0078125), 1e-7);
+    EXPECT_NEAR((t.encode(0.0078125 + h) - t.encode(0.0078125)) / h, 10.5402377416545, 1e-4);
+    for (const double v : {-5.0, -0.5, -1e-6, 0.0, 1e-6, 0.0078125, 0.0078126, 0.18, 1.0, 16.0, 222.86, 65504.0}) {
+        EXPECT_NEAR(t.decode(t.encode(v)), v, 1e-12 * std::max(1.0, std::abs(v))) << v;
+    }
+    for (const double e : {-0.5, 0.0, 0.1, 0.155251141552511, 0.2, 0.5, 1.0, 1.5}) {
+        EXPECT_NEAR(t.encode(t.decode(e)), e, 1e-13) << e;
+    }
+}
+
+TEST(RgbSpace, AcesCctIsAP1WithTheAcesWhiteAndNamedButNoWorkingSpace) {
+    const RgbSpace& s = acescct();
+    EXPECT_EQ(s.name(), "acescct");
+    EXPECT_EQ(find_rgb_space("acescct"), &s);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) EXPECT_EQ(s.to_xyz_matrix()[i][j], acescg().to_xyz_matrix()[i][j]);
+    }
+    for (const RgbSpace* w : builtin_rgb_spaces()) EXPECT_NE(w, &s);
+    const std::vector<std::string> names = rgb_space_names();
+    EXPECT_NE(std::find(names.begin(), names.end(), "acescct"), names.end());
 }
 
 }  // namespace

@@ -301,5 +301,28 @@ TEST(ImageSpace, ProfileThenChromaticitiesThenTheAssumption) {
     EXPECT_THROW((void)image_space(image, "a.png"), Error);
 }
 
+TEST(IccProfile, ACurveThatDecodesAboveOneHasNoProfileAndItsImagesNone) {
+    // ACEScct decodes 1 to 2^7.8 = 222.86 and PQ (irid's scale) to 100; an ICC.1 curve holds 0 to 1.
+    EXPECT_FALSE(icc_curve_can_hold(acescct().transfer()));
+    EXPECT_FALSE(icc_curve_can_hold(rec2100_pq().transfer()));
+    EXPECT_TRUE(icc_curve_can_hold(srgb().transfer()));
+    EXPECT_TRUE(icc_curve_can_hold(p3_d65().transfer()));
+    for (const RgbSpace* s : {&acescct(), &p3_d65_pq()}) {
+        try {
+            (void)make_icc_profile(*s);
+            ADD_FAILURE() << s->name() << " got a profile";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("cannot hold"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find(s->name()), std::string::npos) << e.what();
+        }
+    }
+    io::Image image;
+    image.channels = 3;
+    image.icc_profile = {1, 2, 3};
+    tag_image(image, acescct(), io::ImageFormat::tiff);
+    EXPECT_EQ(image.color_space, "acescct");
+    EXPECT_TRUE(image.icc_profile.empty());
+}
+
 }  // namespace
 }  // namespace irid

@@ -2,6 +2,7 @@
 // Nuke and ffmpeg.
 //
 //   irid lut --method M [--param k=v] --from SPACE --to SPACE [--size N] [--shaper log2] -o FILE
+//   irid lut --view aces2 --display NAME [--from SPACE] [--to SPACE] [--size N] -o FILE.clf
 //
 // The pipeline is `irid clip`'s (irid/gamut/pipeline.h); the baking and the formats are the
 // library's (irid/exchange/lut.h); this file parses.
@@ -11,6 +12,7 @@
 
 #include <irid/color/numeric_table.h>
 #include <irid/error.h>
+#include <irid/exchange/display_lut.h>
 #include <irid/exchange/lut.h>
 #include <irid/io/output_file.h>
 #include <irid/text_input.h>
@@ -29,7 +31,13 @@ struct LutOptions : PipelineArgs {
     std::string domain;
     int stops = 14;
     std::string out;
+    std::string view, display;
     const CLI::Option* stops_option = nullptr;
+    const CLI::Option* shaper_option = nullptr;
+    const CLI::Option* domain_option = nullptr;
+    const CLI::Option* from_option = nullptr;
+    const CLI::Option* to_option = nullptr;
+    const CLI::Option* max_option = nullptr;
 };
 
 LutDomain make_domain(const LutOptions& o) {
@@ -55,15 +63,73 @@ LutDomain make_domain(const LutOptions& o) {
     return d;
 }
 
-int run_lut(const LutOptions& o) {
+LutFormat output_format(const LutOptions& o) {
     if (o.out.empty()) throw UsageError("-o FILE is required (.cube, .clf or .spi3d)");
-    LutFormat format{};
-    LutDomain domain;
     try {
-        format = lut_format_for(o.out);
+        return lut_format_for(o.out);
     } catch (const Error& e) {
         throw UsageError(std::string("-o: ") + e.what());
     }
+}
+
+/// irid lut --view: the display transform baked; the defaults are the library's.
+int run_display_lut(const LutOptions& o) {
+    if (!o.method.empty() || !o.params.empty() || o.inverse) {
+        throw UsageError("--view bakes a display transform; it takes no --method, --param or --inverse");
+    }
+    if (o.display.empty()) throw UsageError("--view " + o.view + " needs --display NAME (irid display --list)");
+    if (o.max_option->count() > 0) throw UsageError("--max applies to --method; a display has its own peak");
+    const LutFormat format = output_format(o);
+    try {
+        (void)aces2_display(o.display);
+    } catch (const Error& e) {
+        throw UsageError(std::string("--display: ") + e.what());
+    }
+    DisplayTransformOptions options;
+    try {
+        options = display_lut_options(o.view, o.display, o.from_option->count() > 0 ? o.from : "aces2065-1",
+                                      o.to_option->count() > 0 ? o.to : "");
+    } catch (const Error& e) {
+        throw UsageError(std::string("--to: ") + e.what());
+    }
+    std::unique_ptr<DisplayTransform> transform;
+    try {
+        transform = std::make_unique<DisplayTransform>(options);
+    } catch (const Error& e) {
+        throw UsageError(std::string("--view/--from/--to: ") + e.what());
+    }
+    // The library's domain for the format, or for a .clf (the range, the stops) when --shaper
+    // names one; --shaper, --domain and --stops override its parts.
+    LutDomain domain;
+    try {
+        domain = display_lut_domain(*transform, o.shaper_option->count() > 0 ? LutFormat::clf : format);
+    } catch (const Error& e) {
+        throw UsageError(o.out + ": " + e.what());
+    }
+    if (o.shaper_option->count() > 0 || o.domain_option->count() > 0 || o.stops_option->count() > 0) {
+        LutOptions given = o;
+        if (o.shaper_option->count() == 0) given.shaper = domain.shaper == LutShaper::log2 ? "log2" : "none";
+        if (o.stops_option->count() == 0) given.stops = domain.stops;
+        if (o.domain_option->count() == 0) {
+            given.domain = format_shortest(domain.min) + "," + format_shortest(domain.max);
+        }
+        domain = make_domain(given);
+    }
+    try {
+        check_lut_format(format, domain);
+    } catch (const Error& e) {
+        throw UsageError(o.out + ": " + e.what());
+    }
+    (void)io::check_output_path(o.out);  // refuse a directory before baking
+    write_lut(o.out, bake_display_lut(*transform, o.size, domain, o.threads));
+    return exit_success;
+}
+
+int run_lut(const LutOptions& o) {
+    if (!o.view.empty()) return run_display_lut(o);
+    if (!o.display.empty()) throw UsageError("--display applies to --view");
+    const LutFormat format = output_format(o);
+    LutDomain domain;
     domain = make_domain(o);
     try {
         check_lut_format(format, domain);
@@ -92,31 +158,36 @@ void add_lut_command(CLI::App& app, Runner& runner) {
         "Bake a clip method (or compression) as a 3D LUT for OpenColorIO, DaVinci Resolve, Nuke "
         "and ffmpeg; the format is FILE's extension");
     cmd->add_option("--method", o->method, "Clipping method: " + clip_method_names());
+    cmd->add_option("--view", o->view,
+                    "Bake a display transform instead of a method: " + join(display_views()) +
+                        " (with --display; --from defaults to aces2065-1, --to to the display's "
+                        "encoding, a .clf to the log2 shaper over [0, the forward limit])");
+    cmd->add_option("--display", o->display, "The display of --view (irid display --list)");
     cmd->add_option("--param", o->params,
                     "A method's parameter, name=value (repeatable): " + clip_parameter_help())
         ->allow_extra_args(false);
     cmd->add_flag("--inverse", o->inverse,
                   "Bake the method's inverse (aces-rgc, smits-soft: undo a compression)");
-    cmd->add_option("--from", o->from,
+    o->from_option = cmd->add_option("--from", o->from,
                     "The LUT's input space: an RGB space (" + join(rgb_space_names()) +
                         ") or xyz")
         ->capture_default_str();
-    cmd->add_option("--to", o->to,
+    o->to_option = cmd->add_option("--to", o->to,
                     "The LUT's output space, whose linear cube [0, max]^3 is the gamut: values "
                     "encoded with its transfer function for an encoded name (srgb), linear for "
                     "a -linear name")
         ->capture_default_str();
-    cmd->add_option("--max", o->max, "Peak of the destination gamut (HDR), > 0")->capture_default_str();
+    o->max_option = cmd->add_option("--max", o->max, "Peak of the destination gamut (HDR), > 0")->capture_default_str();
     cmd->add_option("--size", o->size,
                     "Nodes per axis, " + std::to_string(lut_min_size) + " to " +
                         std::to_string(lut_max_size) + " (17, 33 and 65 are usual)")
         ->check(whole_number_in(lut_min_size, lut_max_size))
         ->capture_default_str();
-    cmd->add_option("--shaper", o->shaper,
+    o->shaper_option = cmd->add_option("--shaper", o->shaper,
                     "none: nodes uniform over the domain; log2: nodes uniform in stops below the "
                     "domain's top (.clf only; for linear and HDR sources)")
         ->capture_default_str();
-    cmd->add_option("--domain", o->domain,
+    o->domain_option = cmd->add_option("--domain", o->domain,
                     "The inputs covered on every axis, LO,HI (default 0,MAX); inputs beyond are "
                     "clamped. .spi3d covers 0,1 only");
     o->stops_option = cmd->add_option("--stops", o->stops,

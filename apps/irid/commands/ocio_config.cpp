@@ -33,6 +33,7 @@ struct OcioConfigArgs {
     int size = 33;
     std::string range;
     std::string adaptation = "bradford";
+    std::string aces2 = "auto";
     int threads = 0;
 };
 
@@ -60,6 +61,17 @@ int run_ocio_config(const OcioConfigArgs& a) {
             o.methods.push_back(parse_clip_method(a.methods.substr(start, comma - start)));
             start = comma + 1;
         }
+        if (a.aces2 == "none") {
+            o.aces2_displays.emplace();
+        } else if (a.aces2 != "auto") {
+            o.aces2_displays.emplace();
+            for (std::size_t at = 0; at <= a.aces2.size();) {
+                const std::size_t end = std::min(a.aces2.find(',', at), a.aces2.size());
+                o.aces2_displays->push_back(a.aces2.substr(at, end - at));
+                at = end + 1;
+            }
+        }
+        (void)ocio_aces2_displays(o);
     } catch (const Error& e) {
         throw UsageError(e.what());
     }
@@ -78,8 +90,9 @@ int run_ocio_config(const OcioConfigArgs& a) {
     // The folder as given, or quoted with escapes when it holds what a terminal would act on.
     const std::string quoted = quote_untrusted(a.out, 1000);
     const std::string shown = quoted == "'" + a.out + "'" ? a.out : quoted;
-    fmt::print("{}/config.ocio: {} looks on the display '{} display' ({} LUTs in {}/luts)\n", shown,
-               config.luts.size(), color_space_name(o.display), config.luts.size(), shown);
+    fmt::print("{}/config.ocio: {} looks and {} ACES 2.0 views on the display '{} display' ({} LUTs in {}/luts)\n",
+               shown, config.luts.size(), config.display_luts.size(), color_space_name(o.display),
+               config.luts.size() + config.display_luts.size(), shown);
     return exit_success;
 }
 
@@ -107,6 +120,11 @@ void add_ocio_config_command(CLI::App& app, Runner& runner) {
                     "0,1 for an encoded one); beyond them inputs clamp");
     cmd->add_option("--adaptation", a->adaptation,
                     "Chromatic adaptation where whites differ: bradford, cat02, von-kries, none")
+        ->capture_default_str();
+    cmd->add_option("--aces2", a->aces2,
+                    "ACES 2.0 views, each the display transform baked as a .clf: auto (every "
+                    "built-in display whose default encoding is --to), none, or displays "
+                    "comma-separated (irid display --list)")
         ->capture_default_str();
     cmd->add_option("--threads", a->threads, "Threads (0: all)")->capture_default_str();
     cmd->footer("\nExample: irid ocio-config --from acescg-linear --to srgb -o irid-ocio\n"

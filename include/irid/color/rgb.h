@@ -16,7 +16,8 @@ namespace irid {
 /// A transfer function (opto-electronic encoding) of an RGB space. Encoding maps linear light
 /// to the encoded signal, decoding is its exact inverse. Negative values are encoded with the
 /// sign mirrored, f(−v) = −f(v), so out-of-gamut values survive a round trip (as extended
-/// sRGB and CSS Color 4 do); PQ, an absolute display signal, is the exception (see Kind::pq).
+/// sRGB and CSS Color 4 do); PQ, an absolute display signal, and ACEScct, whose standard
+/// defines it on all reals by its own pieces, are the exceptions (see Kind::pq, Kind::acescct).
 class TransferFunction {
 public:
     enum class Kind {
@@ -38,6 +39,12 @@ public:
         /// (a negative one encodes as 0 cd/m², whose signal is 7.3e-7, not 0) and signals to
         /// [0, 1]; NaN encodes as 0 cd/m². The round trip is exact within [0, 100] only.
         pq,
+        /// ACEScct (Academy S-2016-001 §4.4): 10.5402377416545 v + 0.0729055341958355 for
+        /// v <= 0.0078125 (2^-7), else (log2 v + 9.72) / 17.52; decoded as its exact inverse
+        /// (the standard's clamp of decoded values at 65504, half float's largest, is left out).
+        /// Not mirrored: negatives take the linear toe, as the standard defines them, so
+        /// encode(0) = 0.0729055341958355 and decode(1) = 2^7.8 = 222.86.
+        acescct,
         /// ICC.1:2022 §10.18 parametricCurveType in its general form (function type 4): the
         /// decoding is (a e + b)^g + ec for e >= d, else c e + f. Types 0-3 are special cases
         /// of it (see parametric()).
@@ -158,6 +165,13 @@ private:
 /// ACEScg: AP1 primaries, the ACES white, linear (Academy S-2014-004). Named "acescg".
 [[nodiscard]] const RgbSpace& acescg();
 
+/// ACEScct: AP1 primaries, the ACES white, the ACEScct log curve (Academy S-2016-001;
+/// TransferFunction::Kind::acescct). Named "acescct": a grading (log) space, not a working
+/// space: builtin_rgb_spaces() leaves it out, as its code value 1 decodes to 222.86, which a
+/// working space's cube [0, 1]³, its ICC profile and the figures of the built-in spaces do not
+/// take; rgb_space_names() and find_rgb_space() know it (log_rgb_spaces()).
+[[nodiscard]] const RgbSpace& acescct();
+
 // The display encodings: how a display's signal is written to a file, for the display
 // transforms (irid/gamut/display_transform.h). Their linear values are display light with
 // 1.0 = 100 cd/m². They are named spaces like the ones above (convert, clip and Python take
@@ -184,11 +198,13 @@ private:
 /// The display encodings, in a stable order: rec1886, rec1886-rec2020, p3-d65, rec2100-pq,
 /// p3-d65-pq.
 [[nodiscard]] std::span<const RgbSpace* const> display_rgb_spaces();
-/// The names of the working spaces and then of the display encodings (the names
-/// find_rgb_space knows), in that stable order.
+/// The log (grading) encodings: acescct.
+[[nodiscard]] std::span<const RgbSpace* const> log_rgb_spaces();
+/// The names of the working spaces, then of the log encodings and of the display encodings (the
+/// names find_rgb_space knows), in that stable order.
 [[nodiscard]] std::vector<std::string> rgb_space_names();
 /// The built-in space with this name ("srgb", "display-p3", "rec2020", "adobe-rgb",
-/// "smpte-c", "ntsc1953", "aces2065-1", "acescg", or a display encoding), or nullptr.
+/// "smpte-c", "ntsc1953", "aces2065-1", "acescg", "acescct", or a display encoding), or nullptr.
 [[nodiscard]] const RgbSpace* find_rgb_space(std::string_view name) noexcept;
 
 }  // namespace irid

@@ -79,12 +79,16 @@ private:
     std::shared_ptr<const Transform> m_transform;
 };
 
+/// Whether an ICC.1 tone curve (relative, code value 1 to linear 1) can hold the curve: not
+/// when it decodes 1 above 1 (PQ: 100 with irid's scale; ACEScct: 222.86).
+[[nodiscard]] bool icc_curve_can_hold(const TransferFunction& curve) noexcept;
+
 /// The ICC version 4.3 display profile of `space` (see the file comment), built by lcms2, with
 /// `description` ("" for "NAME (irid)") as its description tag and an MD5 profile ID. A sampled
 /// curve is written as a curveType table of its samples. The profile is read back before it is
 /// returned: throws irid::Error when lcms2 fails or when the profile would not give the same
 /// space within 1e-4 (primaries, white, decoded curve): colorants beyond the range of ICC's
-/// s15Fixed16Number, a sampled curve beyond [0, 1], a PQ curve (absolute, up to 10000 cd/m²).
+/// s15Fixed16Number, a sampled curve beyond [0, 1], or a curve icc_curve_can_hold refuses.
 [[nodiscard]] std::vector<unsigned char> make_icc_profile(const RgbSpace& space,
                                                           std::string_view description = {});
 
@@ -140,7 +144,7 @@ void check_tags_agree(const io::Image& image, const RgbSpace& space, const std::
 
 /// Marks `image`, about to be written to a file of `format`, as holding values of `space`:
 /// color_space = the space's name (with "-linear" for EXR), and for PNG and TIFF the space's
-/// ICC profile (make_icc_profile; none for a PQ space, which no ICC.1 curve holds), for EXR its chromaticities and, when the white is not D65's
+/// ICC profile (make_icc_profile; none for a curve icc_curve_can_hold refuses: PQ, ACEScct), for EXR its chromaticities and, when the white is not D65's
 /// (0.3127, 0.3290), the adoptedNeutral that tells readers assuming D65 otherwise. EXR values
 /// are linear, PNG and TIFF values encoded with the space's curve. An image of fewer than three
 /// channels (grey) gets only the name: an RGB profile does not describe it.

@@ -62,6 +62,8 @@ struct LutDomain {
 void check_lut_domain(const LutDomain& domain);
 /// The same, and for LutShaper::nodes one node per node of a LUT of `size`.
 void check_lut_domain(const LutDomain& domain, int size);
+/// The domain in words, as LUT titles name it ("log2 shaper over [0, 16], 14 stops").
+[[nodiscard]] std::string describe_lut_domain(const LutDomain& domain);
 /// The shaper s: [min, max] → [0, 1] (clamping) and its inverse ((x − min) / (max − min) for no
 /// shaper).
 [[nodiscard]] double lut_shape(const LutDomain& domain, double x) noexcept;
@@ -86,6 +88,11 @@ struct Lut3D {
 /// The smallest and largest sizes bake_lut accepts (17, 33 and 65 are the usual ones).
 inline constexpr int lut_min_size = 2;
 inline constexpr int lut_max_size = 129;
+
+/// A LUT of `size` over the domain whose values are its own nodes (the identity), ready to be run
+/// through a transform in place; bake_lut and bake_display_lut (display_lut.h) start from it.
+/// Throws irid::Error for a size outside [lut_min_size, lut_max_size] or a bad domain.
+[[nodiscard]] Lut3D lut_grid(int size, const LutDomain& domain);
 
 /// Bakes the pipeline at every node with its float path (the batch kernels) on up to `threads`
 /// threads (0: all). Throws irid::Error for a size outside [lut_min_size, lut_max_size], a bad

@@ -17,6 +17,12 @@
 // between nodes inside the gamut only: a method that leaves such colours alone (every hard one)
 // leaves them alone through the LUT too, to float rounding. One view per method and an
 // "unclipped" view (what the display does without a look) are offered on one display.
+//
+// ACES 2.0 views: for each chosen ACES 2.0 display (by default every built-in one whose default
+// encoding is the config's display space), a colour space "aces2-<display>" whose transform from
+// the reference is the display transform baked as a .clf (display_lut.h: the log2 shaper over
+// [0, the forward limit]) in DIR/luts/aces2-<display>.clf, and a view "ACES 2.0 <display>" on the
+// display. OpenColorIO 2.1, which has no ACES 2.0, shows it through the LUT.
 
 #include <irid/color/adaptation.h>
 #include <irid/color/convert.h>
@@ -45,6 +51,9 @@ struct OcioConfigOptions {
     /// the source's own gamut), [0, 1] for an encoded one (its code values).
     std::optional<std::pair<double, double>> source_range;
     ChromaticAdaptation adaptation = ChromaticAdaptation::bradford;
+    /// The built-in ACES 2.0 displays (aces2_display.h) offered as views; unset: every one whose
+    /// default encoding is `display`; empty: none.
+    std::optional<std::vector<std::string>> aces2_displays;
     int threads = 0;
 };
 
@@ -72,10 +81,19 @@ struct OcioConfig {
     /// The looks' LUTs: file names relative to the folder ("luts/irid-smits.clf") and the LUTs,
     /// whose outputs are in the source space.
     std::vector<std::pair<std::string, Lut3D>> luts;
+    /// The ACES 2.0 views' LUTs ("luts/aces2-sdr-100nit-rec709.clf"), from the reference space
+    /// to the display space.
+    std::vector<std::pair<std::string, Lut3D>> display_luts;
 };
 
+/// The ACES 2.0 displays the config offers as views: the options' list, or its default. Throws
+/// irid::UnknownNameError for an unknown display and irid::Error for a custom one (a config
+/// names its views and LUT files by built-in names).
+[[nodiscard]] std::vector<std::string> ocio_aces2_displays(const OcioConfigOptions& options);
+
 /// Builds the config and bakes its LUTs. Throws irid::Error for a source or display that is not
-/// an RGB space, a display transfer OCIO cannot express, or bad LUT settings.
+/// an RGB space, a display transfer OCIO cannot express, bad LUT settings, or ACES 2.0 displays
+/// ocio_aces2_displays refuses.
 [[nodiscard]] OcioConfig make_ocio_config(const OcioConfigOptions& options);
 
 /// Writes make_ocio_config's files into `dir` (created if missing; an existing config.ocio and
