@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <system_error>
 
@@ -60,6 +61,10 @@ CLI::Validator whole_number_in(long long lo, long long hi) {
             return {};
         },
         "INT in " + allowed);
+}
+
+bool is_exr_path(const std::string& path) {
+    return ascii_lower(std::filesystem::path(path).extension().string()) == ".exr";
 }
 
 std::string join(const std::vector<std::string>& names) {

@@ -66,4 +66,8 @@ void write_stdout(const std::string& text);
 /// "a, b, c" for messages.
 [[nodiscard]] std::string join(const std::vector<std::string>& names);
 
+/// The image file's name ends in .exr (any case): OpenEXR, whose colour is premultiplied by its
+/// alpha. Any other name (an input OpenImageIO reads: .hdr, .dpx, ...) is not.
+[[nodiscard]] bool is_exr_path(const std::string& path);
+
 }  // namespace irid::cli

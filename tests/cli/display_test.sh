@@ -93,6 +93,20 @@ run $'0.5,0.4,0.3\n' display --display sdr-100nit-rec709 --bits 16
 expect_status 2
 expect_stderr_has "--bits"
 
+# --- an image OpenImageIO reads but irid does not write (.hdr) is read as any other -----------
+if command -v oiiotool >/dev/null; then
+    oiiotool --pattern constant:color=0.18,0.18,0.18 4x2 3 -d float -o "$TMP/grey.hdr" 2>/dev/null
+    "$IRID" display --display sdr-100nit-rec709 "$TMP/grey.hdr" "$TMP/grey.png" </dev/null >"$TMP/out" 2>"$TMP/err"
+    STATUS=$?
+    RAN="irid display --display sdr-100nit-rec709 grey.hdr grey.png"
+    expect_status 0
+    # 18 % grey is shown at 10 cd/m² on the 100 cd/m² display: sRGB 0.349, code 89.
+    code=$(oiiotool --dumpdata "$TMP/grey.png" 2>/dev/null | awk '/Pixel \(0, 0\)/ { print $4 }')
+    if [[ "$code" == "89" || "$code" == "89.0" ]]; then pass; else fail "the grey's code 89" "${code:-nothing}"; fi
+else
+    fail "oiiotool (openimageio-tools) for the .hdr check" "not found"
+fi
+
 # --- usage errors (2) and bad data (1) ---------------------------------------------------------
 run $'1,1,1\n' display --display hdr-9000nit-p3
 expect_status 2

@@ -127,12 +127,6 @@ int run_clip_csv(const ClipOptions& o, const ClipPipeline& p) {
 
 // --- images ----------------------------------------------------------------------------------
 
-bool is_exr(const std::string& path) {
-    std::string e = std::filesystem::path(path).extension().string();
-    for (char& ch : e) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    return e == ".exr";
-}
-
 int run_clip_image(const ClipOptions& o, const ClipPipeline& p) {
     io::ImageFormat format{};
     try {
@@ -182,8 +176,8 @@ int run_clip_image(const ClipOptions& o, const ClipPipeline& p) {
                                                                                             : 8;
     const bool alpha = image.channel_index("A") >= 0;
     clip_image(image, channels, pipe,
-               ImageClipOptions{.premultiplied_in = alpha && is_exr(o.in),
-                                .premultiplied_out = alpha && is_exr(o.out),
+               ImageClipOptions{.premultiplied_in = alpha && is_exr_path(o.in),
+                                .premultiplied_out = alpha && is_exr_path(o.out),
                                 .encode = encoded_out,
                                 .threads = o.threads,
                                 .profile = source.file && source.file->profile ? source.file->profile.get() : nullptr},

@@ -65,10 +65,6 @@ int run_list() {
     return exit_success;
 }
 
-bool is_exr(const std::string& path) {
-    return io::image_format_for(path) == io::ImageFormat::exr;
-}
-
 int run_display_image(const DisplayOptions& o) {
     if (o.inverse) throw UsageError("--inverse takes CSV on stdin; an image goes forward, scene to display");
     io::ImageFormat format{};
@@ -96,7 +92,7 @@ int run_display_image(const DisplayOptions& o) {
     try {
         report = display_image(image, plan,
                                DisplayImageOptions{.from = from,
-                                                   .premultiplied_in = alpha && is_exr(o.in),
+                                                   .premultiplied_in = alpha && is_exr_path(o.in),
                                                    .premultiplied_out = alpha && !plan.encoded,
                                                    .threads = o.threads},
                                format, o.in);
