@@ -15,7 +15,6 @@
 namespace irid {
 namespace {
 
-constexpr double degrees_to_radians = std::numbers::pi / 180.0;
 /// The most entries a colour table may have: 10⁷ colours are 480 MB.
 constexpr double max_table_entries = 1e7;
 
