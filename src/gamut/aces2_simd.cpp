@@ -35,6 +35,8 @@ using aces2::response_scale;
 /// An inverse response beyond this (of response_scale, where it diverges) goes to the double
 /// path: the float inverse's conditioning there, and the reference's NaN from 400 on.
 constexpr double response_inverse_limit = 380.0;
+/// Where ResponseDifference takes its series: |c0 / c1 − 1| up to this.
+constexpr double response_series_reach = 0.125;
 /// Input channels beyond this magnitude go to the double path: the input matrix's float rounding
 /// of large terms that cancel.
 constexpr double large_input = 1e6;
@@ -71,12 +73,23 @@ HWY_INLINE V Pow(D d, V x, V e) {
                    hn::Mul(e, hn::Log(d, hn::Max(x, hn::Set(d, std::numeric_limits<T>::min())))));
 }
 
+/// (F_L |c|)^0.42, the power inside the response.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ResponsePower(D d, const Params<D>& p, V c) {
+    return Pow(d, hn::Mul(hn::Abs(c), hn::Set(d, p.fl_n)), C(d, response_exponent));
+}
+
+/// The response of c from its ResponsePower f (Response).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ResponseOfPower(D d, V c, V f) {
+    return hn::CopySign(
+        hn::Div(hn::Mul(C(d, response_scale), f), hn::Add(C(d, response_offset), f)), c);
+}
+
 /// The compressive response, mirrored for negatives (Aces2JmhModel: mirrored_response).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V Response(D d, const Params<D>& p, V c) {
-    const V f = Pow(d, hn::Mul(hn::Abs(c), hn::Set(d, p.fl_n)), C(d, response_exponent));
-    return hn::CopySign(
-        hn::Div(hn::Mul(C(d, response_scale), f), hn::Add(C(d, response_offset), f)), c);
+    return ResponseOfPower(d, c, ResponsePower(d, p, c));
 }
 
 /// Its inverse; |r| beyond response_inverse_limit is added to `hard`.
@@ -386,10 +399,73 @@ HWY_INLINE void Aab(D d, const Params<D>& p, V x0, V x1, V x2, V& A, V& a, V& b)
     Mul3(d, p.to_aab, Response(d, p, c0), Response(d, p, c1), Response(d, p, c2), A, a, b);
 }
 
-/// Aab and the Tonescale of A. The first in double when D is float: a and b are differences of the
-/// three responses, which cancel for all but the most saturated colours (in float the forward's
-/// M was off by up to 7e-4 and its hue by 0.02°, which moved outputs by up to 2.6e-5). The
-/// tonescale too when precise.
+/// (1 + t)^0.42 − 1 for |t| <= response_series_reach: its binomial series to degree 7, whose
+/// first dropped term is below 2e-8 of the sum there.
+constexpr std::array<double, 8> response_binomials() {
+    std::array<double, 8> b{};  // binomial(0.42, n), n = 0..7
+    b[0] = 1.0;
+    for (std::size_t n = 1; n < b.size(); ++n)
+        b[n] = b[n - 1] * (response_exponent - static_cast<double>(n - 1)) / static_cast<double>(n);
+    return b;
+}
+
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ResponseSeries(D d, V t) {
+    constexpr auto binomial = response_binomials();
+    V c = C(d, binomial[7]);
+    for (std::size_t n = 6; n >= 1; --n) c = hn::MulAdd(c, t, C(d, binomial[n]));
+    return hn::Mul(c, t);
+}
+
+/// Response(c0) − Response(c1) from c, their ResponsePower f and responses r, without the
+/// cancellation of r0 − r1: where c0 and c1 are positive and |c0 / c1 − 1| <=
+/// response_series_reach, S O (f0 − f1) / ((O + f0)(O + f1)) with f0 − f1 = f1 ((c0 / c1)^0.42 −
+/// 1) by ResponseSeries, exact to the rounding of c0 − c1; elsewhere r0 − r1 loses at most a
+/// factor of about 20 of the responses' rounding.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ResponseDifference(D d, V c0, V c1, V f0, V f1, V r0, V r1) {
+    const V zero = hn::Zero(d);
+    const V t = hn::Div(hn::Sub(c0, c1), hn::IfThenElse(hn::Gt(c1, zero), c1, C(d, 1.0)));
+    const auto near = hn::And(hn::And(hn::Gt(c0, zero), hn::Gt(c1, zero)),
+                              hn::Le(hn::Abs(t), C(d, response_series_reach)));
+    const V df = hn::Mul(f1, ResponseSeries(d, hn::IfThenElseZero(near, t)));
+    const V offset = C(d, response_offset);
+    const V exact = hn::Div(hn::Mul(C(d, response_scale * response_offset), df),
+                            hn::Mul(hn::Add(offset, f0), hn::Add(offset, f1)));
+    return hn::IfThenElse(near, exact, hn::Sub(r0, r1));
+}
+
+/// The model's A, a, b of cone signals c in float: A from the responses, and a and b from their
+/// differences (the opponent matrix's a and b rows sum to 0, Aces2JmhModel), each by
+/// ResponseDifference. a and b cancel for all but the most saturated colours: subtracting the
+/// float responses put M off by up to 7e-4 and its hue by 0.02°, which moved outputs by up to
+/// 2.6e-5.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void AabOfCones(D d, const Params<D>& p, V c0, V c1, V c2, V& A, V& a, V& b) {
+    const V f0 = ResponsePower(d, p, c0), f1 = ResponsePower(d, p, c1),
+            f2 = ResponsePower(d, p, c2);
+    const V r0 = ResponseOfPower(d, c0, f0), r1 = ResponseOfPower(d, c1, f1),
+            r2 = ResponseOfPower(d, c2, f2);
+    const auto& m = p.to_aab;
+    A = hn::MulAdd(hn::Set(d, m[2]), r2,
+                   hn::MulAdd(hn::Set(d, m[1]), r1, hn::Mul(hn::Set(d, m[0]), r0)));
+    const V d01 = ResponseDifference(d, c0, c1, f0, f1, r0, r1);
+    const V d21 = ResponseDifference(d, c2, c1, f2, f1, r2, r1);
+    a = hn::MulAdd(hn::Set(d, m[5]), d21, hn::Mul(hn::Set(d, m[3]), d01));
+    b = hn::MulAdd(hn::Set(d, m[8]), d21, hn::Mul(hn::Set(d, m[6]), d01));
+}
+
+/// AabOfCones of the input (InClamped).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void AabFloat(D d, const Params<D>& p, V x0, V x1, V x2, V& A, V& a, V& b) {
+    V r, g, bl, c0, c1, c2;
+    InClamped(d, p, x0, x1, x2, r, g, bl);
+    Mul3(d, p.to_cone, r, g, bl, c0, c1, c2);
+    AabOfCones(d, p, c0, c1, c2, A, a, b);
+}
+
+/// Aab and the Tonescale of A: when D is float and not precise, AabFloat; when precise, both in
+/// double.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void ToAab(D d, const Params<D>& p, const detail::Aces2Params<double>& pd, V x0, V x1,
                       V x2, V& A, V& a, V& bb, V& a_ts, V& j_ts, V& flag) {
@@ -397,19 +473,18 @@ HWY_INLINE void ToAab(D d, const Params<D>& p, const detail::Aces2Params<double>
         (void)pd;
         Aab(d, p, x0, x1, x2, A, a, bb);
         Tonescale(d, p, A, a_ts, j_ts, flag);
+    } else if (!p.precise) {
+        AabFloat(d, p, x0, x1, x2, A, a, bb);
+        Tonescale(d, p, A, a_ts, j_ts, flag);
     } else {
         const auto o = InDouble<6>(d, std::array<V, 3>{x0, x1, x2}, [&](auto dd, const auto& x) {
             std::array<hn::Vec<decltype(dd)>, 6> y;
             Aab(dd, pd, x[0], x[1], x[2], y[0], y[1], y[2]);
-            if (pd.precise) Tonescale(dd, pd, y[0], y[3], y[4], y[5]);
+            Tonescale(dd, pd, y[0], y[3], y[4], y[5]);
             return y;
         });
         A = o[0], a = o[1], bb = o[2];
-        if (p.precise) {
-            a_ts = o[3], j_ts = o[4], flag = o[5];
-        } else {
-            Tonescale(d, p, A, a_ts, j_ts, flag);
-        }
+        a_ts = o[3], j_ts = o[4], flag = o[5];
     }
 }
 
@@ -551,12 +626,16 @@ HWY_INLINE void StageIn(D d, const Params<D>& p, Aces2Kernel::Stage stage, V& x0
     const V zero = hn::Zero(d);
     switch (stage) {
         case Aces2Kernel::Stage::rgb_to_jmh: {
-            // Aab without InClamped's clamp: the stage is the model alone.
+            // As Aab and AabFloat, without InClamped's clamp: the stage is the model alone.
             V r, g, b, c0, c1, c2;
             Mul3(d, p.in, x0, x1, x2, r, g, b);
             Mul3(d, p.to_cone, r, g, b, c0, c1, c2);
-            Mul3(d, p.to_aab, Response(d, p, c0), Response(d, p, c1), Response(d, p, c2), x0, x1,
-                 x2);
+            if constexpr (sizeof(T) == 4) {
+                AabOfCones(d, p, c0, c1, c2, x0, x1, x2);
+            } else {
+                Mul3(d, p.to_aab, Response(d, p, c0), Response(d, p, c1), Response(d, p, c2), x0,
+                     x1, x2);
+            }
             return;
         }
         case Aces2Kernel::Stage::tonescale_and_chroma: {
@@ -587,14 +666,13 @@ HWY_INLINE void StageIn(D d, const Params<D>& p, Aces2Kernel::Stage stage, V& x0
     }
 }
 
-/// One vector of a stage as Forward computes it: in double what Forward takes in double (the
-/// model's A, a, b always; the tonescale, chroma and gamut compression when precise), unless
-/// in_float.
+/// One vector of a stage as Forward computes it: in double what Forward takes in double (every
+/// stage when precise), unless in_float.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void Stage(D d, const Params<D>& p, const detail::Aces2Params<double>& pd,
                       Aces2Kernel::Stage stage, bool in_float, V& x0, V& x1, V& x2) {
     const bool rgb = stage == Aces2Kernel::Stage::rgb_to_jmh;
-    if (in_float || !(rgb || p.precise)) {
+    if (in_float || !p.precise) {
         StageIn(d, p, stage, x0, x1, x2);
     } else {
         const auto o = InDouble<3>(d, std::array<V, 3>{x0, x1, x2}, [&](auto dd, const auto& x) {

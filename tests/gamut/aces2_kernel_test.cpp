@@ -195,6 +195,25 @@ TEST(Aces2Kernel, RandomColoursMatchTheDoubleChainForwardAndInverse) {
     }
 }
 
+// Near-neutral colours are where the model's opponent a and b are differences of nearly equal
+// responses: greys from 2^-16 to 2^6 with each channel off by up to 1e-3, 1e-5 and 1e-7 of it,
+// and the random colours, on every display.
+TEST(Aces2Kernel, NearNeutralColoursMatchTheDoubleChainOnEveryDisplay) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> stops(-16.0f, 6.0f), off(-1.0f, 1.0f);
+    std::vector<float> in = forward_colours(10000, 10);
+    for (const float spread : {1e-3f, 1e-5f, 1e-7f}) {
+        for (int i = 0; i < 10000; ++i) {
+            const float g = std::exp2(stops(rng));
+            for (int c = 0; c < 3; ++c) in.push_back(g * (1.0f + spread * off(rng)));
+        }
+    }
+    for (const Aces2DisplaySpec& spec : aces2_displays()) {
+        const Aces2Output out(spec);
+        EXPECT_LE(worst_error(out, false, in), tolerance) << spec.name;
+    }
+}
+
 TEST(Aces2Kernel, MatchesTheDoubleChainOnEveryCompiledTarget) {
     const Aces2Output sdr(aces2_display("sdr-100nit-rec709"));
     const Aces2Output hdr(aces2_display("hdr-4000nit-rec2020"));
