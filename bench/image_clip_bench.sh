@@ -28,32 +28,11 @@
 set -Eeuo pipefail
 trap 'echo "error: command failed at line $LINENO" >&2; exit 2' ERR
 
-usage() { sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//'; }
-if [[ $# -ge 1 && ( "$1" == "-h" || "$1" == "--help" ) ]]; then
-    usage
-    exit 0
-fi
-if [[ $# -lt 1 || $# -gt 4 ]]; then
-    usage >&2
-    exit 2
-fi
-irid=$1
-runs=${3:-5}
+# shellcheck source=bench/image_bench_lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/image_bench_lib.sh"
+image_bench_args 5 "$@"
 methods=${4:-smits}
 size=4096
-
-if [[ ! -x "$irid" ]]; then
-    echo "error: $irid is not an executable" >&2
-    exit 2
-fi
-if ! command -v oiiotool > /dev/null; then
-    echo "error: oiiotool not found (Debian: apt-get install openimageio-tools)" >&2
-    exit 2
-fi
-if ! [[ "$runs" =~ ^[1-9][0-9]*$ ]]; then
-    echo "error: RUNS must be a positive integer, not '$runs'" >&2
-    exit 2
-fi
 
 if [[ "$methods" == all ]]; then
     # The method list of --method's help line ("Clipping method: clamp, smits, ...").
@@ -66,14 +45,6 @@ if [[ "$methods" == all ]]; then
 fi
 IFS=, read -r -a method_list <<< "$methods"
 
-if [[ $# -ge 2 && -n "$2" ]]; then
-    work=$2
-    mkdir -p "$work"
-else
-    work=$(mktemp -d)
-    trap 'rm -rf "$work"' EXIT
-fi
-
 in=$work/in.exr
 oiiotool --pattern fill:topleft=1.6,-0.3,0.2:topright=-0.2,1.4,0.1:bottomleft=0.3,0.2,1.7:bottomright=1.2,1.2,-0.4 \
     "${size}x${size}" 3 -d float -o "$in"
@@ -84,19 +55,6 @@ pixels=$((size * size))
 within=$(oiiotool "$in" --rangecheck 0,0,0 1,1,1 2>&1 | awk '/within range/ { print $1 }' || true)
 outside=""
 if [[ "$within" =~ ^[0-9]+$ ]]; then outside=$((pixels - within)); fi
-
-# Wall-clock seconds of one run of the command.
-seconds() {
-    local start end
-    start=$(date +%s.%N)
-    "$@" > /dev/null
-    end=$(date +%s.%N)
-    awk -v a="$start" -v b="$end" 'BEGIN { printf "%.6f", b - a }'
-}
-# The smaller of two numbers ($2 when $1 is empty).
-smaller() {
-    if [[ -z "$1" ]] || awk -v a="$2" -v b="$1" 'BEGIN { exit !(a < b) }'; then echo "$2"; else echo "$1"; fi
-}
 
 # One untimed run of each to warm the page cache and the binaries.
 oiiotool "$in" -o "$work/out_io.exr" > /dev/null

@@ -5,7 +5,7 @@ from __future__ import annotations
 from . import _irid
 from ._args import _flag, _name, _whole
 
-__all__ = ["display_names", "display_transform"]
+__all__ = ["bake_display_lut", "display_names", "display_transform"]
 
 
 def display_names():
@@ -68,3 +68,31 @@ def display_transform(rgb, view="aces2", display=None, source="aces2065-1", targ
 
 
 _recent = {}
+
+
+def bake_display_lut(display, view="aces2", source="aces2065-1", target=None, size=33, format="clf",
+                     threads=0):
+    """Bakes a display transform as a 3D LUT (what ``irid lut --view`` writes): a :class:`Lut`.
+
+    display, view, source: as for :func:`display_transform` (forward only).
+    target: the display signal's space; default the display's own encoding ("srgb" for
+        sdr-100nit-rec709, "rec2100-pq" for hdr-1000nit-rec2020, ...).
+    size: nodes per axis, 2 to 129. format: the file the LUT is for, "clf", "cube" or "spi3d",
+        which decides its domain as ``irid lut --view`` does: a .clf over a linear source takes a
+        log2 shaper over [0, the rendering's forward limit] (18 stops); .cube and .spi3d carry no
+        shaper, so they need ``source="acescct"`` (its code values [0, 1]).
+    threads: threads to use, 0 for all.
+
+    Raises KeyError for unknown names and ValueError for bad values (a display without an RGB
+    encoding of its own and no ``target``, a .cube over a linear source). docs/DISPLAY.md
+    measures the LUT's ΔE2000 against the transform.
+
+    >>> import irid
+    >>> lut = irid.bake_display_lut("sdr-100nit-rec709", size=17)
+    >>> lut.size, lut.shaper, lut.domain, lut.stops     # 1024 = 8 (128 + 768 log(1) / log(100))
+    (17, 'log2', (0.0, 1024.0), 18)
+    """
+    return _irid.bake_display_lut(_name(view, "view"), _name(display, "display"), _name(source, "source"),
+                                  "" if target is None else _name(target, "target"),
+                                  _whole(size, "size", 2, 129), _name(format, "format"),
+                                  _whole(threads, "threads", 0, 1 << 20))

@@ -239,7 +239,7 @@ def bake_lut(method, source="srgb-linear", target="srgb", size=33, shaper="none"
 
 
 def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None, size=33,
-                      adaptation="bradford", threads=0, range=None):
+                      adaptation="bradford", threads=0, range=None, aces2=None):
     """Writes an OpenColorIO 2 config offering the clip methods as looks (``irid ocio-config``).
 
     dir: the folder (created if missing): config.ocio and luts/irid-METHOD.clf.
@@ -255,9 +255,9 @@ def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None,
     range: (lo, hi), the source values the looks cover (default (-1, 16) for a linear source,
         (0, 1) for an encoded one); beyond them inputs clamp.
 
-    The display also gets a view "ACES 2.0 NAME" for each ACES 2.0 display whose default
-    encoding is ``display`` (``irid ocio-config --aces2 auto``), its transform baked in
-    luts/aces2-NAME.clf.
+    aces2: the ACES 2.0 displays (:func:`display_names`) the display offers as views "ACES 2.0
+        NAME", each baked in luts/aces2-NAME.clf; None (``irid ocio-config --aces2 auto``):
+        every one whose default encoding is ``display``; [] (``--aces2 none``): none.
 
     Returns the path of config.ocio. Raises KeyError for unknown names, ValueError for bad
     values (a space that is not RGB, a method named twice, a bad range), OSError when a file
@@ -270,6 +270,7 @@ def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None,
     ('config.ocio', ['aces2-sdr-100nit-rec709-d60-in-rec709-d65.clf', 'aces2-sdr-100nit-rec709.clf', 'irid-clamp.clf', 'irid-smits.clf'])
     """
     names = list(_names(methods, "methods")) if methods is not None else []
+    aces2 = list(_names(aces2, "aces2")) if aces2 is not None else None
     if range is not None:
         range = tuple(_floats(range, "range"))
         if len(range) != 2:
@@ -277,7 +278,7 @@ def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None,
     return _irid.write_ocio_config(_path(dir), _name(source, "source"), _name(display, "display"),
                                    names, _whole(size, "size", 5, 129),
                                    _name(adaptation, "adaptation"),
-                                   _whole(threads, "threads", 0, 1 << 20), range)
+                                   _whole(threads, "threads", 0, 1 << 20), range, aces2)
 
 
 def clip_image(pixels, channels, method, source=None, target=None, premultiplied=False,

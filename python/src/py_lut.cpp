@@ -5,6 +5,7 @@
 #include "arrays.h"
 
 #include <irid/error.h>
+#include <irid/exchange/display_lut.h>
 #include <irid/exchange/lut.h>
 #include <irid/exchange/ocio_config.h>
 #include <irid/color/adaptation.h>
@@ -123,12 +124,25 @@ nodes: the input value of each node along an axis (float64, size).)")
         py::arg("pipeline"), py::arg("size"), py::arg("shaper"), py::arg("lo"), py::arg("hi"),
         py::arg("stops"), py::arg("threads"));
     m.def(
+        "bake_display_lut",
+        [](const std::string& view, const std::string& display, const std::string& source, const std::string& target,
+           int size, const std::string& format, int threads) {
+            const DisplayTransform transform(display_lut_options(view, display, source, target));
+            const LutDomain domain = display_lut_domain(transform, lut_format_for("lut." + format));
+            py::gil_scoped_release release;
+            return std::make_shared<Lut3D>(bake_display_lut(transform, size, domain, threads));
+        },
+        py::arg("view"), py::arg("display"), py::arg("source"), py::arg("target"), py::arg("size"),
+        py::arg("format"), py::arg("threads"));
+    m.def(
         "write_ocio_config",
         [](const std::filesystem::path& dir, const std::string& source, const std::string& display,
            const std::vector<std::string>& methods, int size, const std::string& adaptation, int threads,
-           const std::optional<std::pair<double, double>>& range) {
+           const std::optional<std::pair<double, double>>& range,
+           const std::optional<std::vector<std::string>>& aces2) {
             OcioConfigOptions o;
             o.source_range = range;
+            o.aces2_displays = aces2;
             o.source = color_space(source);
             o.display = color_space(display);
             for (const std::string& name : methods) o.methods.push_back(parse_clip_method(name));
@@ -145,7 +159,7 @@ nodes: the input value of each node along an axis (float64, size).)")
             return (dir / "config.ocio").string();
         },
         py::arg("dir"), py::arg("source"), py::arg("display"), py::arg("methods"), py::arg("size"),
-        py::arg("adaptation"), py::arg("threads"), py::arg("range"));
+        py::arg("adaptation"), py::arg("threads"), py::arg("range"), py::arg("aces2"));
     m.def("lut_format_interpolation",
           [](const std::string& format) {
               return std::string(lut_interpolation_name(lut_format_interpolation(lut_format_for("lut." + format))));

@@ -8,6 +8,8 @@
 
 #include <fmt/core.h>
 
+#include "aces2_constants.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,7 +18,12 @@
 namespace irid {
 namespace {
 
-constexpr double reference_luminance = 100.0;
+using aces2::compression_threshold;
+using aces2::cusp_mid_blend;
+using aces2::focus_adjust_gain_inv;
+using aces2::focus_gain_blend;
+using aces2::reference_luminance;
+using aces2::smooth_cusps;
 
 // ACES AP0 and AP1 (SMPTE ST 2065-1, Academy S-2014-004) and their white.
 constexpr RgbPrimaries ap0{{0.7347, 0.2653}, {0.0, 1.0}, {0.0001, -0.0770}};
@@ -41,15 +48,10 @@ constexpr double chroma_expand = 1.3;
 constexpr double chroma_expand_fact = 0.69;
 constexpr double chroma_expand_thr = 0.5;
 
-// Gamut compression.
-constexpr double smooth_cusps = 0.12;
+// Gamut compression (and aces2_constants.h).
 constexpr double smooth_m = 0.27;
-constexpr double cusp_mid_blend = 1.3;
-constexpr double focus_gain_blend = 0.3;
-constexpr double focus_adjust_gain_inv = 1.0 / 0.55;
 constexpr double focus_distance = 1.35;
 constexpr double focus_distance_scaling = 1.75;
-constexpr double compression_threshold = 0.75;
 
 // Table generation (OpenColorIO's): 360 hues; the reach's M searched in steps of 50 to 1300
 // and bisected to 1e-2; the corners bisected to 1e-3 in scale; the cusps along the cube's edges
@@ -242,8 +244,8 @@ double Aces2Rendering::m_norm(double h) const noexcept {
     const double a = std::cos(r), b = std::sin(r);
     const double cos2 = a * a - b * b, sin2 = 2.0 * a * b;
     const double cos3 = 4.0 * a * a * a - 3.0 * a, sin3 = 3.0 * b - 4.0 * b * b * b;
-    const double m = 11.34072 * a + 16.46899 * cos2 + 7.88380 * cos3 + 14.66441 * b - 6.37224 * sin2 +
-                     9.19364 * sin3 + 77.12896;
+    const auto& c = aces2::m_norm_coefficients;
+    const double m = c[0] + c[1] * a + c[2] * cos2 + c[3] * cos3 + c[4] * b + c[5] * sin2 + c[6] * sin3;
     return m * m_chroma_scale;
 }
 

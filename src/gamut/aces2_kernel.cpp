@@ -3,6 +3,8 @@
 
 #include <irid/gamut/aces2_kernel.h>
 
+#include <irid/error.h>
+
 #include "aces2_kernel_data.h"
 
 #include <algorithm>
@@ -120,6 +122,13 @@ Aces2Kernel::~Aces2Kernel() = default;
 std::size_t Aces2Kernel::run(std::span<const float> in, std::span<float> out) const noexcept {
     return detail::aces2_run(*this, *m_data, in.data(), out.data(),
                              std::min(in.size(), out.size()) / 3);
+}
+
+void Aces2Kernel::run_stage(Stage stage, std::span<const float> in, std::span<float> out,
+                            bool in_float) const {
+    if (m_inverse) throw Error("Aces2Kernel::run_stage: the stages are the forward's");
+    detail::aces2_stage_run(*m_data, stage, in_float, in.data(), out.data(),
+                            std::min(in.size(), out.size()) / 3);
 }
 
 Vec3 Aces2Kernel::reference(const Vec3& in) const noexcept {

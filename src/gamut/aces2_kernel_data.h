@@ -57,5 +57,8 @@ struct Aces2KernelData {
 /// it handed to kernel.reference().
 std::size_t aces2_run(const Aces2Kernel& kernel, const Aces2KernelData& data, const float* in,
                       float* out, std::size_t colours) noexcept;
+/// Its forward's stage alone (Aces2Kernel::run_stage).
+void aces2_stage_run(const Aces2KernelData& data, Aces2Kernel::Stage stage, bool in_float,
+                     const float* in, float* out, std::size_t colours) noexcept;
 
 }  // namespace irid::detail

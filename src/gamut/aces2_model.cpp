@@ -4,27 +4,27 @@
 #include <irid/color/matrix.h>
 #include <irid/gamut/aces2.h>
 
+#include "aces2_constants.h"
+
 #include <cmath>
 #include <numbers>
 
 namespace irid {
 namespace {
 
+using aces2::j_scale;
+using aces2::reference_luminance;
+using aces2::response_exponent;
+using aces2::response_offset;
+using aces2::response_scale;
+
 // Viewing conditions of the ACES 2.0 output transform (aces-core Lib.Academy.OutputTransform,
 // "init_JMhParams"): adapting luminance L_A = 100 cd/m², background Y_b = 20, dim surround
-// (F, c, N_c) = (0.9, 0.59, 0.9), the reference luminance 100 (1.0 of scene and display).
-constexpr double reference_luminance = 100.0;
+// (F, c, N_c) = (0.9, 0.59, 0.9); the reference luminance is aces2_constants.h's.
 constexpr double adapting_luminance = 100.0;
 constexpr double background_y = 20.0;
 constexpr double surround_c = 0.59;
 constexpr double surround_nc = 0.9;
-// The compressive response R_a = 400 (F_L R)^0.42 / (27.13 + (F_L R)^0.42) (Hellwig 2022, eq. 8,
-// with its offset 0.2713 and scale 4 times the reference 100).
-constexpr double response_exponent = 0.42;
-constexpr double response_offset = 0.2713 * reference_luminance;
-constexpr double response_scale = 4.0 * reference_luminance;
-// J's scale.
-constexpr double j_scale = 100.0;
 
 // The cone primaries of the ACES 2.0 model (aces-core: "CAM16 primaries" refitted), with the
 // white 0.333, 0.333 as the Academy gives it.

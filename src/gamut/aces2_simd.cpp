@@ -11,6 +11,7 @@
 #include <hwy/contrib/math/math-inl.h>
 // clang-format on
 
+#include "aces2_constants.h"
 #include "aces2_kernel_data.h"
 
 #include <algorithm>
@@ -27,13 +28,15 @@ namespace {
 
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The constants of the model (aces2_model.cpp, aces2.cpp), in the kernel's precision.
-constexpr double response_exponent = 0.42;
-constexpr double response_offset = 27.13;
-constexpr double response_scale = 400.0;
+using aces2::response_exponent;
+using aces2::response_offset;
+using aces2::response_scale;
+
 /// An inverse response beyond this (of response_scale, where it diverges) goes to the double
 /// path: the float inverse's conditioning there, and the reference's NaN from 400 on.
 constexpr double response_inverse_limit = 380.0;
+/// Where ResponseDifference takes its series: |c0 / c1 − 1| up to this.
+constexpr double response_series_reach = 0.125;
 /// Input channels beyond this magnitude go to the double path: the input matrix's float rounding
 /// of large terms that cancel.
 constexpr double large_input = 1e6;
@@ -70,12 +73,23 @@ HWY_INLINE V Pow(D d, V x, V e) {
                    hn::Mul(e, hn::Log(d, hn::Max(x, hn::Set(d, std::numeric_limits<T>::min())))));
 }
 
+/// (F_L |c|)^0.42, the power inside the response.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ResponsePower(D d, const Params<D>& p, V c) {
+    return Pow(d, hn::Mul(hn::Abs(c), hn::Set(d, p.fl_n)), C(d, response_exponent));
+}
+
+/// The response of c from its ResponsePower f (Response).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ResponseOfPower(D d, V c, V f) {
+    return hn::CopySign(
+        hn::Div(hn::Mul(C(d, response_scale), f), hn::Add(C(d, response_offset), f)), c);
+}
+
 /// The compressive response, mirrored for negatives (Aces2JmhModel: mirrored_response).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V Response(D d, const Params<D>& p, V c) {
-    const V f = Pow(d, hn::Mul(hn::Abs(c), hn::Set(d, p.fl_n)), C(d, response_exponent));
-    return hn::CopySign(
-        hn::Div(hn::Mul(C(d, response_scale), f), hn::Add(C(d, response_offset), f)), c);
+    return ResponseOfPower(d, c, ResponsePower(d, p, c));
 }
 
 /// Its inverse; |r| beyond response_inverse_limit is added to `hard`.
@@ -105,19 +119,36 @@ HWY_INLINE V HueDegrees(D d, V a, V b) {
     return hn::IfThenElse(hn::Ge(h, C(d, 360.0)), hn::Sub(h, C(d, 360.0)), h);
 }
 
+template <class V>
+struct Polar {
+    V m, h, cos_h, sin_h;
+};
+
+/// M, h in degrees, cos h and sin h of the opponent a, b (Aces2JmhModel::aab_to_jmh); where M
+/// is 0, h is 0 and (cos h, sin h) = (1, 0).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE Polar<V> ToPolar(D d, V a, V b) {
+    const V m = hn::Sqrt(hn::MulAdd(a, a, hn::Mul(b, b)));
+    const auto no_hue = hn::Eq(m, hn::Zero(d));
+    const V inv_m = hn::Div(C(d, 1.0), hn::IfThenElse(no_hue, C(d, 1.0), m));
+    return {m, HueDegrees(d, a, b), hn::IfThenElse(no_hue, C(d, 1.0), hn::Mul(a, inv_m)),
+            hn::Mul(b, inv_m)};
+}
+
 /// The hue-dependent normalisation of M from cos h and sin h (Aces2Rendering::m_norm).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V Norm(D d, const Params<D>& p, V c, V s) {
     const V cos2 = hn::NegMulAdd(s, s, hn::Mul(c, c)), sin2 = hn::Mul(C(d, 2.0), hn::Mul(c, s));
     const V cos3 = hn::Mul(c, hn::MulAdd(C(d, 4.0), hn::Mul(c, c), C(d, -3.0)));
     const V sin3 = hn::Mul(s, hn::NegMulAdd(C(d, 4.0), hn::Mul(s, s), C(d, 3.0)));
-    V m = C(d, 77.12896);
-    m = hn::MulAdd(C(d, 11.34072), c, m);
-    m = hn::MulAdd(C(d, 16.46899), cos2, m);
-    m = hn::MulAdd(C(d, 7.88380), cos3, m);
-    m = hn::MulAdd(C(d, 14.66441), s, m);
-    m = hn::MulAdd(C(d, -6.37224), sin2, m);
-    m = hn::MulAdd(C(d, 9.19364), sin3, m);
+    const auto& k = aces2::m_norm_coefficients;
+    V m = C(d, k[0]);
+    m = hn::MulAdd(C(d, k[1]), c, m);
+    m = hn::MulAdd(C(d, k[2]), cos2, m);
+    m = hn::MulAdd(C(d, k[3]), cos3, m);
+    m = hn::MulAdd(C(d, k[4]), s, m);
+    m = hn::MulAdd(C(d, k[5]), sin2, m);
+    m = hn::MulAdd(C(d, k[6]), sin3, m);
     return hn::Mul(m, hn::Set(d, p.chroma_scale));
 }
 
@@ -164,11 +195,11 @@ HWY_INLINE HueValues<V> AtHue(D d, const Params<D>& p, V h) {
     v.gamma_top_inv = Lerp<D>(hn::GatherIndex(d, p.gamma_top_inv.data(), lo),
                               hn::GatherIndex(d, p.gamma_top_inv.data(), hi), t);
     const V limit_j = hn::Set(d, p.limit_j);
-    // focus_j_of and the analytical threshold (aces2.cpp: cusp_mid_blend 1.3, focus_gain_blend
-    // 0.3).
-    const V blend = hn::Min(C(d, 1.0), hn::Sub(C(d, 1.3), hn::Div(v.cusp_j, limit_j)));
+    // focus_j_of and the analytical threshold (aces2.cpp).
+    const V blend =
+        hn::Min(C(d, 1.0), hn::Sub(C(d, aces2::cusp_mid_blend), hn::Div(v.cusp_j, limit_j)));
     v.focus_j = Lerp<D>(v.cusp_j, hn::Set(d, p.mid_j), blend);
-    v.threshold = Lerp<D>(v.cusp_j, limit_j, C(d, 0.3));
+    v.threshold = Lerp<D>(v.cusp_j, limit_j, C(d, aces2::focus_gain_blend));
     return v;
 }
 
@@ -257,11 +288,12 @@ HWY_INLINE void Compress(D d, const Params<D>& p, const HueValues<V>& hv, V j, V
                          bool inverse, V& j_out, V& m_out, M& hard) {
     const V zero = hn::Zero(d), one = C(d, 1.0);
     const V limit_j = hn::Set(d, p.limit_j);
-    // focus_gain (aces2.cpp): beyond the threshold, log10 of the gain to the power 1/0.55, plus 1.
+    // focus_gain (aces2.cpp): beyond the threshold, log10 of the gain to a power, plus 1.
     const V gain_ratio = hn::Div(hn::Sub(limit_j, hv.threshold),
                                  hn::Max(C(d, 0.0001), hn::Sub(limit_j, hn::Min(limit_j, jx))));
-    const V above = hn::Add(
-        Pow(d, hn::Max(hn::Log10(d, hn::Max(gain_ratio, one)), zero), C(d, 1.0 / 0.55)), one);
+    const V above = hn::Add(Pow(d, hn::Max(hn::Log10(d, hn::Max(gain_ratio, one)), zero),
+                                C(d, aces2::focus_adjust_gain_inv)),
+                            one);
     const V gain = hn::IfThenElse(hn::Gt(jx, hv.threshold), above, one);
     const V slope_gain = hn::Mul(hn::Mul(limit_j, hn::Set(d, p.focus_dist)), gain);
     const V j_source = SolveJIntersect(d, j, m, hv.focus_j, limit_j, slope_gain);
@@ -271,15 +303,15 @@ HWY_INLINE void Compress(D d, const Params<D>& p, const HueValues<V>& hv, V j, V
                                   hv.cusp_m, j_cusp);
     const V upper = LineBoundaryM(d, hn::Sub(limit_j, j_source), hn::Neg(slope), hv.gamma_top_inv,
                                   hn::Sub(limit_j, hv.cusp_j), hv.cusp_m, hn::Sub(limit_j, j_cusp));
-    // smooth_min (aces2.cpp, smooth_cusps 0.12).
-    const V s = hn::Mul(C(d, 0.12), hv.cusp_m);
+    // smooth_min (aces2.cpp).
+    const V s = hn::Mul(C(d, aces2::smooth_cusps), hv.cusp_m);
     const V hs = hn::Div(hn::Max(hn::Sub(s, hn::Abs(hn::Sub(lower, upper))), zero), s);
     const V gamut_m = hn::NegMulAdd(hn::Mul(hn::Mul(hs, hs), hs), hn::Mul(s, C(d, 1.0 / 6.0)),
                                     hn::Min(lower, upper));
     const V reach_m =
         LineBoundaryM(d, j_source, slope, hn::Set(d, p.cz_inv), limit_j, hv.reach, limit_j);
-    // remap_m (aces2.cpp, compression_threshold 0.75).
-    const V proportion = hn::Max(hn::Div(gamut_m, reach_m), C(d, 0.75));
+    // remap_m (aces2.cpp).
+    const V proportion = hn::Max(hn::Div(gamut_m, reach_m), C(d, aces2::compression_threshold));
     const V threshold = hn::Mul(proportion, gamut_m);
     const V m_offset = hn::Sub(m, threshold);
     const V gamut_offset = hn::Sub(gamut_m, threshold);
@@ -328,10 +360,11 @@ HWY_INLINE void Tonescale(D d, const Params<D>& p, V A, V& a_ts, V& j_ts, V& fla
                         hard);
     const V f = hn::Mul(hn::Set(d, p.m_2),
                         Pow(d, hn::Div(y, hn::Add(y, hn::Set(d, p.s_2))), hn::Set(d, p.g)));
-    const V y_ts = hn::Mul(
-        hn::Max(hn::Zero(d), hn::Div(hn::Mul(f, f), hn::Add(f, hn::Set(d, p.t_1)))), C(d, 100.0));
+    const V y_ts =
+        hn::Mul(hn::Max(hn::Zero(d), hn::Div(hn::Mul(f, f), hn::Add(f, hn::Set(d, p.t_1)))),
+                C(d, aces2::reference_luminance));
     a_ts = hn::Div(Response(d, p, y_ts), hn::Set(d, p.a_w_j));
-    j_ts = hn::Mul(C(d, 100.0), Pow(d, a_ts, hn::Set(d, p.cz)));
+    j_ts = hn::Mul(C(d, aces2::j_scale), Pow(d, a_ts, hn::Set(d, p.cz)));
     flag = hn::IfThenElseZero(hard, C(d, 1.0));
 }
 
@@ -366,10 +399,73 @@ HWY_INLINE void Aab(D d, const Params<D>& p, V x0, V x1, V x2, V& A, V& a, V& b)
     Mul3(d, p.to_aab, Response(d, p, c0), Response(d, p, c1), Response(d, p, c2), A, a, b);
 }
 
-/// Aab and the Tonescale of A. The first in double when D is float: a and b are differences of the
-/// three responses, which cancel for all but the most saturated colours (in float the forward's
-/// M was off by up to 7e-4 and its hue by 0.02°, which moved outputs by up to 2.6e-5). The
-/// tonescale too when precise.
+/// (1 + t)^0.42 − 1 for |t| <= response_series_reach: its binomial series to degree 7, whose
+/// first dropped term is below 2e-8 of the sum there.
+constexpr std::array<double, 8> response_binomials() {
+    std::array<double, 8> b{};  // binomial(0.42, n), n = 0..7
+    b[0] = 1.0;
+    for (std::size_t n = 1; n < b.size(); ++n)
+        b[n] = b[n - 1] * (response_exponent - static_cast<double>(n - 1)) / static_cast<double>(n);
+    return b;
+}
+
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ResponseSeries(D d, V t) {
+    constexpr auto binomial = response_binomials();
+    V c = C(d, binomial[7]);
+    for (std::size_t n = 6; n >= 1; --n) c = hn::MulAdd(c, t, C(d, binomial[n]));
+    return hn::Mul(c, t);
+}
+
+/// Response(c0) − Response(c1) from c, their ResponsePower f and responses r, without the
+/// cancellation of r0 − r1: where c0 and c1 are positive and |c0 / c1 − 1| <=
+/// response_series_reach, S O (f0 − f1) / ((O + f0)(O + f1)) with f0 − f1 = f1 ((c0 / c1)^0.42 −
+/// 1) by ResponseSeries, exact to the rounding of c0 − c1; elsewhere r0 − r1 loses at most a
+/// factor of about 20 of the responses' rounding.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V ResponseDifference(D d, V c0, V c1, V f0, V f1, V r0, V r1) {
+    const V zero = hn::Zero(d);
+    const V t = hn::Div(hn::Sub(c0, c1), hn::IfThenElse(hn::Gt(c1, zero), c1, C(d, 1.0)));
+    const auto near = hn::And(hn::And(hn::Gt(c0, zero), hn::Gt(c1, zero)),
+                              hn::Le(hn::Abs(t), C(d, response_series_reach)));
+    const V df = hn::Mul(f1, ResponseSeries(d, hn::IfThenElseZero(near, t)));
+    const V offset = C(d, response_offset);
+    const V exact = hn::Div(hn::Mul(C(d, response_scale * response_offset), df),
+                            hn::Mul(hn::Add(offset, f0), hn::Add(offset, f1)));
+    return hn::IfThenElse(near, exact, hn::Sub(r0, r1));
+}
+
+/// The model's A, a, b of cone signals c in float: A from the responses, and a and b from their
+/// differences (the opponent matrix's a and b rows sum to 0, Aces2JmhModel), each by
+/// ResponseDifference. a and b cancel for all but the most saturated colours: subtracting the
+/// float responses put M off by up to 7e-4 and its hue by 0.02°, which moved outputs by up to
+/// 2.6e-5.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void AabOfCones(D d, const Params<D>& p, V c0, V c1, V c2, V& A, V& a, V& b) {
+    const V f0 = ResponsePower(d, p, c0), f1 = ResponsePower(d, p, c1),
+            f2 = ResponsePower(d, p, c2);
+    const V r0 = ResponseOfPower(d, c0, f0), r1 = ResponseOfPower(d, c1, f1),
+            r2 = ResponseOfPower(d, c2, f2);
+    const auto& m = p.to_aab;
+    A = hn::MulAdd(hn::Set(d, m[2]), r2,
+                   hn::MulAdd(hn::Set(d, m[1]), r1, hn::Mul(hn::Set(d, m[0]), r0)));
+    const V d01 = ResponseDifference(d, c0, c1, f0, f1, r0, r1);
+    const V d21 = ResponseDifference(d, c2, c1, f2, f1, r2, r1);
+    a = hn::MulAdd(hn::Set(d, m[5]), d21, hn::Mul(hn::Set(d, m[3]), d01));
+    b = hn::MulAdd(hn::Set(d, m[8]), d21, hn::Mul(hn::Set(d, m[6]), d01));
+}
+
+/// AabOfCones of the input (InClamped).
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void AabFloat(D d, const Params<D>& p, V x0, V x1, V x2, V& A, V& a, V& b) {
+    V r, g, bl, c0, c1, c2;
+    InClamped(d, p, x0, x1, x2, r, g, bl);
+    Mul3(d, p.to_cone, r, g, bl, c0, c1, c2);
+    AabOfCones(d, p, c0, c1, c2, A, a, b);
+}
+
+/// Aab and the Tonescale of A: when D is float and not precise, AabFloat; when precise, both in
+/// double.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void ToAab(D d, const Params<D>& p, const detail::Aces2Params<double>& pd, V x0, V x1,
                       V x2, V& A, V& a, V& bb, V& a_ts, V& j_ts, V& flag) {
@@ -377,19 +473,18 @@ HWY_INLINE void ToAab(D d, const Params<D>& p, const detail::Aces2Params<double>
         (void)pd;
         Aab(d, p, x0, x1, x2, A, a, bb);
         Tonescale(d, p, A, a_ts, j_ts, flag);
+    } else if (!p.precise) {
+        AabFloat(d, p, x0, x1, x2, A, a, bb);
+        Tonescale(d, p, A, a_ts, j_ts, flag);
     } else {
         const auto o = InDouble<6>(d, std::array<V, 3>{x0, x1, x2}, [&](auto dd, const auto& x) {
             std::array<hn::Vec<decltype(dd)>, 6> y;
             Aab(dd, pd, x[0], x[1], x[2], y[0], y[1], y[2]);
-            if (pd.precise) Tonescale(dd, pd, y[0], y[3], y[4], y[5]);
+            Tonescale(dd, pd, y[0], y[3], y[4], y[5]);
             return y;
         });
         A = o[0], a = o[1], bb = o[2];
-        if (p.precise) {
-            a_ts = o[3], j_ts = o[4], flag = o[5];
-        } else {
-            Tonescale(d, p, A, a_ts, j_ts, flag);
-        }
+        a_ts = o[3], j_ts = o[4], flag = o[5];
     }
 }
 
@@ -399,7 +494,7 @@ template <class D, class V = hn::Vec<D>>
 HWY_INLINE hn::Mask<D> OutputStage(D d, const Params<D>& p, V j, V m, V cos_h, V sin_h, V& x0,
                                    V& x1, V& x2) {
     hn::Mask<D> hard = hn::FirstN(d, 0);
-    const V a_out = Pow(d, hn::Mul(j, C(d, 0.01)), hn::Set(d, p.cz_inv));
+    const V a_out = Pow(d, hn::Mul(j, C(d, 1.0 / aces2::j_scale)), hn::Set(d, p.cz_inv));
     V r0, r1, r2, r, g, b;
     Mul3(d, p.from_aab, a_out, hn::Mul(m, cos_h), hn::Mul(m, sin_h), r0, r1, r2);
     Mul3(d, p.from_cone, ResponseInverse(d, p, r0, hard), ResponseInverse(d, p, r1, hard),
@@ -441,12 +536,7 @@ HWY_INLINE M Forward(D d, const Params<D>& p, const detail::Aces2Params<double>&
     hard = hn::Or(hard, hn::Gt(flag, zero));
     const M black = hn::Le(A, zero);
     A = hn::Max(A, tiny);
-    const V M_ = hn::Sqrt(hn::MulAdd(a, a, hn::Mul(bb, bb)));
-    const V h = HueDegrees(d, a, bb);
-    const M no_hue = hn::Eq(M_, zero);
-    const V inv_m = hn::Div(C(d, 1.0), hn::IfThenElse(no_hue, C(d, 1.0), M_));
-    const V cos_h = hn::IfThenElse(no_hue, C(d, 1.0), hn::Mul(a, inv_m));
-    const V sin_h = hn::Mul(bb, inv_m);
+    const auto [M_, h, cos_h, sin_h] = ToPolar(d, a, bb);
     // The rest, in double when precise: near the peak's J the gamut compression subtracts J from
     // limit_j (the focus gain, the upper hull), and the output's luminance grows as J^2.7 through
     // matrices that cancel, which turned float's rounding into errors of 1.3e-5 at 1000 cd/m².
@@ -480,13 +570,8 @@ HWY_INLINE M Inverse(D d, const Params<D>& p, V& x0, V& x1, V& x2) {
     Aab(d, p, x0, x1, x2, A, a, bb);
     const M black = hn::Le(A, zero);
     A = hn::Max(A, tiny);
-    const V j = hn::Mul(C(d, 100.0), Pow(d, A, hn::Set(d, p.cz)));
-    const V M_ = hn::Sqrt(hn::MulAdd(a, a, hn::Mul(bb, bb)));
-    const V h = HueDegrees(d, a, bb);
-    const M no_hue = hn::Eq(M_, zero);
-    const V inv_m = hn::Div(C(d, 1.0), hn::IfThenElse(no_hue, C(d, 1.0), M_));
-    const V cos_h = hn::IfThenElse(no_hue, C(d, 1.0), hn::Mul(a, inv_m));
-    const V sin_h = hn::Mul(bb, inv_m);
+    const V j = hn::Mul(C(d, aces2::j_scale), Pow(d, A, hn::Set(d, p.cz)));
+    const auto [M_, h, cos_h, sin_h] = ToPolar(d, a, bb);
     // Gamut compression inverse: the focus gain's J solved by the reference's fixed point
     // (Aces2Rendering::gamut_compress_inverse), each lane frozen at its own convergence so that
     // its result does not depend on its neighbours.
@@ -503,9 +588,11 @@ HWY_INLINE M Inverse(D d, const Params<D>& p, V& x0, V& x1, V& x2) {
     }
     Compress(d, p, hv, j, M_, jx, true, j_c, m_c, hard);
     // Tonescale inverse (Aces2Rendering::tonescale_inverse).
-    const V a_c = hn::Max(Pow(d, hn::Mul(j_c, C(d, 0.01)), hn::Set(d, p.cz_inv)), tiny);
+    const V a_c =
+        hn::Max(Pow(d, hn::Mul(j_c, C(d, 1.0 / aces2::j_scale)), hn::Set(d, p.cz_inv)), tiny);
     const V y_ts = ResponseInverse(d, p, hn::Mul(a_c, hn::Set(d, p.a_w_j)), hard);
-    const V z = hn::Min(hn::Max(hn::Mul(y_ts, C(d, 0.01)), zero), hn::Set(d, p.inverse_limit));
+    const V z = hn::Min(hn::Max(hn::Mul(y_ts, C(d, 1.0 / aces2::reference_luminance)), zero),
+                        hn::Set(d, p.inverse_limit));
     const V f = hn::Mul(
         C(d, 0.5), hn::Add(z, hn::Sqrt(hn::Mul(z, hn::MulAdd(C(d, 4.0), hn::Set(d, p.t_1), z)))));
     const V den = hn::Sub(Pow(d, hn::Div(hn::Set(d, p.m_2), hn::Max(f, tiny)), hn::Set(d, p.g_inv)),
@@ -517,7 +604,7 @@ HWY_INLINE M Inverse(D d, const Params<D>& p, V& x0, V& x1, V& x2) {
     const V nj = hn::Div(j_c, hn::Set(d, p.limit_j));
     V m = ChromaCompress(d, p, m_c, nj, hn::Div(a_c, hn::Set(d, p.limit_a)), hn::Div(a_src, a_c),
                          norm, hv.reach, true);
-    m = hn::IfThenZeroElse(hn::Or(no_hue, hn::Eq(m_c, zero)), m);
+    m = hn::IfThenZeroElse(hn::Or(hn::Eq(M_, zero), hn::Eq(m_c, zero)), m);
     // To AP0 through the input model, to AP1, clamped, and to the output.
     V r0, r1, r2;
     Mul3(d, p.from_aab, a_src, hn::Mul(m, cos_h), hn::Mul(m, sin_h), r0, r1, r2);
@@ -529,6 +616,79 @@ HWY_INLINE M Inverse(D d, const Params<D>& p, V& x0, V& x1, V& x2) {
     b = hn::IfThenZeroElse(black, hn::Min(hn::Max(b, zero), out_max));
     Mul3(d, p.out, r, g, b, x0, x1, x2);
     return hard;
+}
+
+/// The forward's stage `stage` (Aces2Kernel::run_stage) on one vector, in place on
+/// (x0, x1, x2), in the precision of D; for rgb_to_jmh, only A, a and b.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void StageIn(D d, const Params<D>& p, Aces2Kernel::Stage stage, V& x0, V& x1, V& x2) {
+    using T = hn::TFromD<D>;
+    const V zero = hn::Zero(d);
+    switch (stage) {
+        case Aces2Kernel::Stage::rgb_to_jmh: {
+            // As Aab and AabFloat, without InClamped's clamp: the stage is the model alone.
+            V r, g, b, c0, c1, c2;
+            Mul3(d, p.in, x0, x1, x2, r, g, b);
+            Mul3(d, p.to_cone, r, g, b, c0, c1, c2);
+            if constexpr (sizeof(T) == 4) {
+                AabOfCones(d, p, c0, c1, c2, x0, x1, x2);
+            } else {
+                Mul3(d, p.to_aab, Response(d, p, c0), Response(d, p, c1), Response(d, p, c2), x0,
+                     x1, x2);
+            }
+            return;
+        }
+        case Aces2Kernel::Stage::tonescale_and_chroma: {
+            const V j = x0, m_in = x1, h = x2;
+            const V A = Pow(d,
+                            hn::Max(hn::Mul(j, C(d, 1.0 / aces2::j_scale)),
+                                    hn::Set(d, std::numeric_limits<T>::min())),
+                            hn::Set(d, p.cz_inv));
+            V a_ts, j_ts, flag;
+            Tonescale(d, p, A, a_ts, j_ts, flag);
+            const V radians = hn::Mul(h, C(d, std::numbers::pi / 180.0));
+            const V norm = Norm(d, p, hn::Cos(d, radians), hn::Sin(d, radians));
+            const V m = ChromaCompress(d, p, m_in, hn::Div(j_ts, hn::Set(d, p.limit_j)),
+                                       hn::Div(a_ts, hn::Set(d, p.limit_a)), hn::Div(a_ts, A), norm,
+                                       AtHue(d, p, h).reach, false);
+            x0 = j_ts;
+            x1 = hn::IfThenZeroElse(hn::Eq(m_in, zero), m);
+            return;
+        }
+        case Aces2Kernel::Stage::gamut_compression: {
+            hn::Mask<D> hard = hn::FirstN(d, 0);
+            V j_out, m_out;
+            Compress(d, p, AtHue(d, p, x2), x0, x1, x0, false, j_out, m_out, hard);
+            x0 = j_out;
+            x1 = m_out;
+            return;
+        }
+    }
+}
+
+/// One vector of a stage as Forward computes it: in double what Forward takes in double (every
+/// stage when precise), unless in_float.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void Stage(D d, const Params<D>& p, const detail::Aces2Params<double>& pd,
+                      Aces2Kernel::Stage stage, bool in_float, V& x0, V& x1, V& x2) {
+    const bool rgb = stage == Aces2Kernel::Stage::rgb_to_jmh;
+    if (in_float || !p.precise) {
+        StageIn(d, p, stage, x0, x1, x2);
+    } else {
+        const auto o = InDouble<3>(d, std::array<V, 3>{x0, x1, x2}, [&](auto dd, const auto& x) {
+            auto y = x;
+            StageIn(dd, pd, stage, y[0], y[1], y[2]);
+            return y;
+        });
+        x0 = o[0], x1 = o[1], x2 = o[2];
+    }
+    if (!rgb) return;
+    // A, a, b to J, M, h as Forward takes them (Aces2JmhModel::aab_to_jmh: 0 where A <= 0).
+    const auto [m, h, cos_h, sin_h] = ToPolar(d, x1, x2);
+    const auto black = hn::Le(x0, hn::Zero(d));
+    x0 = hn::IfThenZeroElse(black, hn::Mul(C(d, aces2::j_scale), Pow(d, x0, hn::Set(d, p.cz))));
+    x1 = hn::IfThenZeroElse(black, m);
+    x2 = hn::IfThenZeroElse(black, h);
 }
 
 /// Every vector of `colours` triples, and the tail through the same code padded to a whole
@@ -596,6 +756,22 @@ HWY_INLINE std::size_t Run(D d, const Aces2Kernel& kernel, const Params<D>& p, c
 
 }  // namespace
 
+void Aces2StageRun(const detail::Aces2KernelData& data, Aces2Kernel::Stage stage, bool in_float,
+                   const float* in, float* out, std::size_t colours) {
+    const hn::ScalableTag<float> d;
+    const std::size_t n = hn::Lanes(d);
+    HWY_ALIGN float buffer[3 * HWY_MAX_BYTES / sizeof(float)] = {};
+    for (std::size_t i = 0; i < colours; i += n) {
+        const std::size_t count = std::min(n, colours - i);
+        std::memcpy(buffer, in + 3 * i, 3 * count * sizeof(float));
+        hn::Vec<decltype(d)> x0, x1, x2;
+        hn::LoadInterleaved3(d, buffer, x0, x1, x2);
+        Stage(d, data.f, data.d, stage, in_float, x0, x1, x2);
+        hn::StoreInterleaved3(x0, x1, x2, d, buffer);
+        std::memcpy(out + 3 * i, buffer, 3 * count * sizeof(float));
+    }
+}
+
 std::size_t Aces2Run(const Aces2Kernel& kernel, const detail::Aces2KernelData& data,
                      const float* in, float* out, std::size_t colours) {
     const hn::ScalableTag<float> df;
@@ -621,10 +797,16 @@ HWY_AFTER_NAMESPACE();
 namespace irid {
 
 HWY_EXPORT(Aces2Run);
+HWY_EXPORT(Aces2StageRun);
 
 std::size_t detail::aces2_run(const Aces2Kernel& kernel, const Aces2KernelData& data,
                               const float* in, float* out, std::size_t colours) noexcept {
     return HWY_DYNAMIC_DISPATCH(Aces2Run)(kernel, data, in, out, colours);
+}
+
+void detail::aces2_stage_run(const Aces2KernelData& data, Aces2Kernel::Stage stage, bool in_float,
+                             const float* in, float* out, std::size_t colours) noexcept {
+    HWY_DYNAMIC_DISPATCH(Aces2StageRun)(data, stage, in_float, in, out, colours);
 }
 
 }  // namespace irid

@@ -169,6 +169,12 @@ expect_stderr_has "--inverse"
 run '' lut --view aces2 -o "$TMP/x.clf"
 expect_status 2
 expect_stderr_has "--display"
+run '' lut --view aces2 --display sdr-100nit-rec709 --white D50 -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--white and --adaptation apply to --method"
+run '' lut --view aces2 --display sdr-100nit-rec709 --adaptation none -o "$TMP/x.clf"
+expect_status 2
+expect_stderr_has "--white and --adaptation apply to --method"
 run '' lut --view aces3 --display sdr-100nit-rec709 -o "$TMP/x.clf"
 expect_status 2
 expect_stderr_has "aces2"

@@ -120,3 +120,50 @@ def test_opencolorio_decodes_acescct_as_irid_does(tmp_path, irid_cli):
     expected = irid.convert(rgb, "acescct", "acescct-linear")
     np.testing.assert_allclose(out, expected, rtol=2e-6, atol=2e-7)
     assert abs(expected[0, 2] - 0.18) < 1e-6  # ACEScct's 0.4135884 is 0.18
+
+
+def test_the_command_line_writes_what_python_bakes_for_a_display(tmp_path, irid_cli):
+    for display, fmt, source in [("sdr-100nit-rec709", "clf", "aces2065-1"),
+                                 ("hdr-1000nit-p3-d65", "cube", "acescct")]:
+        out = tmp_path / f"{display}.{fmt}"
+        subprocess.run([irid_cli, "lut", "--view", "aces2", "--display", display, "--from", source,
+                        "--size", "9", "-o", str(out)], check=True)
+        lut = irid.bake_display_lut(display, source=source, size=9, format=fmt)
+        assert out.read_text() == lut.text(fmt), display
+    # The LUT stands for the transform: at its nodes it is the transform (the .clf's nodes on
+    # its log2 shaper's grid, here two greys and a colour on it).
+    lut = irid.bake_display_lut("sdr-100nit-rec709", size=9)
+    nodes = lut.nodes
+    rgb = np.array([[nodes[3]] * 3, [nodes[6]] * 3, [nodes[2], nodes[5], nodes[7]]])
+    want = irid.display_transform(rgb, display="sdr-100nit-rec709", target="srgb")
+    np.testing.assert_allclose(lut.apply(rgb, "tetrahedral"), want, atol=1e-6)
+    with pytest.raises(KeyError):
+        irid.bake_display_lut("nope")
+    with pytest.raises(KeyError):
+        irid.bake_display_lut("sdr-100nit-rec709", format="3dl")
+    with pytest.raises(ValueError, match="acescct"):
+        irid.bake_display_lut("sdr-100nit-rec709", format="cube")
+    with pytest.raises(ValueError):
+        irid.bake_display_lut("sdr-100nit-rec709", size=1)
+
+
+def test_write_ocio_config_chooses_its_aces2_views(tmp_path):
+    def luts(folder):
+        return sorted(p.name for p in (folder / "luts").iterdir() if p.name.startswith("aces2-"))
+
+    irid.write_ocio_config(tmp_path / "none", methods=["clamp"], size=5, aces2=[])
+    assert luts(tmp_path / "none") == []
+    path = irid.write_ocio_config(tmp_path / "one", methods=["clamp"], size=5,
+                                  aces2=["sdr-100nit-rec709"])
+    assert luts(tmp_path / "one") == ["aces2-sdr-100nit-rec709.clf"]
+    import PyOpenColorIO as ocio
+    config = ocio.Config.CreateFromFile(path)
+    config.validate()
+    assert "ACES 2.0 sdr-100nit-rec709" in list(config.getViews("srgb display"))
+    with pytest.raises(ValueError):
+        irid.write_ocio_config(tmp_path / "bad", methods=["clamp"], size=5, aces2="sdr-100nit-rec709")
+    with pytest.raises(KeyError):
+        irid.write_ocio_config(tmp_path / "bad", methods=["clamp"], size=5, aces2=["nope"])
+    with pytest.raises(ValueError, match="twice"):
+        irid.write_ocio_config(tmp_path / "bad", methods=["clamp"], size=5,
+                               aces2=["sdr-100nit-rec709", "sdr-100nit-rec709"])

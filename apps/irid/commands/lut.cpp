@@ -38,6 +38,8 @@ struct LutOptions : PipelineArgs {
     const CLI::Option* from_option = nullptr;
     const CLI::Option* to_option = nullptr;
     const CLI::Option* max_option = nullptr;
+    const CLI::Option* white_option = nullptr;
+    const CLI::Option* adaptation_option = nullptr;
 };
 
 LutDomain make_domain(const LutOptions& o) {
@@ -79,6 +81,11 @@ int run_display_lut(const LutOptions& o) {
     }
     if (o.display.empty()) throw UsageError("--view " + o.view + " needs --display NAME (irid display --list)");
     if (o.max_option->count() > 0) throw UsageError("--max applies to --method; a display has its own peak");
+    if (o.white_option->count() > 0 || o.adaptation_option->count() > 0) {
+        throw UsageError(
+            "--white and --adaptation apply to --method; a display transform goes through CIE XYZ relative to "
+            "the display's white (D65)");
+    }
     const LutFormat format = output_format(o);
     try {
         (void)aces2_display(o.display);
@@ -194,11 +201,11 @@ void add_lut_command(CLI::App& app, Runner& runner) {
                                       "Stops below the domain's top that the log2 shaper spans "
                                       "(1 to 40)")
                           ->capture_default_str();
-    cmd->add_option(
+    o->white_option = cmd->add_option(
            "--white", o->white,
            "Reference white of an xyz input: " + join(white_point_names()) + " or x,y")
         ->capture_default_str();
-    cmd->add_option("--adaptation", o->adaptation,
+    o->adaptation_option = cmd->add_option("--adaptation", o->adaptation,
                     "Chromatic adaptation where whites differ: bradford, cat02, von-kries, none")
         ->capture_default_str();
     cmd->add_option("--threads", o->threads, "Threads (0: all)")->capture_default_str();

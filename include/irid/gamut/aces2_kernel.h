@@ -37,6 +37,17 @@ public:
     /// many triples were handed to reference().
     std::size_t run(std::span<const float> in, std::span<float> out) const noexcept;
 
+    /// The forward's stages one at a time, as run() computes them, for OpenColorIO's published
+    /// stage vectors (data/ocio-aces2): ACES2065-1 (no clamp) to the input model's (J, M, h);
+    /// the tonescale with chroma compression of (J, M, h); the gamut compression of (J, M, h),
+    /// h in degrees. `in_float` computes in float what run() takes in double (docs/KERNELS.md),
+    /// to measure what that buys. rgb_to_jmh's input goes through the kernel's `in` map first;
+    /// the `out` map is not applied. Whole triples, as run(). Throws irid::Error for an inverse
+    /// kernel.
+    enum class Stage { rgb_to_jmh, tonescale_and_chroma, gamut_compression };
+    void run_stage(Stage stage, std::span<const float> in, std::span<float> out,
+                   bool in_float = false) const;
+
     /// The double path: non-finite input channels taken as 0, `in`, Aces2Output::forward or
     /// inverse, `out`.
     [[nodiscard]] Vec3 reference(const Vec3& in) const noexcept;
