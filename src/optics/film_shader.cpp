@@ -60,7 +60,8 @@ constexpr std::string_view glsl_body = R"glsl(
 vec4 irid_catmull_rom(float f) {
     float f2 = f * f;
     float f3 = f2 * f;
-    return 0.5 * vec4(-f3 + 2.0 * f2 - f, 3.0 * f3 - 5.0 * f2 + 2.0, -3.0 * f3 + 4.0 * f2 + f, f3 - f2);
+    return 0.5 * vec4(-f3 + 2.0 * f2 - f, 3.0 * f3 - 5.0 * f2 + 2.0,
+                      -3.0 * f3 + 4.0 * f2 + f, f3 - f2);
 }
 
 // V_c(tau), the demodulated transform of channel c's weights, interpolated through the table:
@@ -117,10 +118,12 @@ void irid_base_face(vec3 x, vec3 k, vec3 q2sq, float sgn, out vec3 re, out vec3 
 }
 
 // The series' coefficients for one polarisation: R = a0 + 2 Re sum_m g q^(m-1) e^(i m phi), with
-// b = r12 (1 - r01^2), q = -r01 r12, a0 = r01^2 + |b|^2 / (1 - |q|^2), g = r01 b + |b|^2 q / (1 - |q|^2).
+// b = r12 (1 - r01^2), q = -r01 r12, a0 = r01^2 + |b|^2 / (1 - |q|^2),
+// g = r01 b + |b|^2 q / (1 - |q|^2).
 // Also bnd = |g| / (1 - |q|) (the sum of the terms' moduli) and mq = |q|.
 void irid_coefficients(float r01, float t01, vec3 r12re, vec3 r12im, vec3 t12, out vec3 a0,
-                       out vec3 gre, out vec3 gim, out vec3 qre, out vec3 qim, out vec3 bnd, out vec3 mq) {
+                       out vec3 gre, out vec3 gim, out vec3 qre, out vec3 qim,
+                       out vec3 bnd, out vec3 mq) {
     qre = -r01 * r12re;
     qim = -r01 * r12im;
     vec3 omq = t01 + r01 * r01 * t12;
@@ -139,8 +142,10 @@ vec2 irid_csqrt_q(float qsq) { return qsq >= 0.0 ? vec2(sqrt(qsq), 0.0) : vec2(0
 
 // The Airy reflectance at one wavenumber nu (unpolarised), any film: where the film is near or
 // past its critical angle (q1 -> 0 or imaginary). q1sq is kept 1e-6 n1^2 from 0, where the
-// formula is 0/0 (its limit is continuous there).
-float irid_airy_at(float n0, float n1, float q0, float q1sq, float n2, float q2sq, float d, float nu) {
+// formula is 0/0 (its limit is continuous there); d at most 1 mm, so that the phase stays finite.
+float irid_airy_at(float n0, float n1, float q0, float q1sq, float n2, float q2sq, float d,
+                   float nu) {
+    d = min(d, 1e6);
     float eps = 1e-6 * n1 * n1;
     q1sq = abs(q1sq) < eps ? eps : q1sq;
     vec2 q1 = irid_csqrt_q(q1sq);
@@ -151,7 +156,8 @@ float irid_airy_at(float n0, float n1, float q0, float q1sq, float n2, float q2s
     vec2 one = vec2(1.0, 0.0);
     vec2 r01s = irid_cdiv(vec2(q0, 0.0) - q1, vec2(q0, 0.0) + q1);
     vec2 r12s = irid_cdiv(q1 - q2, q1 + q2);
-    vec2 r01p = irid_cdiv(n0 * n0 * q1 - vec2(n1 * n1 * q0, 0.0), n0 * n0 * q1 + vec2(n1 * n1 * q0, 0.0));
+    vec2 r01p = irid_cdiv(n0 * n0 * q1 - vec2(n1 * n1 * q0, 0.0),
+                          n0 * n0 * q1 + vec2(n1 * n1 * q0, 0.0));
     vec2 r12p = irid_cdiv(n1 * n1 * q2 - n2 * n2 * q1, n1 * n1 * q2 + n2 * n2 * q1);
     vec2 rs = irid_cdiv(r01s + irid_cmul(r12s, z), one + irid_cmul(r01s, irid_cmul(r12s, z)));
     vec2 rp = irid_cdiv(r01p + irid_cmul(r12p, z), one + irid_cmul(r01p, irid_cmul(r12p, z)));
@@ -190,7 +196,8 @@ vec3 evalIridescence(float outsideIOR, float eta2, float cosTheta1, float thinFi
     vec3 colour = 0.5 * (a0s + a0p);
     float opd = 2.0 * d * q1;
     if (opd < IRID_TABLE_END) {
-        // P = g e^(i theta_c) q_c^(m-1), theta_c = 2 pi opd nu_c: the m-th term is Re(P V_c(m opd)).
+        // P = g e^(i theta_c) q_c^(m-1), theta_c = 2 pi opd nu_c: the m-th term is
+        // Re(P V_c(m opd)).
         vec3 ph = 6.28318531 * fract(opd * IRID_CENTRE);
         vec3 er = cos(ph);
         vec3 ei = sin(ph);
@@ -206,7 +213,8 @@ vec3 evalIridescence(float outsideIOR, float eta2, float cosTheta1, float thinFi
             float tau = float(m) * opd;
             if (tau >= IRID_TABLE_END) break;
             vec3 bound = bs + bp;
-            if (max(bound.r, max(bound.g, bound.b)) * irid_envelope[min(int(tau * IRID_ENVELOPE_SCALE), IRID_ENVELOPE_LAST)] < IRID_TOLERANCE) break;
+            float envelope = irid_envelope[min(int(tau * IRID_ENVELOPE_SCALE), IRID_ENVELOPE_LAST)];
+            if (max(bound.r, max(bound.g, bound.b)) * envelope < IRID_TOLERANCE) break;
             vec3 vre, vim;
             irid_transform(tau, vre, vim);
             colour += (psre + ppre) * vre - (psim + ppim) * vim;
@@ -260,9 +268,6 @@ vec3 operator+(vec3 a, float s) {
 }
 vec3 operator*(float s, vec3 a) {
     return vec3(s) * a;
-}
-vec3 operator/(vec3 a, float s) {
-    return a / vec3(s);
 }
 vec3 operator*(vec3 a, float s) {
     return a * vec3(s);
@@ -407,6 +412,7 @@ vec2 csqrt_q(float qsq) {
 }
 
 float airy_at(float n0, float n1, float q0, float q1sq, float n2, float q2sq, float d, float nu) {
+    d = std::min(d, 1e6f);
     const float eps = 1e-6f * n1 * n1;
     q1sq = std::fabs(q1sq) < eps ? eps : q1sq;
     const vec2 q1 = csqrt_q(q1sq);
@@ -428,8 +434,14 @@ float airy_at(float n0, float n1, float q0, float q1sq, float n2, float q2sq, fl
 }  // namespace
 
 FilmShader::FilmShader(const Colorimeter& colorimeter, std::string illuminant_name,
-                       std::string space_name)
-    : m_illuminant(std::move(illuminant_name)), m_space(std::move(space_name)) {
+                       std::string space_name, int table_width)
+    : m_width(table_width),
+      m_illuminant(std::move(illuminant_name)),
+      m_space(std::move(space_name)) {
+    if (table_width < min_table_width || table_width > max_table_width) {
+        throw Error(fmt::format("table width {} is out of range; valid: {} to {}", table_width,
+                                min_table_width, max_table_width));
+    }
     // The channels' weights on the 1 nm grid: the XYZ → RGB matrix (with the colorimeter's
     // adaptation) applied to the XYZ weights; its columns are the images of the unit vectors.
     const Rgb cx = colorimeter.linear_rgb(Xyz{1.0, 0.0, 0.0});
@@ -457,19 +469,18 @@ FilmShader::FilmShader(const Colorimeter& colorimeter, std::string illuminant_na
         m_centre[c] = moment / sum;
     }
     // The table: texel k at τ = (k − 1) step, Re in row 0, Im in row 1.
-    m_table.assign(static_cast<std::size_t>(table_width * table_height * 4), 0.0f);
-    for (int k = 0; k < table_width; ++k) {
+    m_table.assign(static_cast<std::size_t>(m_width * table_height * 4), 0.0f);
+    for (int k = 0; k < m_width; ++k) {
         const Transform v = exact_transform(static_cast<double>(k - 1) * table_step_nm());
         for (std::size_t c = 0; c < 3; ++c) {
             m_table[static_cast<std::size_t>(4 * k) + c] = static_cast<float>(v.re[c]);
-            m_table[static_cast<std::size_t>(4 * (table_width + k)) + c] =
-                static_cast<float>(v.im[c]);
+            m_table[static_cast<std::size_t>(4 * (m_width + k)) + c] = static_cast<float>(v.im[c]);
         }
     }
     // The envelope: max |V_c| over τ from each step on, sampled every eighth of the table's
     // step (where |V| varies by under 1 %: its fastest oscillation, the 380 nm edge against the
     // blue centre, has a period of about 2 000 nm), with 1 % to spare.
-    const int fine = 8 * (table_width - 3);
+    const int fine = 8 * (default_table_width - 3);
     std::vector<double> largest(static_cast<std::size_t>(fine) + 1, 0.0);
     for (int i = fine; i >= 0; --i) {
         const Transform v = exact_transform(table_end_nm * i / fine);
@@ -501,7 +512,7 @@ FilmShader::Transform FilmShader::exact_transform(double tau_nm) const noexcept 
 
 FilmShader::Transform FilmShader::interpolated_transform(float tau_nm) const noexcept {
     const float x = tau_nm * static_cast<float>(1.0 / table_step_nm());
-    const float fx = std::min(std::floor(x), static_cast<float>(table_width - 4));
+    const float fx = std::min(std::floor(x), static_cast<float>(m_width - 4));
     const std::array<float, 4> w = catmull_rom(x - fx);
     const int j = static_cast<int>(fx);
     Transform v{};
@@ -510,7 +521,7 @@ FilmShader::Transform FilmShader::interpolated_transform(float tau_nm) const noe
         for (int t = 0; t < 4; ++t) {
             const auto k = static_cast<std::size_t>(j + t);
             re += w[static_cast<std::size_t>(t)] * m_table[4 * k + c];
-            im += w[static_cast<std::size_t>(t)] * m_table[4 * (table_width + k) + c];
+            im += w[static_cast<std::size_t>(t)] * m_table[4 * (m_width + k) + c];
         }
         v.re[c] = re;
         v.im[c] = im;
@@ -600,16 +611,13 @@ std::string FilmShader::glsl() const {
     out +=
         "// irid: the exact colour of a thin film, for KHR_materials_iridescence renderers "
         "(three.js\n";
+    out += "// r187's evalIridescence signature), generated by `irid shader --lang glsl` for\n";
+    out += "// illuminant " + m_illuminant + ", space " + m_space + ", CIE 1931 2 deg observer.\n";
     out +=
-        "// r187's evalIridescence signature). Generated by `irid shader --lang glsl`: "
-        "illuminant " +
-        m_illuminant + ", space " + m_space + ",\n";
-    out += "// CIE 1931 2 deg observer. GLSL ES 3.00; paste after three.js's own chunks or after\n";
-    out +=
-        "// `#version 300 es` and `precision highp float;`. Bind irid_film_table.f32 (described "
-        "by\n";
-    out +=
-        "// irid_film_table.json) as an RGBA32F texture with NEAREST filtering to iridFilmTable.\n";
+        "// GLSL ES 3.00: paste it into a fragment shader after three.js's own chunks, or after\n";
+    out += "// the version line (300 es) and a highp float precision. Bind irid_film_table.f32\n";
+    out += "// (described by irid_film_table.json) as an RGBA32F texture to iridFilmTable; it is\n";
+    out += "// read with texelFetch, so NEAREST filtering suffices.\n";
     out += "// The algorithm: irid's docs/OPTICS.md, \"In a renderer\".\n";
     out += "uniform highp sampler2D iridFilmTable;\n\n";
     out += "// Each channel's centre wavenumber [1/nm], about which the table is demodulated.\n";
@@ -620,7 +628,7 @@ std::string FilmShader::glsl() const {
     out += "const float IRID_INV_STEP = " + glsl_float(1.0 / table_step_nm()) + ";\n";
     out += "const float IRID_TABLE_END = " + glsl_float(table_end_nm) + ";\n";
     out += "// The last texel at which the interpolant's four taps start (width - 4).\n";
-    out += "const float IRID_LAST_TAP = " + glsl_float(table_width - 4) + ";\n";
+    out += "const float IRID_LAST_TAP = " + glsl_float(m_width - 4) + ";\n";
     out += "// The term loop stops below this bound on the remaining terms (white = 1), or after\n";
     out += "// IRID_MAX_TERMS terms.\n";
     out += "const float IRID_TOLERANCE = " + glsl_float(term_tolerance) + ";\n";
@@ -676,11 +684,11 @@ std::string FilmShader::table_json() const {
         "{{\n  \"width\": {},\n  \"height\": {},\n  \"uniform\": {},\n  \"illuminant\": {},\n  "
         "\"space\": {},\n"
         "  \"filter\": \"nearest\"\n}}\n",
-        table_width, table_height, json_string(uniform_name), json_string(m_illuminant),
+        m_width, table_height, json_string(uniform_name), json_string(m_illuminant),
         json_string(m_space));
 }
 
-std::vector<ShaderFile> FilmShader::files(ShaderLanguage language) const {
+std::vector<std::pair<std::string, std::string>> FilmShader::files(ShaderLanguage language) const {
     switch (language) {
         case ShaderLanguage::glsl: break;
     }

@@ -17,6 +17,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace irid {
@@ -26,19 +27,17 @@ enum class ShaderLanguage { glsl };
 /// The language of a name ("glsl"); throws UnknownNameError listing the names.
 [[nodiscard]] ShaderLanguage parse_shader_language(std::string_view name);
 
-/// One file of the shader: its name inside the output folder and its bytes.
-struct ShaderFile {
-    std::string name;
-    std::string bytes;
-};
-
 class FilmShader {
 public:
-    /// The table: `table_width` × 2 RGBA float32 texels. Texel k of row 0 holds Re V_c(τ_k) in
+    /// The table: width() × 2 RGBA float32 texels. Texel k of row 0 holds Re V_c(τ_k) in
     /// R, G, B (c = the working space's channels), row 1 Im V_c(τ_k), with τ_k = (k − 1) ×
     /// table_step_nm(): the first texel is τ = −step, so the cubic interpolant's four taps stay
-    /// inside the table for 0 <= τ < table_end_nm(). A = 0.
-    static constexpr int table_width = 512;
+    /// inside the table for 0 <= τ < table_end_nm. A = 0. The default width keeps the
+    /// interpolant within 1e-4 of the white (docs/OPTICS.md measures the error against the width).
+    static constexpr int default_table_width = 512;
+    static constexpr int min_table_width = 16;
+    /// WebGL 2's least MAX_TEXTURE_SIZE (OpenGL ES 3.0 §6.2, table 6.28).
+    static constexpr int max_table_width = 2048;
     static constexpr int table_height = 2;
     /// Where the table's τ (optical path difference) ends [nm]: terms past it are dropped. |V|
     /// is below 1e-3 of the white from 30 µm on (docs/OPTICS.md measures it), and the first
@@ -61,14 +60,17 @@ public:
     static constexpr std::string_view uniform_name = "iridFilmTable";
 
     /// Tabulates the colorimeter's weighted matching functions in its RGB space. The names are
-    /// what the JSON records (illuminant and space as given on the command line).
-    FilmShader(const Colorimeter& colorimeter, std::string illuminant_name, std::string space_name);
+    /// what the JSON records (illuminant and space as given on the command line). Throws
+    /// irid::Error unless min_table_width <= table_width <= max_table_width.
+    FilmShader(const Colorimeter& colorimeter, std::string illuminant_name, std::string space_name,
+               int table_width = default_table_width);
 
-    /// The table's texels as described above, row-major: table_width × table_height × 4 floats.
+    /// The table's texels as described above, row-major: width() × table_height × 4 floats.
     [[nodiscard]] std::span<const float> table() const noexcept { return m_table; }
-    /// The spacing of the table's τ [nm]: table_end_nm / (table_width − 3).
-    [[nodiscard]] static constexpr double table_step_nm() noexcept {
-        return table_end_nm / static_cast<double>(table_width - 3);
+    [[nodiscard]] int width() const noexcept { return m_width; }
+    /// The spacing of the table's τ [nm]: table_end_nm / (width() − 3).
+    [[nodiscard]] double table_step_nm() const noexcept {
+        return table_end_nm / static_cast<double>(m_width - 3);
     }
     /// Each channel's centre wavenumber [1/nm] (Σ w ν / Σ w over the 1 nm grid), about which
     /// its transform is demodulated: V_c(τ) = Σ_i w_c,i e^{2πiτ(ν_i − ν_c)}.
@@ -108,8 +110,9 @@ public:
     [[nodiscard]] std::string table_bytes() const;
     /// {"width", "height", "uniform", "illuminant", "space", "filter": "nearest"}.
     [[nodiscard]] std::string table_json() const;
-    /// The three files: irid_iridescence.glsl, irid_film_table.f32, irid_film_table.json.
-    [[nodiscard]] std::vector<ShaderFile> files(
+    /// The three files, each its name and bytes: irid_iridescence.glsl, irid_film_table.f32,
+    /// irid_film_table.json.
+    [[nodiscard]] std::vector<std::pair<std::string, std::string>> files(
         ShaderLanguage language = ShaderLanguage::glsl) const;
 
 private:
@@ -117,6 +120,7 @@ private:
     std::vector<double> m_wavenumber;
     std::array<double, 3> m_centre{}, m_white{};
     std::array<double, envelope_count> m_envelope{};
+    int m_width = default_table_width;
     std::vector<float> m_table;
     std::string m_illuminant, m_space;
 };
