@@ -17,6 +17,7 @@
 
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <tbb/parallel_for.h>
 
