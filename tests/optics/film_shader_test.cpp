@@ -347,6 +347,14 @@ TEST(FilmShader, JsonDescribesTheTable) {
 TEST(FilmShader, ChunkHasOneUniformNoVersionAndPrefixedHelpers) {
     const std::string g = shader().glsl();
     EXPECT_EQ(g.find("#version"), std::string::npos);
+    // Printable ASCII only, comments included (early WebGL implementations refused other
+    // characters even there), and none of ` $ \ that would end or interpolate the JavaScript
+    // template string a page often pastes the chunk into.
+    for (const char ch : g) {
+        const auto u = static_cast<unsigned char>(ch);
+        EXPECT_TRUE((u >= 0x20 && u < 0x7f && ch != '`' && ch != '$' && ch != '@' && ch != '\\') || ch == '\n')
+            << "character " << static_cast<int>(u);
+    }
     std::size_t uniforms = 0;
     for (std::size_t at = g.find("uniform "); at != std::string::npos;
          at = g.find("uniform ", at + 1))
