@@ -19,6 +19,7 @@
 #include <iostream>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <set>
 #include <string>
 
@@ -305,6 +306,36 @@ TEST(FilmShader, HostileInputsGiveFiniteColours) {
     EXPECT_GT(checked, 0);
 }
 
+TEST(FilmShader, RandomInputsOverWideRangesGiveFiniteColours) {
+    // Ambients 0.5–4, films 0.5–5 (log-uniform), any cos θ, thicknesses up to 10 mm, any F0,
+    // with the exact edges mixed in: grazing and normal incidence, a film matching the ambient,
+    // a film exactly at its critical angle.
+    std::mt19937 rng(28);
+    const auto log_uniform = [&](float lo, float hi) {
+        return std::exp(std::uniform_real_distribution<float>(std::log(lo), std::log(hi))(rng));
+    };
+    const auto uniform = [&](float lo, float hi) {
+        return std::uniform_real_distribution<float>(lo, hi)(rng);
+    };
+    for (int i = 0; i < 200000; ++i) {
+        const float n0 = log_uniform(0.5f, 4.0f);
+        float n1 = log_uniform(0.5f, 5.0f);
+        float c = uniform(0.0f, 1.0f);
+        const float d = i % 5 == 0 ? log_uniform(1e-6f, 1e7f) : uniform(0.0f, 3000.0f);
+        if (i % 97 == 0) c = 0.0f;
+        if (i % 89 == 0) c = 1.0f;
+        if (i % 83 == 0) n1 = n0;
+        if (i % 79 == 0) c = std::sqrt(std::max(0.0f, 1.0f - (n1 / n0) * (n1 / n0)));
+        const std::array<float, 3> f0{uniform(0.0f, 1.0f), uniform(0.0f, 1.0f),
+                                      log_uniform(1e-8f, 1.0f)};
+        const Rgb rgb = shader().evaluate(n0, n1, c, d, f0).rgb;
+        ASSERT_TRUE(std::isfinite(rgb.r) && std::isfinite(rgb.g) && std::isfinite(rgb.b))
+            << n0 << " " << n1 << " " << c << " " << d << " " << f0[0] << " " << f0[1] << " "
+            << f0[2];
+        ASSERT_LT(std::max({std::fabs(rgb.r), std::fabs(rgb.g), std::fabs(rgb.b)}), 2.0);
+    }
+}
+
 TEST(FilmShader, TableBytesAreLittleEndianFloatTexels) {
     const FilmShader& s = shader();
     const std::string bytes = s.table_bytes();
@@ -352,7 +383,8 @@ TEST(FilmShader, ChunkHasOneUniformNoVersionAndPrefixedHelpers) {
     // template string a page often pastes the chunk into.
     for (const char ch : g) {
         const auto u = static_cast<unsigned char>(ch);
-        EXPECT_TRUE((u >= 0x20 && u < 0x7f && ch != '`' && ch != '$' && ch != '@' && ch != '\\') || ch == '\n')
+        EXPECT_TRUE((u >= 0x20 && u < 0x7f && ch != '`' && ch != '$' && ch != '@' && ch != '\\') ||
+                    ch == '\n')
             << "character " << static_cast<int>(u);
     }
     std::size_t uniforms = 0;
