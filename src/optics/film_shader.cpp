@@ -8,6 +8,7 @@
 #include <irid/color/spectrum.h>
 #include <irid/error.h>
 #include <irid/optics/film_shader.h>
+#include <irid/text_input.h>
 
 #include <fmt/core.h>
 
@@ -22,7 +23,7 @@ namespace irid {
 
 ShaderLanguage parse_shader_language(std::string_view name) {
     if (name == "glsl") return ShaderLanguage::glsl;
-    throw UnknownNameError(fmt::format("shader language '{}' is unknown; valid: glsl", name),
+    throw UnknownNameError("shader language " + quote_untrusted(name) + " is unknown; valid: glsl",
                            {"glsl"});
 }
 
@@ -31,7 +32,7 @@ Colorimeter film_shader_colorimeter(std::string_view illuminant, std::string_vie
     if (rgb == nullptr) {
         std::string names;
         for (const std::string& n : rgb_space_names()) names += (names.empty() ? "" : ", ") + n;
-        throw UnknownNameError(fmt::format("space '{}' is unknown; valid: {}", space, names),
+        throw UnknownNameError("space " + quote_untrusted(space) + " is unknown; valid: " + names,
                                rgb_space_names());
     }
     return Colorimeter(illuminant_by_name(illuminant), Observer::cie1931_2deg, *rgb);
