@@ -44,6 +44,7 @@ void add_ocio_config_command(CLI::App& app, Runner& runner);
 void add_figure_command(CLI::App& app, Runner& runner);
 void add_render_command(CLI::App& app, Runner& runner);
 void add_gallery_command(CLI::App& app, Runner& runner);
+void add_shader_command(CLI::App& app, Runner& runner);
 
 /// Reads all of standard input as a numeric CSV table (source name "<stdin>").
 [[nodiscard]] NumericTable read_stdin_table(int columns, int min_columns = 1);

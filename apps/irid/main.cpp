@@ -60,6 +60,7 @@ int main(int argc, char** argv) {
     add_ocio_config_command(app, runner);
     add_figure_command(app, runner);
     add_render_command(app, runner);
+    add_shader_command(app, runner);
     add_gallery_command(app, runner);
 
     // CLI11 reports an unknown command word as a missing subcommand; name it instead.

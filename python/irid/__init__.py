@@ -58,7 +58,8 @@ from ._optics import (Film, FilmColors, FilmColorTable, FilmColorTable2D, Materi
                       morpho_effective_thickness, morpho_reflectance, thesis_effective_thickness,
                       thesis_film_angle, thesis_film_reflectance, thesis_film_table,
                       thesis_matched_k, thesis_multilayer_effective_thickness,
-                      thesis_multilayer_reflectance, thesis_phase_change, thesis_unit_peak_k)
+                      thesis_multilayer_reflectance, thesis_phase_change, thesis_unit_peak_k,
+                      write_film_shader)
 from ._render import Render, gallery, render, scenes
 
 __all__ = [
@@ -114,6 +115,7 @@ __all__ = [
     "thesis_phase_change",
     "thesis_unit_peak_k",
     "white_point",
+    "write_film_shader",
     "write_image",
     "write_ocio_config",
 ]

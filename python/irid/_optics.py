@@ -14,7 +14,7 @@ from typing import NamedTuple
 import numpy as np
 
 from . import _irid
-from ._args import _flag, _number, _plain, _whole
+from ._args import _flag, _name, _number, _path, _plain, _whole
 
 __all__ = [
     "Film",
@@ -558,3 +558,28 @@ def thesis_film_table(phase_change=True, max_effective_thickness=2000.0, step=1.
     """
     return _irid.thesis_film_table(_flag(phase_change, "phase_change"), _number(max_effective_thickness, "max_effective_thickness"),
                                    _number(step, "step"), illuminant, observer)
+
+
+def write_film_shader(directory, lang="glsl", illuminant="D65", space="srgb"):
+    """Writes the exact film colour as a shader chunk and its table (``irid shader``).
+
+    directory: the folder (created if missing). lang: "glsl", a GLSL ES 3.00 chunk defining
+    three.js's ``vec3 evalIridescence(float outsideIOR, float eta2, float cosTheta1, float
+    thinFilmThickness, vec3 baseF0)`` with one uniform, ``iridFilmTable``. illuminant and space:
+    as :func:`film_color` takes them (CIE 1931 observer); the chunk returns linear RGB of that
+    space, a perfect mirror (1, 1, 1).
+
+    Returns the paths written: irid_iridescence.glsl, irid_film_table.f32 (little-endian float32
+    RGBA texels, row-major) and irid_film_table.json (width, height, uniform, illuminant, space,
+    filter). Raises KeyError for an unknown language, illuminant or space, OSError when a file
+    cannot be written.
+
+    >>> import json, os, tempfile, irid
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     paths = irid.write_film_shader(folder)
+    ...     table = json.load(open(paths[2]))
+    ...     [os.path.basename(p) for p in paths], os.path.getsize(paths[1]) == table["width"] * table["height"] * 16
+    (['irid_iridescence.glsl', 'irid_film_table.f32', 'irid_film_table.json'], True)
+    """
+    return _irid.write_film_shader(_path(directory), _name(lang, "lang"),
+                                   _name(illuminant, "illuminant"), _name(space, "space"))

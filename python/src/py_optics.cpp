@@ -5,9 +5,11 @@
 #include "arrays.h"
 
 #include <irid/color.h>
+#include <irid/io/output_file.h>
 #include <irid/optics/film.h>
 #include <irid/optics/film_builder.h>
 #include <irid/optics/film_color.h>
+#include <irid/optics/film_shader.h>
 #include <irid/optics/fourier_film.h>
 #include <irid/optics/material.h>
 #include <irid/optics/renderer_films.h>
@@ -15,10 +17,12 @@
 
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cctype>
 #include <cmath>
 #include <memory>
@@ -263,6 +267,25 @@ void add_optics(py::module_& m) {
             py::arg("thickness"), py::arg("angle_rad"), py::arg("illuminant"), py::arg("observer"),
             py::arg("rgb"), py::arg("integration") = "sum")
         .def("effective_thickness", &FilmModel::effective_thickness_nm, py::arg("angle_rad"));
+
+    // --- The film colour as a shader chunk and its table (irid shader) --------------------
+    m.def(
+        "write_film_shader",
+        [](const std::filesystem::path& dir, const std::string& lang, const std::string& illuminant,
+           const std::string& space) {
+            const ShaderLanguage language = parse_shader_language(lang);
+            const Colorimeter colorimeter = film_shader_colorimeter(illuminant, space);
+            std::vector<std::string> paths;
+            py::gil_scoped_release release;
+            const FilmShader shader(colorimeter, illuminant, space);
+            try {
+                for (const auto& p : io::write_output_files(dir, shader.files(language))) paths.push_back(p.string());
+            } catch (const Error& e) {
+                throw FileError(e.what());
+            }
+            return paths;
+        },
+        py::arg("dir"), py::arg("lang"), py::arg("illuminant"), py::arg("space"));
 
     // --- The renderers' thin-film models (colour only) ------------------------------------
     m.def("renderer_film_models", &renderer_film_model_names,

@@ -27,6 +27,11 @@ std::array<T, 9> to_array(const Mat3& m) noexcept {
 /// 1.3e-5 at 1000 (docs/KERNELS.md).
 constexpr double precise_above_nits = 250.0;
 
+/// Aces2Kernel::error_of_largest: the largest measured, 3.4e-5 (float) and 8.9e-7 (double back
+/// end), times three (docs/KERNELS.md).
+constexpr double float_error_of_largest = 1e-4;
+constexpr double precise_error_of_largest = 3e-6;
+
 }  // namespace
 
 struct Aces2Kernel::Builder {
@@ -129,6 +134,10 @@ void Aces2Kernel::run_stage(Stage stage, std::span<const float> in, std::span<fl
     if (m_inverse) throw Error("Aces2Kernel::run_stage: the stages are the forward's");
     detail::aces2_stage_run(*m_data, stage, in_float, in.data(), out.data(),
                             std::min(in.size(), out.size()) / 3);
+}
+
+double Aces2Kernel::error_of_largest() const noexcept {
+    return m_data->f.precise ? precise_error_of_largest : float_error_of_largest;
 }
 
 Vec3 Aces2Kernel::reference(const Vec3& in) const noexcept {

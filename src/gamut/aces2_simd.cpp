@@ -73,10 +73,13 @@ HWY_INLINE V Pow(D d, V x, V e) {
                    hn::Mul(e, hn::Log(d, hn::Max(x, hn::Set(d, std::numeric_limits<T>::min())))));
 }
 
-/// (F_L |c|)^0.42, the power inside the response.
+/// (F_L |c|)^0.42, the power inside the response; 0 for c = 0 (Pow would give the power of the
+/// smallest normal, which leaves a black colour's A above 0).
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V ResponsePower(D d, const Params<D>& p, V c) {
-    return Pow(d, hn::Mul(hn::Abs(c), hn::Set(d, p.fl_n)), C(d, response_exponent));
+    return hn::IfThenZeroElse(
+        hn::Eq(c, hn::Zero(d)),
+        Pow(d, hn::Mul(hn::Abs(c), hn::Set(d, p.fl_n)), C(d, response_exponent)));
 }
 
 /// The response of c from its ResponsePower f (Response).

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -265,6 +266,22 @@ void write_output_file(const fs::path& path, std::string_view bytes) {
     OutputFile file(path);
     file.write(bytes);
     file.commit();
+}
+
+std::vector<fs::path> write_output_files(const fs::path& folder,
+                                         const std::vector<std::pair<std::string, std::string>>& files) {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec) throw Error("cannot make the folder " + folder.string() + ": " + ec.message());
+    std::vector<std::unique_ptr<OutputFile>> outputs;
+    std::vector<fs::path> paths;
+    for (const auto& [name, bytes] : files) {
+        paths.push_back(folder / name);
+        outputs.push_back(std::make_unique<OutputFile>(paths.back()));
+        outputs.back()->write(bytes);
+    }
+    for (const auto& out : outputs) out->commit();
+    return paths;
 }
 
 }  // namespace irid::io

@@ -214,6 +214,42 @@ TEST(Aces2Kernel, NearNeutralColoursMatchTheDoubleChainOnEveryDisplay) {
     }
 }
 
+// error_of_largest bounds the error relative to a colour's largest channel, which is what an
+// encoded file's dark and saturated colours need (image_display.cpp): shadows down to 2^-26
+// with chroma, and the random colours, in each display's default encoding.
+TEST(Aces2Kernel, TheErrorOfTheLargestChannelIsWithinItsBound) {
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<float> stops(-26.0f, 7.0f), chroma(-0.1f, 1.0f);
+    std::vector<float> in = forward_colours(5000, 13);
+    for (int i = 0; i < 15000; ++i) {
+        const float g = std::exp2(stops(rng));
+        in.insert(in.end(), {g * chroma(rng), g * chroma(rng), g * chroma(rng)});
+    }
+    for (const Aces2DisplaySpec& spec : aces2_displays()) {
+        const RgbSpace* encoding = default_display_encoding(spec);
+        const Aces2Output out(spec);
+        const Aces2Kernel kernel(
+            out, false, Mat3::identity(),
+            encoding != nullptr ? encoding->from_xyz_matrix() : Mat3::identity());
+        std::vector<float> got(in.size());
+        (void)kernel.run(in, got);
+        double worst = 0.0;
+        std::size_t at = 0;
+        for (std::size_t i = 0; i < in.size(); i += 3) {
+            const Vec3 ref = kernel.reference({in[i], in[i + 1], in[i + 2]});
+            const double largest = std::max({std::abs(ref[0]), std::abs(ref[1]), std::abs(ref[2])});
+            for (std::size_t c = 0; c < 3; ++c) {
+                const double e = std::abs(got[i + c] - ref[c]) / std::max(largest, 1e-300);
+                if (e > worst) worst = e, at = i;
+            }
+        }
+        // Half the bound: it is three times the largest measured.
+        EXPECT_LE(worst, kernel.error_of_largest() / 2.0)
+            << spec.name << " at " << in[at] << " " << in[at + 1] << " " << in[at + 2] << ": "
+            << got[at] << " " << got[at + 1] << " " << got[at + 2];
+    }
+}
+
 TEST(Aces2Kernel, MatchesTheDoubleChainOnEveryCompiledTarget) {
     const Aces2Output sdr(aces2_display("sdr-100nit-rec709"));
     const Aces2Output hdr(aces2_display("hdr-4000nit-rec2020"));

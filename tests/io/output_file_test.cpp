@@ -168,6 +168,23 @@ TEST_F(OutputFiles, NothingIsVisibleBeforeCommitAndNothingIsLeftUnlessCommitted)
     EXPECT_EQ(slurp(m_dir / "t.txt"), "b");
 }
 
+TEST_F(OutputFiles, SeveralFilesAreRenamedOnlyOnceAllAreWritten) {
+    // A folder where the second file should go: refused before anything is renamed, so the
+    // first file's old bytes stay and no temporary file is left.
+    { std::ofstream(m_dir / "a.txt") << "old"; }
+    fs::create_directories(m_dir / "b.txt");
+    EXPECT_THROW((void)write_output_files(m_dir, {{"a.txt", "new"}, {"b.txt", "x"}}), Error);
+    EXPECT_EQ(slurp(m_dir / "a.txt"), "old");
+    EXPECT_EQ(files(), (std::vector<std::string>{"a.txt", "b.txt"}));
+    // All written, into a folder made for them; the paths come back in order.
+    const std::vector<fs::path> paths =
+        write_output_files(m_dir / "new" / "sub", {{"a.txt", "1"}, {"c.txt", "22"}});
+    ASSERT_EQ(paths.size(), 2u);
+    EXPECT_EQ(paths[0], m_dir / "new" / "sub" / "a.txt");
+    EXPECT_EQ(slurp(paths[0]), "1");
+    EXPECT_EQ(slurp(paths[1]), "22");
+}
+
 TEST_F(OutputFiles, AnExistingFileKeepsItsPermissions) {
     spit(m_dir / "secret.csv", "old");
     ::chmod((m_dir / "secret.csv").c_str(), 0600);

@@ -39,6 +39,31 @@ def test_an_sdr_png_holds_the_srgb_code_values_of_the_transform(irid_cli, tmp_pa
     assert np.all(got <= 1.0)
 
 
+@pytest.mark.parametrize("display, to, bits", [("sdr-100nit-rec709", "srgb", 8),
+                                              ("sdr-100nit-p3-d65", "rec1886", 16),
+                                              ("hdr-1000nit-p3-d65", "p3-d65-pq", 16),
+                                              ("hdr-4000nit-rec2020", "rec2100-pq", 16)])
+def test_an_encoded_file_holds_the_double_chains_codes(irid_cli, tmp_path, display, to, bits):
+    # The float kernel writes these files, and hands each colour whose error could change a
+    # code to the double chain: every code is the double chain's, except where its value lies
+    # within 0.01 of a code of a rounding boundary (where float32, which both are stored as
+    # before the writer rounds, decides). Shadows down to 2^-14, saturated colours whose small
+    # channels sit on the steep foot of the curves, and highlights.
+    rng = np.random.default_rng(21)
+    scene = (rng.uniform(-0.1, 1.0, size=(128, 128, 3)) *
+             2.0 ** rng.uniform(-14, 6, size=(128, 128, 1))).astype(np.float32)
+    src, out = tmp_path / "scene.exr", tmp_path / "out.png"
+    irid.write_image(src, scene, color_space="aces2065-1-linear")
+    run(irid_cli, "--view", "aces2", "--display", display, "--to", to, "--bits", bits, src, out)
+    got, meta = irid.read_image(out)
+    assert meta["bits"] == bits
+    levels = 2.0 ** bits - 1
+    want = np.clip(irid.display_transform(scene.astype(np.float64), display=display, target=to), 0, 1) * levels
+    boundary = np.abs(want - np.floor(want) - 0.5) < 0.01
+    differ = (np.rint(got * levels) != np.floor(want + 0.5)) & ~boundary
+    assert not differ.any(), (np.argwhere(differ)[:5], got[differ][:5] * levels, want[differ][:5])
+
+
 def test_an_hdr_png_is_16_bit_pq_and_an_exr_is_linear_with_its_chromaticities(irid_cli, tmp_path):
     scene = scene_image(seed=6)
     src = tmp_path / "scene.exr"

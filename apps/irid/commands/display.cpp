@@ -77,14 +77,13 @@ int run_display_image(const DisplayOptions& o) {
     } catch (const Error& e) {
         throw UsageError(e.what());  // an unknown name, an output format, a --to that is no RGB space
     }
-    int bits = plan.bits;
     if (o.bits != 0) {
         if (!plan.encoded) throw UsageError("--bits applies to PNG and TIFF; " + o.out + " is written as 32-bit float (EXR)");
         if (o.bits != 8 && o.bits != 16)
             throw UsageError("--bits " + std::to_string(o.bits) + ": valid values are 8 and 16");
         if (format == io::ImageFormat::jpeg && o.bits != 8)
             throw UsageError("--bits 16: JPEG holds 8 bits per sample; write PNG or TIFF for 16");
-        bits = o.bits;
+        plan.bits = o.bits;
     }
     io::Image image = io::read_image(o.in);
     const bool alpha = image.channel_index("A") >= 0;
@@ -109,7 +108,7 @@ int run_display_image(const DisplayOptions& o) {
     image.description = fmt::format("irid display --view {} --display {} --from {} --to {}; colour space {} ({})",
                                     plan.view, plan.display.name, report.source.described, plan.encoding->name(),
                                     image.color_space, plan.encoded ? "encoded" : "linear, 1.0 = 100 cd/m2");
-    io::write_image(o.out, image, io::ImageEncoding{.bits = bits, .compression = {}});
+    io::write_image(o.out, image, io::ImageEncoding{.bits = plan.bits, .compression = {}});
     return exit_success;
 }
 

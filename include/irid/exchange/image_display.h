@@ -24,8 +24,8 @@ struct DisplayImagePlan {
     const RgbSpace* encoding = nullptr;
     /// Encoded with its curve (an integer file), else linear (EXR).
     bool encoded = false;
-    /// Bits per sample for PNG and TIFF unless the caller says otherwise: 16 for PQ (whose
-    /// 8-bit steps are visible), else 8; JPEG holds 8.
+    /// Bits per sample of an integer file (the caller may change them before display_image):
+    /// 16 for PQ (whose 8-bit steps are visible), else 8; JPEG holds 8.
     int bits = 8;
 };
 
@@ -54,7 +54,10 @@ struct DisplayImageReport {
     std::size_t clipped = 0;
 };
 
-/// Converts the image's colours in place and tags it (tag_image) for `format`. Throws
+/// Converts the image's colours in place and tags it (tag_image) for `format`. For an integer
+/// file the values are those whose codes at plan.bits are the double chain's: the float kernel
+/// computes them, and each colour whose kernel error could move a channel to another code is
+/// computed in double (docs/DISPLAY.md). Throws
 /// irid::Error naming `what` for an image without colour channels, a space that contradicts
 /// them (ImageSourceConflict), a damaged or unusable profile.
 DisplayImageReport display_image(io::Image& image, const DisplayImagePlan& plan, const DisplayImageOptions& options,

@@ -16,6 +16,7 @@
 #include <irid/gamut/aces2_kernel.h>
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -55,6 +56,11 @@ public:
 
     [[nodiscard]] const DisplayTransformOptions& options() const noexcept { return m_options; }
     [[nodiscard]] const Aces2Output& output() const noexcept { return *m_output; }
+    /// The float kernel's error bound relative to a result's largest channel
+    /// (Aces2Kernel::error_of_largest), when apply() on floats runs it (both sides linear).
+    [[nodiscard]] std::optional<double> kernel_error_of_largest() const noexcept {
+        return m_kernel ? std::optional(m_kernel->error_of_largest()) : std::nullopt;
+    }
 
 private:
     template <class T>

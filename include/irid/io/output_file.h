@@ -27,6 +27,8 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace irid::io {
 
@@ -113,5 +115,12 @@ private:
 /// Writes `bytes` to `path` as an OutputFile (above): the whole file or, on failure,
 /// irid::Error naming the path and the destination as it was.
 void write_output_file(const std::filesystem::path& path, std::string_view bytes);
+
+/// Writes files, each a name inside the folder and its bytes, into a folder (created if
+/// missing) as OutputFiles: every file is written to
+/// its temporary name before any is renamed into place, so a failure while writing (a full
+/// disk, a refused path) leaves every destination as it was. Returns the paths written.
+std::vector<std::filesystem::path> write_output_files(
+    const std::filesystem::path& folder, const std::vector<std::pair<std::string, std::string>>& files);
 
 }  // namespace irid::io
