@@ -11,10 +11,14 @@
 //     the camera, whose specular is iridescenceFresnel times a grey factor.
 //
 // input: {table: URL of irid's folder, size, filmIOR, baseIOR, thicknessMinimum, thicknessMaximum,
-//         mapGreen: 0–255 (the thickness map's G), samples: [[px, py], ...]}
+//         mapGreen: 0–255 (the thickness map's G), samples: [[px, py], ...], cosines: cos θ
+//         of each sample}
 // returns: {isolated: {patched, unpatched, patchedMap}, lit: {patched, unpatched}}: each a list
-//          of [r, g, b] at the samples; and programs: the number of programs three.js compiled.
+//          of [r, g, b] at the samples; stock: three's own chunk evaluated directly
+//          (web/film-grid.js) at the samples' cos θ and the range's maximum; and programs: the
+//          number of programs three.js compiled.
 import * as THREE from 'three';
+import { createContext, renderGrid, stockChunk } from '/web/film-grid.js';
 import { applyIridescence, loadIridTable } from '/web/irid-three.js';
 
 function isolate(material) {
@@ -85,6 +89,11 @@ export async function run(input) {
         },
     };
     out.programs = renderer.info.programs.length;
+    const baseF0 = ((input.baseIOR - 1) / (input.baseIOR + 1)) ** 2;
+    const params = new Float32Array(input.cosines.flatMap(
+        (c) => [1, input.filmIOR, c, input.thicknessMaximum, baseF0, baseF0, baseF0]));
+    const stock = renderGrid(createContext(), stockChunk(THREE.ShaderChunk), params, 'stock');
+    out.stock = input.cosines.map((_, i) => [stock[3 * i], stock[3 * i + 1], stock[3 * i + 2]]);
     const gl = renderer.getContext();
     if (gl.getError() !== gl.NO_ERROR) throw new Error('WebGL reported an error');
     return out;

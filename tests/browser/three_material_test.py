@@ -8,7 +8,7 @@ At sample pixels of the unit sphere (cos θ = √(1 − x² − y²) from the pi
 - isolated (three's material.iridescenceFresnel as the output): the patched material gives the
   exact film (irid.Film.exact, ambient 1, film n = iridescenceIOR, base n = the material's ior,
   thickness = the range's maximum) and, with a thickness map, the thickness three.js derives
-  from its G channel; the unpatched material gives visibly other colours;
+  from its G channel; the unpatched material gives three's own chunk's colours, visibly other;
 - lit (black base colour, metalness 0, one directional light from the camera): the specular's
   colour is the exact film's times a grey factor, and not the unpatched material's.
 Needs the Python module on PYTHONPATH, irid (for `irid shader`, unless --table is given), node,
@@ -39,6 +39,9 @@ ISOLATED_MAX_DE = 0.6
 LIT_MAX_RELATIVE = 0.01
 # The unpatched material (three's glTF model) must be told apart: ΔE2000 well above the noise.
 DIFFERENT_MIN_DE = 1.0
+# ... and be three's own evalIridescence (film_grid_test checks it against irid's CPU port),
+# evaluated directly at the samples' cos θ: equal but for the tessellation (0.05 seen; 0.2).
+UNPATCHED_MAX_DE = 0.2
 
 check = Checks()
 
@@ -73,7 +76,7 @@ def main():
         out = run_page(work, "/tests/three_material_page.js",
                        {"table": "/table/", "size": SIZE, "filmIOR": FILM_IOR, "baseIOR": BASE_IOR,
                         "thicknessMinimum": RANGE[0], "thicknessMaximum": RANGE[1], "mapGreen": MAP_GREEN,
-                        "samples": pixels},
+                        "samples": pixels, "cosines": cos_theta(pixels).tolist()},
                        {"table": table}, timeout=300)
 
     c = cos_theta(pixels)
@@ -83,9 +86,12 @@ def main():
     map_thickness = RANGE[0] + (RANGE[1] - RANGE[0]) * MAP_GREEN / 255.0
     expected_map = film.color(thickness=map_thickness, angle=angles).rgb
     print(f"{len(pixels)} pixels at {angles.min():.1f}-{angles.max():.1f} deg; film n {FILM_IOR} on n {BASE_IOR}, "
-          f"{RANGE[1]:.0f} nm (range max) and {map_thickness:.1f} nm (map G {MAP_GREEN}); "
-          f"{out['programs']} programs compiled")
+          f"{RANGE[1]:.0f} nm (range max) and {map_thickness:.1f} nm (map G {MAP_GREEN})")
 
+    # Five materials whose shaders differ (isolated patched, unpatched, patched with a map; lit
+    # patched, unpatched): a cache key that let one reuse another's program would show fewer.
+    check(out["programs"] == 5, "three.js compiled one program per variant (customProgramCacheKey)",
+          f"{out['programs']} programs")
     iso = {k: np.array(v) for k, v in out["isolated"].items()}
     de = delta_e(iso["patched"], expected)
     check(de.max() <= ISOLATED_MAX_DE, f"patched iridescenceFresnel = the exact film (ΔE2000 <= {ISOLATED_MAX_DE})",
@@ -96,6 +102,11 @@ def main():
           f"mean {de.mean():.3f}, max {de.max():.3f}")
     de = delta_e(iso["unpatched"], expected)
     check(de.mean() >= DIFFERENT_MIN_DE, f"the unpatched material's differ (mean ΔE2000 >= {DIFFERENT_MIN_DE})",
+          f"mean {de.mean():.3f}, max {de.max():.3f}")
+    stock = np.array(out["stock"])
+    de = delta_e(iso["unpatched"], stock)
+    check(de.max() <= UNPATCHED_MAX_DE,
+          f"the unpatched material's are three's own chunk at the same angles (ΔE2000 <= {UNPATCHED_MAX_DE})",
           f"mean {de.mean():.3f}, max {de.max():.3f}")
 
     lit = {k: np.array(v) for k, v in out["lit"].items()}
