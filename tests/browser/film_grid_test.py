@@ -132,10 +132,10 @@ def run_browser(work, grids, table, size):
     """Runs tests/browser/film_grid_page.js in Chromium on the grids; returns its result."""
     for name, params in grids.items():
         params.astype("<f4").tofile(os.path.join(work, f"{name}.f32"))
-    page_input = {"grids": {name: f"/work/{name}.f32" for name in grids},
+    page_input = {"grids": {name: f"/grids/{name}.f32" for name in grids},
                   "table": "/table/" if table else None,
                   "timing": {"size": size, "frames": 5, "warmup": 1}}
-    serve = {"work": work, **({"table": table} if table else {})}
+    serve = {"grids": work, **({"table": table} if table else {})}
     return run_page(work, "/tests/film_grid_page.js", page_input, serve)
 
 
