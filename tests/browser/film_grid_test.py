@@ -20,6 +20,7 @@ when it cannot run.
 """
 import argparse
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -51,6 +52,12 @@ HARNESS_MAX_RGB = 5e-3
 # the harness is right; float noise moves a mean over 7218 samples by far less than this.
 ATLAS_MEAN_TOLERANCE = 0.02
 GOAL_MEAN, GOAL_MAX = 0.05, 0.5
+# Films near or past their own critical angle (an ambient above the film's index): the chunk
+# takes the Airy reflectance at each channel's centre wavenumber there (docs/OPTICS.md), checked
+# against that closed form in double. SwiftShader's sin and cos err by up to 1.5e-4, which puts
+# |z| = |e^(i phi)| off 1 by as much, and a film with a totally reflecting base amplifies that by
+# up to (1 + r01) / (1 - r01), about 7 here (measured: 1.4e-3 at most, 2.6e-6 on average).
+BEYOND_MAX_RGB = 3e-3
 
 check = Checks()
 
@@ -139,6 +146,48 @@ def run_browser(work, grids, table, size):
     return run_page(work, "/tests/film_grid_page.js", page_input, serve)
 
 
+def beyond_grid():
+    """Parameter sets (N, 7) whose film is within cos 0.1 of its critical angle or past it, as the
+    chunk decides in float (q1^2 < 0.01 n1^2, with a margin): an ambient of 1.5, films 1.2-1.45."""
+    sets = []
+    for n_film in (1.2, 1.33, 1.45):
+        for n_base in (1.0, 1.5, 2.5):
+            for t in np.arange(5.0, 2000.0, 45.0):
+                for sin0 in np.linspace(0.5, 0.999, 40):
+                    q1sq = n_film ** 2 - (1.5 * sin0) ** 2
+                    if q1sq < 0.0099 * n_film ** 2:
+                        sets.append([1.5, n_film, np.sqrt(1.0 - sin0 ** 2), t, *[f0_of(n_base)] * 3])
+    return np.array(sets)
+
+
+def airy_at_centres(params, centres):
+    """The Airy reflectance (unpolarised) at each channel's centre wavenumber, in double, with the
+    chunk's guards (q1^2 kept 1e-6 n1^2 from 0)."""
+    n0, n1, c0, d = (params[:, k:k + 1] for k in range(4))
+    s0 = np.sqrt(np.maximum(1.0 - c0 ** 2, 0.0))
+    f = np.sqrt(params[:, 4:7])
+    n2 = (1 + f) / (1 - f)
+    q0 = n0 * c0
+    q1sq = n1 ** 2 - (n0 * s0) ** 2
+    q1sq = np.where(np.abs(q1sq) < 1e-6 * n1 ** 2, 1e-6 * n1 ** 2, q1sq)
+    q1 = np.sqrt(q1sq + 0j)
+    q2 = np.sqrt(n2 ** 2 - (n0 * s0) ** 2 + 0j)
+    z = np.exp(4j * np.pi * d * q1 * np.asarray(centres)[None, :])
+    out = 0.0
+    for r01, r12 in (((q0 - q1) / (q0 + q1), (q1 - q2) / (q1 + q2)),
+                     ((n0 ** 2 * q1 - n1 ** 2 * q0) / (n0 ** 2 * q1 + n1 ** 2 * q0),
+                      (n1 ** 2 * q2 - n2 ** 2 * q1) / (n1 ** 2 * q2 + n2 ** 2 * q1))):
+        out = out + 0.5 * np.abs((r01 + r12 * z) / (1 + r01 * r12 * z)) ** 2
+    return out
+
+
+def chunk_centres(table):
+    """IRID_CENTRE, the channels' centre wavenumbers, as the chunk bakes them."""
+    with open(os.path.join(table, "irid_iridescence.glsl")) as f:
+        m = re.search(r"IRID_CENTRE = vec3\(([^)]*)\)", f.read())
+    return [float(v) for v in m.group(1).split(",")]
+
+
 def stats(de):
     return f"mean {de.mean():.4f}, median {np.median(de):.4f}, p95 {np.percentile(de, 95):.3f}, max {de.max():.3f}"
 
@@ -156,8 +205,10 @@ def main():
 
         params, exact, gltf, labels = issue_grid()
         atlas_params, atlas_exact, atlas_gltf, atlas_labels = atlas_grid()
+        beyond = beyond_grid()
+        beyond_want = airy_at_centres(beyond, chunk_centres(table))
         cli_spot_checks(cli, params, exact)
-        out = run_browser(work, {"issue": params, "atlas": atlas_params}, table, args.size)
+        out = run_browser(work, {"issue": params, "atlas": atlas_params, "beyond": beyond}, table, args.size)
 
     print(f"browser: three.js r{out['three']}, {out['renderer']}, {', '.join(out['extensions'])}")
     grid_name = (f"issue 28's grid: film n {FILM_INDICES}, base n {BASE_INDICES}, outside 1, "
@@ -210,6 +261,16 @@ def main():
               f"irid's chunk vs the exact film (mean ΔE2000 <= {GOAL_MEAN}, max <= {GOAL_MAX})",
               f"{stats(de)} (worst at {labels[worst]}, {params[worst, 3]:.0f} nm, "
               f"{np.degrees(np.arccos(min(params[worst, 2], 1.0))):.0f} deg); max |RGB| {np.abs(ours - exact).max():.2g}")
+
+        got = np.array(out["grids"]["beyond"]["irid"]).reshape(-1, 3)
+        err = np.abs(got - beyond_want)
+        w = int(err.max(axis=1).argmax())
+        check(err.max() <= BEYOND_MAX_RGB,
+              f"irid's chunk near or past the film's critical angle = the Airy reflectance at its centres "
+              f"(max |RGB| <= {BEYOND_MAX_RGB})",
+              f"{len(beyond)} sets (ambient 1.5, films 1.2-1.45, bases 1.0-2.5, 5-1985 nm): max |RGB| "
+              f"{err.max():.2g} (film {beyond[w, 1]}, base F0 {beyond[w, 4]:.3f}, {beyond[w, 3]:.0f} nm, "
+              f"cos {beyond[w, 2]:.4f}: {got[w]} against {beyond_want[w]}), mean {err.mean():.2g}")
 
     # 3. The cost.
     timing = out["timing"]
