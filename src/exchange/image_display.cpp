@@ -112,10 +112,13 @@ DisplayImageReport display_image(io::Image& image, const DisplayImagePlan& plan,
     const std::string target = plan.encoding->name() + (plan.encoded ? "" : "-linear");
     const DisplayTransform transform(DisplayTransformOptions{
         .view = plan.view, .display = plan.display.name, .source = "aces2065-1-linear", .target = target});
-    // An integer file: the float kernel to the encoding's linear light where that stores the
-    // double chain's codes (show_encoded).
+    // An 8-bit file: the float kernel to the encoding's linear light where that stores the
+    // double chain's codes (show_encoded). A 16-bit code is finer than the float kernel's error,
+    // so most colours of a 16-bit file would go to the double chain after the kernel and the
+    // curve's checks, which cost more than the double chain alone (a PQ curve's two powers in
+    // double each way).
     std::optional<DisplayTransform> linear;
-    if (plan.encoded) {
+    if (plan.encoded && plan.bits == 8) {
         linear.emplace(DisplayTransformOptions{.view = plan.view,
                                                .display = plan.display.name,
                                                .source = "aces2065-1-linear",

@@ -54,10 +54,10 @@ struct DisplayImageReport {
     std::size_t clipped = 0;
 };
 
-/// Converts the image's colours in place and tags it (tag_image) for `format`. For an integer
-/// file the values are those whose codes at plan.bits are the double chain's: the float kernel
-/// computes them, and each colour whose kernel error could move a channel to another code is
-/// computed in double (docs/DISPLAY.md). Throws
+/// Converts the image's colours in place and tags it (tag_image) for `format`. An integer file
+/// gets values whose codes at plan.bits are the double chain's: for 8 bits the float kernel
+/// computes them and each colour whose kernel error could move a channel to another code is
+/// computed in double; for 16 bits the double chain computes all (docs/DISPLAY.md). Throws
 /// irid::Error naming `what` for an image without colour channels, a space that contradicts
 /// them (ImageSourceConflict), a damaged or unusable profile.
 DisplayImageReport display_image(io::Image& image, const DisplayImagePlan& plan, const DisplayImageOptions& options,
