@@ -82,7 +82,8 @@ const modules = {
     // Relative to the page, as iridescence-page.js imports it.
     './irid-three.js': read(path.join(here, 'irid-three.js')),
 };
-for (const [name, text] of Object.entries(modules)) {
+const pageModule = read(path.join(here, 'iridescence-page.js'));
+for (const [name, text] of [...Object.entries(modules), ['iridescence-page.js', pageModule]]) {
     // A module importing anything but these (a relative file) would fail in the page.
     for (const m of text.matchAll(/\bfrom\s*['"]([^'"]+)['"]/g)) {
         if (!(m[1] in modules)) fail(`${name} imports '${m[1]}', which the page does not carry`);
@@ -95,7 +96,6 @@ for (const [name, text] of Object.entries(modules)) {
 
 // JSON inside <script>: '<' escaped, so that no '</script' can end the element early.
 const scriptJson = (value) => JSON.stringify(value).replaceAll('<', '\\u003c');
-const pageModule = read(path.join(here, 'iridescence-page.js'));
 if (/<\/script/i.test(pageModule)) fail("iridescence-page.js contains '</script', which would end its element");
 
 const template = read(path.join(here, 'iridescence.html'));
