@@ -200,7 +200,8 @@ GalleryResult make_gallery(const GalleryOptions& o) {
         page.add("<h2>Live pages</h2>\n<ul>\n");
         for (const LinkedPage& p : o.pages)
             page.add(fmt::format("<li><a href=\"{}\">{}</a></li>\n",
-                                 html_escape(p.file.lexically_normal().generic_string()), html_escape(p.title)));
+                                 html_escape(p.file.lexically_normal().generic_string()),
+                                 html_escape(p.title)));
         page.add("</ul>\n");
     }
 

@@ -34,7 +34,8 @@ int run_gallery(const GalleryCommand& c) {
     for (const std::string& p : c.pages) {
         const auto eq = p.find('=');
         if (eq == std::string::npos || eq == 0)
-            throw UsageError(fmt::format("--page '{}': give FILE=TITLE (a file in the folder, the link's text)", p));
+            throw UsageError(fmt::format(
+                "--page '{}': give FILE=TITLE (a file in the folder, the link's text)", p));
         options.pages.push_back({p.substr(0, eq), p.substr(eq + 1)});
     }
     if (!c.quiet) options.progress = [](const std::string& what) { fmt::print(stderr, "irid gallery: {}\n", what); };
