@@ -151,10 +151,11 @@ def render(scene, width=None, height=None, spp=None, seed=None, set=None, clip=N
     return Render(linear, display, xyz, stats)
 
 
-def gallery(dir, width=1024, height=768, spp=4, figure_width=960, threads=0):
+def gallery(dir, width=1024, height=768, spp=4, figure_width=960, threads=0, pages=None):
     """Writes the gallery page as ``irid gallery -o DIR`` does: the scenes, the figures and
     tables, the colour paths compared and the clip report in DIR/index.html with its images.
-    Returns the page's path. Takes minutes at the default size; the GIL is released.
+    pages ({file: title}, as ``--page FILE=TITLE``) links pages already in DIR. Returns the
+    page's path. Takes minutes at the default size; the GIL is released.
 
     >>> import irid
     >>> irid.gallery("gallery", width=320, height=240, spp=1)   # doctest: +SKIP
@@ -173,6 +174,10 @@ def gallery(dir, width=1024, height=768, spp=4, figure_width=960, threads=0):
         raise ValueError(f"dir: {dir!r} is not a folder name") from None
     if not path or "\0" in path:
         raise ValueError("dir: an empty name or a NUL byte; give the folder to write into")
+    if pages is None:
+        pages = {}
+    if not isinstance(pages, dict) or not all(isinstance(k, str) and isinstance(v, str) for k, v in pages.items()):
+        raise ValueError(f"pages: {pages!r} must be a dict of file names to titles (strings)")
     index, _ = _irid.gallery(path, args["width"], args["height"], args["spp"], args["figure_width"],
-                             args["threads"])
+                             args["threads"], list(pages.items()))
     return index

@@ -68,10 +68,12 @@ void add_render(py::module_& m) {
         py::arg("width"), py::arg("height"), py::arg("threads"));
     m.def(
         "gallery",
-        [](const std::string& dir, int width, int height, int spp, int figure_width, int threads) {
+        [](const std::string& dir, int width, int height, int spp, int figure_width, int threads,
+           const std::vector<std::pair<std::string, std::string>>& pages) {
             gallery::GalleryOptions o;
             o.dir = dir;
             o.width = width, o.height = height, o.spp = spp, o.figure_width = figure_width, o.threads = threads;
+            for (const auto& [file, title] : pages) o.pages.push_back({file, title});
             gallery::GalleryResult r;
             {
                 py::gil_scoped_release release;
@@ -88,7 +90,7 @@ void add_render(py::module_& m) {
             return py::make_tuple(r.index.string(), r.seconds);
         },
         py::arg("dir"), py::arg("width"), py::arg("height"), py::arg("spp"), py::arg("figure_width"),
-        py::arg("threads"));
+        py::arg("threads"), py::arg("pages"));
 }
 
 }  // namespace irid::python

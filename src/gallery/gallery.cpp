@@ -158,6 +158,17 @@ void check_options(const GalleryOptions& o) {
     in("spp", o.spp, 1, 256);
     in("figure width", o.figure_width, 320, 4096);
     in("threads", o.threads, 0, 1024);
+    for (const LinkedPage& p : o.pages) {
+        const std::filesystem::path file = p.file.lexically_normal();
+        if (p.file.empty() || file.is_absolute() || file.has_root_name() || *file.begin() == "..")
+            throw Error(fmt::format("gallery: the linked page '{}' must be a file inside the folder, "
+                                    "given relative to it", p.file.string()));
+        if (p.title.empty())
+            throw Error(fmt::format("gallery: the linked page '{}' has an empty title", p.file.string()));
+        if (!std::filesystem::is_regular_file(o.dir / file))
+            throw Error(fmt::format("gallery: the linked page '{}' is not in '{}' (write it first)",
+                                    p.file.string(), o.dir.string()));
+    }
 }
 
 }  // namespace
@@ -184,6 +195,15 @@ GalleryResult make_gallery(const GalleryOptions& o) {
         "Problem</i>. Every image on this page was made by this run of <code>irid gallery</code>; "
         "the numbers were measured while making them. Badges give the thesis' figure number "
         "where the thesis has one.</p>\n");
+
+    if (!o.pages.empty()) {
+        page.add("<h2>Live pages</h2>\n<ul>\n");
+        for (const LinkedPage& p : o.pages)
+            page.add(fmt::format("<li><a href=\"{}\">{}</a></li>\n",
+                                 html_escape(p.file.lexically_normal().generic_string()),
+                                 html_escape(p.title)));
+        page.add("</ul>\n");
+    }
 
     // --- The scenes ------------------------------------------------------------------------
     page.add("<h2>The thesis' scenes</h2>\n");

@@ -42,10 +42,20 @@ def delta_e(rgb_a, rgb_b):
     return irid.delta_e(lab_of(rgb_a), lab_of(rgb_b), "ciede2000")
 
 
-def run_page(work, module, page_input, serve, timeout=600):
+def node_env(work):
+    """The environment for node (and the Chromium it starts), with HOME in work."""
+    # Chromium and node are not built with irid's sanitizers: no preloaded ASan runtime for them.
+    env = {k: v for k, v in os.environ.items() if k not in ("LD_PRELOAD", "ASAN_OPTIONS", "LSAN_OPTIONS")}
+    env["HOME"] = work
+    return env
+
+
+def run_page(work, module, page_input, serve, timeout=600, page=None, screenshot=None):
     """Runs the page module (a URL under /tests/) with page_input in Chromium, the folders of
-    serve ({name: dir}) under /name/; returns what its run() returned. Exits the test (2) when
-    node is missing and (1 or 2) when the run fails, with run_page.mjs's message."""
+    serve ({name: dir}) under /name/; returns what its run() returned. With page (an HTML file),
+    the module runs in that page opened from file:// (run_page.mjs --page); with screenshot (a
+    PNG path), the page is saved there after run(). Exits the test (2) when node is missing and
+    (1 or 2) when the run fails, with run_page.mjs's message."""
     if shutil.which("node") is None:
         print("FAIL: node is not on PATH: run scripts/install-deps (it installs nodejs and web/node_modules)")
         sys.exit(2)
@@ -56,10 +66,11 @@ def run_page(work, module, page_input, serve, timeout=600):
         cmd += ["--serve", f"{name}={os.path.abspath(folder)}"]
     cmd += ["--module", module, "--input", os.path.join(work, "input.json"),
             "--output", os.path.join(work, "output.json"), "--timeout", str(timeout)]
-    # Chromium and node are not built with irid's sanitizers: no preloaded ASan runtime for them.
-    env = {k: v for k, v in os.environ.items() if k not in ("LD_PRELOAD", "ASAN_OPTIONS", "LSAN_OPTIONS")}
-    env["HOME"] = work
-    run = subprocess.run(cmd, env=env, timeout=timeout + 120)
+    if page:
+        cmd += ["--page", os.path.abspath(page)]
+    if screenshot:
+        cmd += ["--screenshot", os.path.abspath(screenshot)]
+    run = subprocess.run(cmd, env=node_env(work), timeout=timeout + 120)
     if run.returncode != 0:
         print(f"FAIL: the browser run ({' '.join(cmd)}) exited {run.returncode}")
         sys.exit(2 if run.returncode == 2 else 1)

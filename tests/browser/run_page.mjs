@@ -3,13 +3,17 @@
 // network: every request is answered from disk or refused).
 //
 //   node tests/browser/run_page.mjs --serve NAME=DIR ... --module /NAME/file.js
-//        --input in.json --output out.json [--timeout SECONDS]
+//        --input in.json --output out.json [--timeout SECONDS] [--page FILE] [--screenshot PNG]
 //
 // /NAME/... is DIR/...; /web/... is the repository's web/ folder and the import map resolves
 // 'three' (and 'three/addons/') to web/node_modules. The module's `run(input)` is awaited in
 // the page; its value is written to out.json. Exits 1 when the module throws, a request fails,
 // or the page logs an error; 2 on bad arguments or when Chromium or web/node_modules is
 // missing (scripts/install-deps installs both).
+// --page FILE opens FILE itself from file:// instead (a page that must work without a server):
+// any request it makes is refused and counted as a failure, and the module (read from its
+// --serve folder) is imported as a data: URL, since file:// pages load no module from a server.
+// --screenshot PNG saves the page as it is after run() returned.
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -36,7 +40,9 @@ function parseArgs(argv) {
         else if (key === '--input') args.input = value;
         else if (key === '--output') args.output = value;
         else if (key === '--timeout') args.timeout = Number(value);
-        else usage(`unknown option '${key}' (valid: --serve, --module, --input, --output, --timeout)`);
+        else if (key === '--page') args.page = path.resolve(value);
+        else if (key === '--screenshot') args.screenshot = value;
+        else usage(`unknown option '${key}' (valid: --serve, --module, --input, --output, --timeout, --page, --screenshot)`);
     }
     for (const k of ['module', 'input', 'output']) if (!args[k]) usage(`--${k} is required`);
     return args;
@@ -80,6 +86,14 @@ const importMap = {
 const indexHtml = `<!doctype html><html><head><meta charset="utf-8">
 <script type="importmap">${JSON.stringify(importMap)}</script></head><body></body></html>`;
 
+// The module's file on disk: /NAME/rest under its --serve folder.
+function servedFile(urlPath) {
+    const parts = decodeURIComponent(urlPath).split('/').filter(Boolean);
+    const root = args.serve[parts[0]];
+    const file = root ? path.resolve(root, ...parts.slice(1)) : null;
+    return file && file.startsWith(root + path.sep) && fs.existsSync(file) ? file : null;
+}
+
 const problems = [];
 const browser = await chromium.launch({
     executablePath: chromiumPath,
@@ -95,8 +109,14 @@ try {
         else console.log(`page ${m.type()}: ${m.text()}`);
     });
     page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+    page.on('requestfailed', (r) => problems.push(`failed request: ${r.url().slice(0, 200)} (${r.failure()?.errorText})`));
     await page.route('**/*', async (route) => {
         const url = new URL(route.request().url());
+        if (args.page) {
+            if (url.href === pathToFileURL(args.page).href) return route.continue();
+            problems.push(`refused a request of the page: ${url.href}`);
+            return route.abort();
+        }
         if (url.origin !== origin) {
             problems.push(`refused a request outside the page: ${url.href}`);
             return route.abort();
@@ -104,17 +124,24 @@ try {
         if (url.pathname === '/' || url.pathname === '/index.html') {
             return route.fulfill({ status: 200, contentType: 'text/html', body: indexHtml });
         }
-        const parts = decodeURIComponent(url.pathname).split('/').filter(Boolean);
-        const root = args.serve[parts[0]];
-        const file = root ? path.resolve(root, ...parts.slice(1)) : null;
-        if (!file || !file.startsWith(root + path.sep) || !fs.existsSync(file)) {
+        const file = servedFile(url.pathname);
+        if (!file) {
             problems.push(`not found: ${url.pathname}`);
             return route.fulfill({ status: 404, body: '' });
         }
         const type = contentTypes[path.extname(file)] || 'application/octet-stream';
         return route.fulfill({ status: 200, contentType: type, body: fs.readFileSync(file) });
     });
-    await page.goto(`${origin}/index.html`);
+    let module = args.module;
+    if (args.page) {
+        const file = servedFile(args.module);
+        if (!file) throw new Error(`--module ${args.module} is in no --serve folder`);
+        module = `data:text/javascript;base64,${fs.readFileSync(file).toString('base64')}`;
+        if (!fs.existsSync(args.page)) throw new Error(`--page ${args.page} does not exist`);
+        await page.goto(pathToFileURL(args.page).href);
+    } else {
+        await page.goto(`${origin}/index.html`);
+    }
     const input = JSON.parse(fs.readFileSync(args.input, 'utf8'));
     let timer;
     const timeout = new Promise((_, reject) => {
@@ -124,11 +151,13 @@ try {
     const result = await Promise.race([timeout, page.evaluate(async ({ module, input }) => {
         const m = await import(module);
         return await m.run(input);
-    }, { module: args.module, input })]);
+    }, { module, input })]);
     clearTimeout(timer);
+    if (args.screenshot) await page.screenshot({ path: args.screenshot });
     fs.writeFileSync(args.output, JSON.stringify(result));
 } catch (e) {
-    console.error(`run_page.mjs: ${e.message}`);
+    // A module given as a data: URL would be spelled out in full in every line of a stack.
+    console.error(`run_page.mjs: ${e.message.replace(/data:text\/javascript;base64,[A-Za-z0-9+/=]+/g, '<module>')}`);
     status = 1;
 } finally {
     await browser.close();

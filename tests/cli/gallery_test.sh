@@ -53,7 +53,22 @@ attribute() {
 
 cd "$TMP" || exit 2
 DIR=gallery
-ARGS=(gallery -o "$DIR" --width "$SW" --height "$SH" --spp 1 --figure-width 320 --quiet)
+# A page written into DIR beforehand (as scripts/run writes iridescence.html), linked by --page.
+mkdir -p "$DIR/live"
+printf '<!doctype html><title>live</title>\n' >"$DIR/live/page.html"
+LIVE_TITLE="A live page & more"
+
+# --page refuses, before anything is rendered, a page that is not in DIR or not inside it.
+for page in missing.html ../outside.html /abs/page.html; do
+    run '' gallery -o "$DIR" --page "$page=x" --quiet
+    expect_status 1
+    if grep -qF "'$page'" "$TMP/err"; then pass; else fail "a message naming '$page'" "$(outcome)"; fi
+done
+run '' gallery -o "$DIR" --page "no-title.html" --quiet
+expect_status 2
+
+ARGS=(gallery -o "$DIR" --width "$SW" --height "$SH" --spp 1 --figure-width 320 --quiet
+      --page "live/page.html=$LIVE_TITLE")
 timeout -k 5 "$LIMIT" "$IRID" "${ARGS[@]}" </dev/null >"$TMP/out" 2>"$TMP/err"
 STATUS=$?
 printf -v shown ' %q' "${ARGS[@]}"
@@ -134,6 +149,10 @@ for s in oil-slick soap-bubbles morpho; do
     if [[ $size == "$SW $SH" ]]; then pass; else fail "$DIR/$s.png of $SW x $SH pixels" "'$size'"; fi
     if grep -qF "href=\"$s.png\"" "$PAGE"; then pass; else fail "a link to $s.png" "none"; fi
 done
+
+# The linked page: a link with its title (HTML-escaped); the reference checks above found it.
+RAN="the link of --page live/page.html in index.html"
+if grep -qF '<a href="live/page.html">A live page &amp; more</a>' "$PAGE"; then pass; else fail "a link to live/page.html" "none"; fi
 
 # === 3. The page in headless Chromium =====================================================
 

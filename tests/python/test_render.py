@@ -172,6 +172,16 @@ def test_gallery_rejects_bad_options(tmp_path):
         irid.gallery(tmp_path / "file" / "sub", width=32, height=24, spp=1, figure_width=320)
 
 
+def test_gallery_refuses_a_linked_page_that_is_not_in_the_folder(tmp_path):
+    # Checked before anything is rendered, so these are quick.
+    with pytest.raises(ValueError, match="missing.html"):
+        irid.gallery(tmp_path, pages={"missing.html": "Missing"})
+    with pytest.raises(ValueError, match="outside.html"):
+        irid.gallery(tmp_path, pages={"../outside.html": "Outside"})
+    with pytest.raises(ValueError, match="pages"):
+        irid.gallery(tmp_path, pages=[("a.html", "A")])
+
+
 def test_render_arguments_refused_as_the_library_says():
     with pytest.raises(ValueError, match="set: list"):
         irid.render("oil-slick", set=[("oil.k1", 2)], width=8, height=8)

@@ -8,8 +8,19 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace irid::gallery {
+
+/// A page that something else wrote into the gallery's folder (scripts/run's live three.js page,
+/// iridescence.html), linked from index.html.
+struct LinkedPage {
+    /// Its file, relative to the gallery's folder, inside it (no "..", not absolute); it must
+    /// exist when the gallery is made.
+    std::filesystem::path file;
+    /// The link's text.
+    std::string title;
+};
 
 struct GalleryOptions {
     /// The folder to write index.html and its images into; made when missing.
@@ -22,6 +33,8 @@ struct GalleryOptions {
     int figure_width = 960;
     /// Worker threads of the renders; 0 = all available.
     int threads = 0;
+    /// Pages already in dir that index.html links, under "Live pages" after its introduction.
+    std::vector<LinkedPage> pages;
     /// Called with a line of progress ("rendering oil-slick (1024×768, 4 spp)"); may be empty.
     std::function<void(const std::string&)> progress;
 };
@@ -33,8 +46,8 @@ struct GalleryResult {
 };
 
 /// Renders the scenes, draws the figures and tables, measures the clip report and writes the
-/// page. Throws irid::Error for options out of range or a folder that cannot be made or
-/// written.
+/// page. Throws irid::Error for options out of range, a linked page that is missing or outside
+/// dir, or a folder that cannot be made or written.
 GalleryResult make_gallery(const GalleryOptions& options);
 
 }  // namespace irid::gallery
