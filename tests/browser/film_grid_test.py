@@ -67,8 +67,9 @@ def f0_of(n, outside=1.0):
 
 
 def issue_grid():
-    """(params (N, 7), exact rgb (N, 3), irid's CPU glTF rgb (N, 3), film label per sample)."""
-    params, exact, gltf, labels = [], [], [], []
+    """(params (N, 7), exact rgb (N, 3), irid's CPU glTF rgb (N, 3), film label per sample, and
+    irid's CPU Belcour–Barla rgb (N, 3))."""
+    params, exact, gltf, labels, belcour = [], [], [], [], []
     t, a = np.meshgrid(THICKNESSES, ANGLES)
     for n_film in FILM_INDICES:
         for n_base in BASE_INDICES:
@@ -76,6 +77,8 @@ def issue_grid():
             exact.append(film.color(thickness=t, angle=a).rgb.reshape(-1, 3))
             gltf.append(irid.renderer_film_color("gltf", n_film, t, a, ambient=1.0, substrate=n_base)
                         .rgb.reshape(-1, 3))
+            belcour.append(irid.renderer_film_color("belcour", n_film, t, a, ambient=1.0, substrate=n_base)
+                           .rgb.reshape(-1, 3))
             p = np.empty((t.size, 7))
             p[:, 0] = 1.0
             p[:, 1] = n_film
@@ -84,7 +87,8 @@ def issue_grid():
             p[:, 4:7] = f0_of(n_base)
             params.append(p)
             labels += [f"n{n_film}-on-{n_base}"] * t.size
-    return np.concatenate(params), np.concatenate(exact), np.concatenate(gltf), np.array(labels)
+    return (np.concatenate(params), np.concatenate(exact), np.concatenate(gltf), np.array(labels),
+            np.concatenate(belcour))
 
 
 def atlas_grid():
@@ -203,7 +207,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="irid-film-grid-") as work:
         table = args.table if args.table else irid_shader(cli, os.path.join(work, "shader"), check)
 
-        params, exact, gltf, labels = issue_grid()
+        params, exact, gltf, labels, belcour = issue_grid()
         atlas_params, atlas_exact, atlas_gltf, atlas_labels = atlas_grid()
         beyond = beyond_grid()
         beyond_want = airy_at_centres(beyond, chunk_centres(table))
@@ -234,6 +238,7 @@ def main():
     print(f"stock three.js chunk vs the exact film (ΔE2000): {stats(delta_e(stock, exact))}")
     print(f"three.js's chunk with (1-cos)^5 vs the exact film (ΔE2000): {stats(delta_e(gltf_gpu, exact))}")
     print(f"irid's CPU glTF model vs the exact film (ΔE2000): {stats(delta_e(gltf, exact))}")
+    print(f"irid's CPU Belcour-Barla model vs the exact film (ΔE2000): {stats(delta_e(belcour, exact))}")
 
     de_cpu = delta_e(atlas_gltf, atlas_exact)
     per_film = {}
