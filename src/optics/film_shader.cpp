@@ -11,6 +11,8 @@
 #include <irid/text_input.h>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -30,9 +32,8 @@ ShaderLanguage parse_shader_language(std::string_view name) {
 Colorimeter film_shader_colorimeter(std::string_view illuminant, std::string_view space) {
     const RgbSpace* rgb = find_rgb_space(space);
     if (rgb == nullptr) {
-        std::string names;
-        for (const std::string& n : rgb_space_names()) names += (names.empty() ? "" : ", ") + n;
-        throw UnknownNameError("space " + quote_untrusted(space) + " is unknown; valid: " + names,
+        throw UnknownNameError(fmt::format("space {} is unknown; valid: {}", quote_untrusted(space),
+                                           fmt::join(rgb_space_names(), ", ")),
                                rgb_space_names());
     }
     return Colorimeter(illuminant_by_name(illuminant), Observer::cie1931_2deg, *rgb);
@@ -665,30 +666,15 @@ std::string FilmShader::table_bytes() const {
     return out;
 }
 
-namespace {
-std::string json_string(std::string_view s) {
-    std::string out = "\"";
-    for (const char ch : s) {
-        if (ch == '"' || ch == '\\') {
-            out += '\\';
-            out += ch;
-        } else if (static_cast<unsigned char>(ch) < 0x20) {
-            out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(ch)));
-        } else {
-            out += ch;
-        }
-    }
-    return out + "\"";
-}
-}  // namespace
-
 std::string FilmShader::table_json() const {
-    return fmt::format(
-        "{{\n  \"width\": {},\n  \"height\": {},\n  \"uniform\": {},\n  \"illuminant\": {},\n  "
-        "\"space\": {},\n"
-        "  \"filter\": \"nearest\"\n}}\n",
-        m_width, table_height, json_string(uniform_name), json_string(m_illuminant),
-        json_string(m_space));
+    nlohmann::ordered_json j;
+    j["width"] = m_width;
+    j["height"] = table_height;
+    j["uniform"] = uniform_name;
+    j["illuminant"] = m_illuminant;
+    j["space"] = m_space;
+    j["filter"] = "nearest";
+    return j.dump(2) + "\n";
 }
 
 std::vector<std::pair<std::string, std::string>> FilmShader::files(ShaderLanguage language) const {
