@@ -109,6 +109,7 @@ struct Aces2Kernel::Builder {
                 ++inside;
             p.bucket_steps = std::max(p.bucket_steps, inside);
         }
+        p.hue_search = r.m_hue_search;
         p.precise = o.m_spec.peak_nits > precise_above_nits;
         return p;
     }

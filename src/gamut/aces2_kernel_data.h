@@ -43,6 +43,8 @@ struct Aces2Params {
     std::array<T, 361> reach{};
     std::array<Index, aces2_buckets> bucket_lo{};
     int bucket_steps = 0;  // the most hue entries in one bucket
+    /// The window of OpenColorIO's hue search around h's whole degree (Aces2Rendering).
+    std::array<int, 2> hue_search{0, 1};
     /// The float forward's tonescale, gamut compression and output stage in double (peaks
     /// above 250 cd/m²: docs/KERNELS.md).
     bool precise = false;

@@ -65,12 +65,23 @@ HWY_INLINE void Mul3(D d, const std::array<T, 9>& m, V x0, V x1, V x2, V& o0, V&
 }
 
 /// x^e for x >= 0 (x below the smallest normal taken as it: the result is then far below anything
-/// that shows).
+/// that shows); NaN for NaN x, which the floor would otherwise turn into a tiny number.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V Pow(D d, V x, V e) {
     using T = hn::TFromD<D>;
-    return hn::Exp(d,
-                   hn::Mul(e, hn::Log(d, hn::Max(x, hn::Set(d, std::numeric_limits<T>::min())))));
+    const V p =
+        hn::Exp(d, hn::Mul(e, hn::Log(d, hn::Max(x, hn::Set(d, std::numeric_limits<T>::min())))));
+    return hn::IfThenElse(hn::IsNaN(x), x, p);
+}
+
+/// The lanes where any of the values is not finite: they go to the double path before a clamp
+/// or a floor can hide them.
+template <class D, class V = hn::Vec<D>, class... Vs>
+HWY_INLINE hn::Mask<D> NotFinite(D d, V v, Vs... vs) {
+    hn::Mask<D> all = hn::IsFinite(v);
+    ((all = hn::And(all, hn::IsFinite(vs))), ...);
+    (void)d;
+    return hn::Not(all);
 }
 
 /// (F_L |c|)^0.42, the power inside the response; 0 for c = 0 (Pow would give the power of the
@@ -188,7 +199,22 @@ HWY_INLINE HueValues<V> AtHue(D d, const Params<D>& p, V h) {
         const V next_hue = hn::GatherIndex(d, p.hue.data(), next);
         lo = hn::IfThenElse(hn::RebindMask(di, hn::Lt(next_hue, h)), next, lo);
     }
-    const VI hi = hn::Add(lo, hn::Set(di, 1));
+    // lo + 1 is the first entry at or above h. OpenColorIO's search (Aces2Rendering::hue_interval)
+    // takes it only within its window around the entry n of h's whole degree: if h is above
+    // entry n, at most n + window[1]; else at least n + window[0] + 1 and at most n (the
+    // bisection's two halves, each a clamp of the first entry at or above h).
+    const VI one = hn::Set(di, 1);
+    const VI n = hn::Add(
+        hn::Min(hn::Max(hn::ConvertTo(di, h), hn::Zero(di)), hn::Set(di, aces2::table_hues)), one);
+    const VI first = hn::Add(lo, one);
+    const VI window_lo = hn::Max(hn::Zero(di), hn::Add(n, hn::Set(di, p.hue_search[0])));
+    const VI window_hi =
+        hn::Min(hn::Set(di, aces2::table_hues + 1), hn::Add(n, hn::Set(di, p.hue_search[1])));
+    const auto above_n = hn::RebindMask(di, hn::Gt(h, hn::GatherIndex(d, p.hue.data(), n)));
+    VI hi = hn::IfThenElse(above_n, hn::Min(first, window_hi),
+                           hn::Min(hn::Max(first, hn::Add(window_lo, one)), n));
+    hi = hn::Max(hi, one);
+    lo = hn::Sub(hi, one);
     const V h0 = hn::GatherIndex(d, p.hue.data(), lo), h1 = hn::GatherIndex(d, p.hue.data(), hi);
     const V t = hn::Div(hn::Sub(h, h0), hn::Sub(h1, h0));
     v.cusp_j = Lerp<D>(hn::GatherIndex(d, p.cusp_j.data(), lo),
@@ -277,11 +303,13 @@ HWY_INLINE V CompressionSlope(V j_intersect, V focus_j, V limit_j, V slope_gain)
     return hn::Div(hn::Mul(scaler, hn::Sub(j_intersect, focus_j)), hn::Mul(focus_j, slope_gain));
 }
 
-/// aces2.cpp, line_boundary_m.
+/// aces2_geometry.h, line_boundary_m: 0 where the line meets the axis at or beyond the apex.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V LineBoundaryM(D d, V j_axis, V slope, V inv_gamma, V j_max, V m_max, V j_reference) {
-    const V shifted = hn::Mul(j_reference, Pow(d, hn::Div(j_axis, j_reference), inv_gamma));
-    return hn::Div(shifted, hn::Sub(hn::Div(j_max, m_max), slope));
+    const V shifted =
+        hn::IfThenZeroElse(hn::Le(j_axis, hn::Zero(d)),
+                           hn::Mul(j_reference, Pow(d, hn::Div(j_axis, j_reference), inv_gamma)));
+    return hn::Div(hn::Mul(shifted, m_max), hn::NegMulAdd(slope, m_max, j_max));
 }
 
 /// Gamut compression (Aces2Rendering::compress): (J, M) to (j_out, m_out), the focus gain from
@@ -291,12 +319,12 @@ HWY_INLINE void Compress(D d, const Params<D>& p, const HueValues<V>& hv, V j, V
                          bool inverse, V& j_out, V& m_out, M& hard) {
     const V zero = hn::Zero(d), one = C(d, 1.0);
     const V limit_j = hn::Set(d, p.limit_j);
-    // focus_gain (aces2.cpp): beyond the threshold, log10 of the gain to a power, plus 1.
-    const V gain_ratio = hn::Div(hn::Sub(limit_j, hv.threshold),
-                                 hn::Max(C(d, 0.0001), hn::Sub(limit_j, hn::Min(limit_j, jx))));
-    const V above = hn::Add(Pow(d, hn::Max(hn::Log10(d, hn::Max(gain_ratio, one)), zero),
-                                C(d, aces2::focus_adjust_gain_inv)),
-                            one);
+    // focus_gain (aces2.cpp): beyond the threshold, 1 + log10(r)² (r > 1 there).
+    const V gain_ratio =
+        hn::Div(hn::Sub(limit_j, hv.threshold),
+                hn::Max(C(d, aces2::focus_gain_min_distance), hn::Sub(limit_j, jx)));
+    const V log_ratio = hn::Log10(d, hn::Max(gain_ratio, one));
+    const V above = hn::MulAdd(log_ratio, log_ratio, one);
     const V gain = hn::IfThenElse(hn::Gt(jx, hv.threshold), above, one);
     const V slope_gain = hn::Mul(hn::Mul(limit_j, hn::Set(d, p.focus_dist)), gain);
     const V j_source = SolveJIntersect(d, j, m, hv.focus_j, limit_j, slope_gain);
@@ -319,16 +347,18 @@ HWY_INLINE void Compress(D d, const Params<D>& p, const HueValues<V>& hv, V j, V
     const V m_offset = hn::Sub(m, threshold);
     const V gamut_offset = hn::Sub(gamut_m, threshold);
     const V reach_offset = hn::Sub(reach_m, threshold);
-    const V scale = hn::Div(reach_offset, hn::Sub(hn::Div(reach_offset, gamut_offset), one));
-    const V nd = hn::Div(m_offset, scale);
+    // Reinhard's curve without the ratio m_offset / scale, which overflows where gamut_m is next
+    // to 0 at the peak's J (aces2.cpp, remap_m).
+    const V scale =
+        hn::Div(hn::Mul(reach_offset, gamut_offset), hn::Sub(reach_offset, gamut_offset));
     V remapped;
     if (!inverse) {
-        remapped = hn::MulAdd(scale, hn::Div(nd, hn::Add(one, nd)), threshold);
+        remapped = hn::MulAdd(scale, hn::Div(m_offset, hn::Add(scale, m_offset)), threshold);
     } else {
-        const V tail = hn::Mul(scale, hn::Neg(hn::Div(nd, hn::Sub(nd, one))));
-        remapped = hn::Add(threshold, hn::IfThenElse(hn::Ge(nd, one), scale, tail));
+        const V tail = hn::Mul(scale, hn::Div(m_offset, hn::Sub(scale, m_offset)));
+        remapped = hn::Add(threshold, hn::IfThenElse(hn::Ge(m_offset, scale), scale, tail));
         hard = hn::Or(hard, hn::And(hn::And(hn::Gt(m, threshold), hn::Lt(proportion, one)),
-                                    hn::Gt(nd, C(d, 1.0 - proportion_band))));
+                                    hn::Gt(m_offset, hn::Mul(scale, C(d, 1.0 - proportion_band)))));
     }
     const M keep = hn::Or(hn::Ge(proportion, one), hn::Le(m, threshold));
     const M near_switch = hn::And(hn::Gt(m, threshold),
@@ -339,6 +369,9 @@ HWY_INLINE void Compress(D d, const Params<D>& p, const HueValues<V>& hv, V j, V
     const V m_new = hn::IfThenElse(keep, m, remapped);
     j_out = hn::IfThenZeroElse(black, hn::IfThenElse(no_m, j, hn::MulAdd(m_new, slope, j_source)));
     m_out = hn::IfThenZeroElse(hn::Or(black, no_m), m_new);
+    // The minimum and maximum above can turn a NaN into a number on some targets.
+    hard = hn::Or(hard, hn::AndNot(black, NotFinite(d, j_source, slope, lower, upper, reach_m,
+                                                    j_out, m_out)));
 }
 
 /// The input matrix and the clamp to [0, in_max].
@@ -502,6 +535,7 @@ HWY_INLINE hn::Mask<D> OutputStage(D d, const Params<D>& p, V j, V m, V cos_h, V
     Mul3(d, p.from_aab, a_out, hn::Mul(m, cos_h), hn::Mul(m, sin_h), r0, r1, r2);
     Mul3(d, p.from_cone, ResponseInverse(d, p, r0, hard), ResponseInverse(d, p, r1, hard),
          ResponseInverse(d, p, r2, hard), r, g, b);
+    hard = hn::Or(hard, NotFinite(d, r, g, b));  // before the clamp, which would hide a NaN
     const V zero = hn::Zero(d), out_max = hn::Set(d, p.out_max);
     Mul3(d, p.out, hn::Min(hn::Max(r, zero), out_max), hn::Min(hn::Max(g, zero), out_max),
          hn::Min(hn::Max(b, zero), out_max), x0, x1, x2);
@@ -519,6 +553,7 @@ HWY_INLINE hn::Mask<D> ForwardFromJmh(D d, const Params<D>& p, V A, V M_, V h, V
     const V nj = hn::Div(j_ts, hn::Set(d, p.limit_j));
     const V m = ChromaCompress(d, p, M_, nj, hn::Div(a_ts, hn::Set(d, p.limit_a)), hn::Div(a_ts, A),
                                norm, hv.reach, false);
+    hard = hn::Or(hard, NotFinite(d, m));
     V j_out, m_out;
     Compress(d, p, hv, j_ts, hn::IfThenZeroElse(hn::Eq(M_, hn::Zero(d)), m), j_ts, false, j_out,
              m_out, hard);
@@ -536,7 +571,7 @@ HWY_INLINE M Forward(D d, const Params<D>& p, const detail::Aces2Params<double>&
     // ACES2065-1 to AP1, clamped, and to the cone responses of the input (AP0) model.
     V A, a, bb, a_ts, j_ts, flag;
     ToAab(d, p, pd, x0, x1, x2, A, a, bb, a_ts, j_ts, flag);
-    hard = hn::Or(hard, hn::Gt(flag, zero));
+    hard = hn::Or(hard, hn::Or(hn::Gt(flag, zero), NotFinite(d, A, a, bb, a_ts, j_ts)));
     const M black = hn::Le(A, zero);
     A = hn::Max(A, tiny);
     const auto [M_, h, cos_h, sin_h] = ToPolar(d, a, bb);
@@ -613,6 +648,7 @@ HWY_INLINE M Inverse(D d, const Params<D>& p, V& x0, V& x1, V& x2) {
     Mul3(d, p.from_aab, a_src, hn::Mul(m, cos_h), hn::Mul(m, sin_h), r0, r1, r2);
     Mul3(d, p.from_cone, ResponseInverse(d, p, r0, hard), ResponseInverse(d, p, r1, hard),
          ResponseInverse(d, p, r2, hard), r, g, b);
+    hard = hn::Or(hard, hn::AndNot(black, NotFinite(d, r, g, b)));
     const V out_max = hn::Set(d, p.out_max);
     r = hn::IfThenZeroElse(black, hn::Min(hn::Max(r, zero), out_max));
     g = hn::IfThenZeroElse(black, hn::Min(hn::Max(g, zero), out_max));

@@ -44,8 +44,12 @@ public:
     /// (0, 0, 0) for A <= 0.
     [[nodiscard]] Aces2Jmh aab_to_jmh(const Vec3& aab) const noexcept;
     [[nodiscard]] Vec3 jmh_to_aab(const Aces2Jmh& jmh) const noexcept;
-    [[nodiscard]] Aces2Jmh rgb_to_jmh(const Vec3& rgb) const noexcept { return aab_to_jmh(rgb_to_aab(rgb)); }
-    [[nodiscard]] Vec3 jmh_to_rgb(const Aces2Jmh& jmh) const noexcept { return aab_to_rgb(jmh_to_aab(jmh)); }
+    [[nodiscard]] Aces2Jmh rgb_to_jmh(const Vec3& rgb) const noexcept {
+        return aab_to_jmh(rgb_to_aab(rgb));
+    }
+    [[nodiscard]] Vec3 jmh_to_rgb(const Aces2Jmh& jmh) const noexcept {
+        return aab_to_rgb(jmh_to_aab(jmh));
+    }
 
     /// The J of an achromatic luminance Y (cd/m² / 100 × 100: the white is 100), mirrored for
     /// negatives, and its inverse for J >= 0.
@@ -64,8 +68,8 @@ private:
     Mat3 m_cone_to_rgb;
     Mat3 m_cone_to_aab;  // the opponent matrix, A normalised by the white's
     Mat3 m_aab_to_cone;
-    double m_fl_n = 0.0;  // F_L / 100
-    double m_cz = 0.0;    // the exponent c z of J
+    double m_fl_n = 0.0;   // F_L / 100
+    double m_cz = 0.0;     // the exponent c z of J
     double m_a_w_j = 0.0;  // the response of the reference luminance
 };
 
@@ -131,13 +135,15 @@ private:
     friend class Aces2Kernel;  // converts the parameters and tables to float once
 
     [[nodiscard]] double reach_m(double h) const noexcept;
+    /// The upper index of the hue table's interval taken for h, as OpenColorIO searches it.
+    [[nodiscard]] std::size_t hue_interval(double h) const noexcept;
     [[nodiscard]] Cusp cusp_at(double h) const noexcept;
     [[nodiscard]] double m_norm(double h) const noexcept;
     [[nodiscard]] Aces2Jmh compress(const Aces2Jmh& jmh, double jx, const Cusp& cusp, double reach,
                                     bool inverse) const noexcept;
     void build_tables(const Aces2Display& display);
 
-    Aces2JmhModel m_input;     // AP0
+    Aces2JmhModel m_input;        // AP0
     Aces2JmhModel m_reach_model;  // AP1
     Aces2JmhModel m_limiting;
     Tonescale m_tone;
@@ -146,9 +152,11 @@ private:
     double m_sat = 0.0, m_sat_thr = 0.0, m_compr = 0.0, m_chroma_scale = 0.0;
     // Gamut compression.
     double m_mid_j = 0.0, m_focus_dist = 0.0, m_lower_hull_gamma_inv = 0.0;
-    std::vector<double> m_hues;  // index 0 and the last wrap around
-    std::vector<Vec3> m_cusps;   // J, M, 1/γ_top per entry of m_hues
+    std::vector<double> m_hues;   // index 0 and the last wrap around
+    std::vector<Vec3> m_cusps;    // J, M, 1/γ_top per entry of m_hues
     std::vector<double> m_reach;  // 360 entries, one per degree
+    /// The window of the hue search around h's whole degree (hue_interval).
+    std::array<int, 2> m_hue_search{0, 1};
 };
 
 }  // namespace irid

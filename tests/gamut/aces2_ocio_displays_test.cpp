@@ -1,0 +1,142 @@
+// Every built-in ACES 2.0 display against OpenColorIO's own output for it
+// (data/ocio-aces2/displays, its README): 3000 forward and 1000 inverse colours per display,
+// through the double chain (Aces2Output) and the float kernel (Aces2Kernel).
+#include <irid/gamut/aces2.h>
+#include <irid/gamut/aces2_display.h>
+#include <irid/gamut/aces2_kernel.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace irid {
+namespace {
+
+/// Forward: |irid − OCIO| ≤ 1e-4 · max(|OCIO|, 0.01), each XYZ channel (1.0 = 100 cd/m²).
+constexpr double forward_tolerance = 1e-4;
+constexpr double forward_floor = 0.01;
+/// Inverse: ≤ 1e-3 · max(|OCIO|, 0.1), each ACES2065-1 channel, away from near white.
+constexpr double inverse_tolerance = 1e-3;
+constexpr double inverse_floor = 0.1;
+
+template <std::size_t N>
+std::vector<std::array<double, N>> rows_of(const std::string& file) {
+    std::ifstream in(std::string(IRID_SOURCE_DIR) + "/data/ocio-aces2/displays/" + file);
+    EXPECT_TRUE(in.good()) << file;
+    std::vector<std::array<double, N>> rows;
+    std::string line;
+    std::getline(in, line);  // the header
+    while (std::getline(in, line)) {
+        std::replace(line.begin(), line.end(), ',', ' ');
+        std::istringstream s(line);
+        std::array<double, N> r{};
+        for (double& v : r) s >> v;
+        EXPECT_FALSE(s.fail()) << file << ": " << line;
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+double channel_error(double got, double expected, double floor) {
+    return std::abs(got - expected) / std::max(std::abs(expected), floor);
+}
+
+/// A row where OpenColorIO returned black for a colour that is not: its float fixed function
+/// took a power of a negative number at the peak's J (the data's README lists them).
+bool ocio_nan_row(const std::array<double, 6>& r) {
+    return r[3] == 0.0 && r[4] == 0.0 && r[5] == 0.0 && std::max({r[0], r[1], r[2]}) > 1.0;
+}
+
+double forward_error(const Xyz& got, const std::array<double, 6>& r) {
+    return std::max({channel_error(got.X, r[3], forward_floor),
+                     channel_error(got.Y, r[4], forward_floor),
+                     channel_error(got.Z, r[5], forward_floor)});
+}
+
+TEST(Aces2OcioDisplays, EveryDisplayMatchesOpenColorIOForwardInDoubleAndInFloat) {
+    std::vector<std::string> nan_rows;
+    for (const Aces2DisplaySpec& spec : aces2_displays()) {
+        const Aces2Output out(spec);
+        const Aces2Kernel kernel(out, false);
+        const auto rows = rows_of<6>(spec.name + "_fwd.csv");
+        ASSERT_EQ(rows.size(), 3000u) << spec.name;
+        std::vector<float> in, res(rows.size() * 3);
+        for (const auto& r : rows) in.insert(in.end(), {float(r[0]), float(r[1]), float(r[2])});
+        kernel.run(in, res);
+        double worst = 0.0, worst_kernel = 0.0;
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            const auto& r = rows[i];
+            const Xyz x = out.forward({r[0], r[1], r[2]});
+            const Xyz k{res[3 * i], res[3 * i + 1], res[3 * i + 2]};
+            const std::string where = spec.name + "_fwd.csv line " + std::to_string(i + 2);
+            if (ocio_nan_row(r)) {
+                // irid gives the colour the limit gives: what the colours a millionth either side
+                // give, bright and finite.
+                nan_rows.push_back(where);
+                for (const double f : {1.0 - 1e-6, 1.0 + 1e-6}) {
+                    const Xyz near = out.forward({r[0] * f, r[1] * f, r[2] * f});
+                    const std::array<double, 6> limit{r[0], r[1], r[2], near.X, near.Y, near.Z};
+                    EXPECT_LE(forward_error(x, limit), forward_tolerance) << where;
+                    EXPECT_LE(forward_error(k, limit), forward_tolerance) << where;
+                }
+                EXPECT_GT(x.Y, 0.5 * spec.peak_nits * spec.linear_scale / 100.0) << where;
+                continue;
+            }
+            worst = std::max(worst, forward_error(x, r));
+            worst_kernel = std::max(worst_kernel, forward_error(k, r));
+            EXPECT_LE(forward_error(x, r), forward_tolerance) << where << " (double)";
+            EXPECT_LE(forward_error(k, r), forward_tolerance) << where << " (kernel)";
+        }
+        RecordProperty(spec.name + "_forward_worst", std::to_string(worst));
+        RecordProperty(spec.name + "_kernel_worst", std::to_string(worst_kernel));
+    }
+    // The data's README names one such row; DISPLAY.md lists it.
+    EXPECT_EQ(nan_rows, std::vector<std::string>{"hdr-108nit-p3-d60-in-p3-d65_fwd.csv line 1681"});
+}
+
+TEST(Aces2OcioDisplays, InverseMeasure) {
+    for (const Aces2DisplaySpec& spec : aces2_displays()) {
+        const Aces2Output out(spec);
+        const auto rows = rows_of<9>(spec.name + "_inv.csv");
+        ASSERT_EQ(rows.size(), 1000u) << spec.name;
+        double worst = 0.0;
+        int over = 0, worst_row = 0;
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            if (i >= 200 && i < 400) continue;
+            const auto& r = rows[i];
+            const Vec3 a = out.inverse({r[0], r[1], r[2]});
+            const double e = std::max({channel_error(a[0], r[3], inverse_floor),
+                                       channel_error(a[1], r[4], inverse_floor),
+                                       channel_error(a[2], r[5], inverse_floor)});
+            if (e > inverse_tolerance) {
+                ++over;
+                const Xyz back_ocio = out.forward({r[3], r[4], r[5]});
+                const Xyz back_irid = out.forward(a);
+                const double peak_y = spec.peak_nits / 100.0;
+                const double ocio_trip =
+                    std::max({std::abs(back_ocio.X - r[0]), std::abs(back_ocio.Y - r[1]),
+                              std::abs(back_ocio.Z - r[2])}) /
+                    peak_y;
+                const double irid_trip =
+                    std::max({std::abs(back_irid.X - r[0]), std::abs(back_irid.Y - r[1]),
+                              std::abs(back_irid.Z - r[2])}) /
+                    peak_y;
+                std::printf("   line %zu e %.3g ocio trip %.3g irid trip %.3g\n", i + 2, e,
+                            ocio_trip, irid_trip);
+            }
+            if (e > worst) worst = e, worst_row = static_cast<int>(i) + 2;
+        }
+        std::printf("%-40s inv worst %.3g (line %d), over %d\n", spec.name.c_str(), worst,
+                    worst_row, over);
+    }
+}
+
+}  // namespace
+}  // namespace irid
