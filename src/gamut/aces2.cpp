@@ -76,7 +76,7 @@ double toe_inverse(double x, double limit, double k1_in, double k2_in) noexcept 
 /// compresses that far) returns the asymptote threshold + s, as the Academy's does. OpenColorIO
 /// writes both through the ratio x / s, which overflows to NaN where the gamut boundary's M is
 /// next to 0 (at the peak's J); this form is the same function and finite there.
-double remap_m(double m, double gamut_m, double reach_m, bool inverse) noexcept {
+double remap_m(double m, double gamut_m, double reach_m, bool inverse, bool* beyond) noexcept {
     const double proportion = std::max(gamut_m / reach_m, compression_threshold);
     const double threshold = proportion * gamut_m;
     if (proportion >= 1.0 || m <= threshold) return m;
@@ -85,6 +85,8 @@ double remap_m(double m, double gamut_m, double reach_m, bool inverse) noexcept 
     const double reach_offset = reach_m - threshold;
     const double scale = reach_offset * gamut_offset / (reach_offset - gamut_offset);
     if (!inverse) return threshold + scale * m_offset / (scale + m_offset);
+    // Beyond the asymptote by more than rounding (1e-9 of M's unit, which J and M share).
+    if (m_offset >= scale + 1e-9 && beyond != nullptr) *beyond = true;
     return threshold + (m_offset >= scale ? scale : scale * m_offset / (scale - m_offset));
 }
 
@@ -242,7 +244,7 @@ Aces2Rendering::Cusp Aces2Rendering::cusp_at(double h) const noexcept {
 }
 
 Aces2Jmh Aces2Rendering::compress(const Aces2Jmh& jmh, double jx, const Cusp& cusp, double reach,
-                                  bool inverse) const noexcept {
+                                  bool inverse, bool* beyond) const noexcept {
     if (jmh.J <= 0.0) return {0.0, 0.0, jmh.h};
     if (jmh.M <= 0.0 || jmh.J > m_limit_j_max) return {jmh.J, 0.0, jmh.h};
     const double slope_gain =
@@ -259,7 +261,7 @@ Aces2Jmh Aces2Rendering::compress(const Aces2Jmh& jmh, double jx, const Cusp& cu
     if (gamut_m <= 0.0) return {jmh.J, 0.0, jmh.h};
     const double reach_boundary = aces2::line_boundary_m(j_source, slope, m_model_gamma_inv,
                                                          m_limit_j_max, reach, m_limit_j_max);
-    const double m = remap_m(jmh.M, gamut_m, reach_boundary, inverse);
+    const double m = remap_m(jmh.M, gamut_m, reach_boundary, inverse, beyond);
     return {j_source + m * slope, m, jmh.h};
 }
 
@@ -268,6 +270,10 @@ Aces2Jmh Aces2Rendering::gamut_compress_forward(const Aces2Jmh& jmh) const noexc
 }
 
 Aces2Jmh Aces2Rendering::gamut_compress_inverse(const Aces2Jmh& jmh) const noexcept {
+    return solve_gamut_inverse(jmh, nullptr);
+}
+
+Aces2Jmh Aces2Rendering::solve_gamut_inverse(const Aces2Jmh& jmh, bool* exact) const noexcept {
     const Cusp cusp = cusp_at(jmh.h);
     const double reach = reach_m(jmh.h);
     double jx = jmh.J;
@@ -275,13 +281,27 @@ Aces2Jmh Aces2Rendering::gamut_compress_inverse(const Aces2Jmh& jmh) const noexc
     // Academy's inverse takes one step of the fixed point jx = J(inverse at jx), and only where
     // the display's J is above the threshold (a source above it can show below it). irid
     // iterates from every J to convergence, which makes the inverse exact (docs/DISPLAY.md).
-    for (int k = 0; k < aces2_inverse_focus_iterations; ++k) {
+    bool converged = false;
+    for (int k = 0; k < aces2_inverse_focus_iterations && !converged; ++k) {
         const double next = compress(jmh, jx, cusp, reach, true).J;
-        const bool done = std::abs(next - jx) <= 1e-13 * std::max(1.0, std::abs(jx));
+        converged = std::abs(next - jx) <= 1e-13 * std::max(1.0, std::abs(jx));
         jx = next;
-        if (done) break;
     }
-    return compress(jmh, jx, cusp, reach, true);
+    bool beyond = false;
+    const Aces2Jmh source = compress(jmh, jx, cusp, reach, true, &beyond);
+    if (exact != nullptr) *exact = converged && !beyond;
+    return source;
+}
+
+bool Aces2Rendering::reaches(const Vec3& display) const noexcept {
+    const Aces2Jmh jmh = m_limiting.rgb_to_jmh(display);
+    // Above the peak's J (but for rounding: the white's J is the peak's to 1e-12) the tonescale
+    // has no source; the compression's asymptote bounds M.
+    const double top = m_limit_j_max * (1.0 + 1e-12);
+    if (jmh.J > top) return false;
+    bool exact = false;
+    const Aces2Jmh source = solve_gamut_inverse(jmh, &exact);
+    return exact && source.J <= top;
 }
 
 Vec3 Aces2Rendering::forward(const Vec3& aces) const noexcept {
@@ -291,7 +311,7 @@ Vec3 Aces2Rendering::forward(const Vec3& aces) const noexcept {
 
 Vec3 Aces2Rendering::inverse(const Vec3& display) const noexcept {
     const Aces2Jmh jmh = m_limiting.rgb_to_jmh(display);
-    return m_input.jmh_to_rgb(tonescale_and_chroma_inverse(gamut_compress_inverse(jmh)));
+    return m_input.jmh_to_rgb(tonescale_and_chroma_inverse(solve_gamut_inverse(jmh, nullptr)));
 }
 
 }  // namespace irid

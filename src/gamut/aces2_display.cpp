@@ -259,4 +259,23 @@ Vec3 Aces2Output::inverse(const Xyz& xyz) const noexcept {
     return m_ap1_to_ap0 * ap1;
 }
 
+bool Aces2Output::has_scene_value(const Xyz& xyz) const noexcept {
+    const Vec3 rgb = m_xyz_to_limiting * Vec3{xyz.X / m_scale, xyz.Y / m_scale, xyz.Z / m_scale};
+    // Inside the cube, but for the rounding of the matrix (1e-12 of the peak), which the clamp
+    // moves by as little.
+    const double peak = m_spec.peak_nits / 100.0;
+    for (const double v : rgb)
+        if (!(v >= -1e-12 * peak && v <= peak * (1.0 + 1e-12))) return false;
+    if (!m_rendering.reaches(rgb)) return false;
+    // Inside the AP1 clamp, but for the rounding of a source on its boundary (1e-12 of the
+    // source's largest channel), which the clamp moves by as little.
+    const Vec3 ap1 = m_ap0_to_ap1 * m_rendering.inverse(rgb);
+    const double limit = m_rendering.forward_limit();
+    const double slack =
+        1e-12 * std::max({1.0, std::abs(ap1[0]), std::abs(ap1[1]), std::abs(ap1[2])});
+    for (const double v : ap1)
+        if (!(v >= -slack && v <= limit + slack)) return false;
+    return true;
+}
+
 }  // namespace irid

@@ -101,41 +101,66 @@ TEST(Aces2OcioDisplays, EveryDisplayMatchesOpenColorIOForwardInDoubleAndInFloat)
     EXPECT_EQ(nan_rows, std::vector<std::string>{"hdr-108nit-p3-d60-in-p3-d65_fwd.csv line 1681"});
 }
 
-TEST(Aces2OcioDisplays, InverseMeasure) {
+/// The largest channel of |a − b| in the display's limiting RGB, relative to the peak.
+double display_distance(const Aces2Output& out, const Xyz& a, const Xyz& b) {
+    const double peak = out.spec().peak_nits * out.output_scale() / 100.0;
+    return std::max({std::abs(a.X - b.X), std::abs(a.Y - b.Y), std::abs(a.Z - b.Z)}) / peak;
+}
+
+/// How far the inverse's result moves per unit of display value (CIE XYZ, 1.0 = 100 cd/m²), the
+/// largest over the three axes, from differences of 1e-7 of the peak.
+double inverse_slope(const Aces2Output& out, const Xyz& xyz) {
+    const double step = 1e-7 * out.spec().peak_nits / 100.0;
+    const Vec3 at = out.inverse(xyz);
+    double slope = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        Xyz moved = xyz;
+        (axis == 0 ? moved.X : axis == 1 ? moved.Y : moved.Z) -= step;
+        const Vec3 other = out.inverse(moved);
+        for (int c = 0; c < 3; ++c) slope = std::max(slope, std::abs(other[c] - at[c]) / step);
+    }
+    return slope;
+}
+
+TEST(Aces2OcioDisplays, EveryDisplaysInverseMatchesOpenColorIOsWhereItsInverseIsOne) {
+    int beyond_ocio = 0;
     for (const Aces2DisplaySpec& spec : aces2_displays()) {
         const Aces2Output out(spec);
         const auto rows = rows_of<9>(spec.name + "_inv.csv");
         ASSERT_EQ(rows.size(), 1000u) << spec.name;
-        double worst = 0.0;
-        int over = 0, worst_row = 0;
         for (std::size_t i = 0; i < rows.size(); ++i) {
-            if (i >= 200 && i < 400) continue;
             const auto& r = rows[i];
-            const Vec3 a = out.inverse({r[0], r[1], r[2]});
-            const double e = std::max({channel_error(a[0], r[3], inverse_floor),
-                                       channel_error(a[1], r[4], inverse_floor),
-                                       channel_error(a[2], r[5], inverse_floor)});
-            if (e > inverse_tolerance) {
-                ++over;
-                const Xyz back_ocio = out.forward({r[3], r[4], r[5]});
-                const Xyz back_irid = out.forward(a);
-                const double peak_y = spec.peak_nits / 100.0;
-                const double ocio_trip =
-                    std::max({std::abs(back_ocio.X - r[0]), std::abs(back_ocio.Y - r[1]),
-                              std::abs(back_ocio.Z - r[2])}) /
-                    peak_y;
-                const double irid_trip =
-                    std::max({std::abs(back_irid.X - r[0]), std::abs(back_irid.Y - r[1]),
-                              std::abs(back_irid.Z - r[2])}) /
-                    peak_y;
-                std::printf("   line %zu e %.3g ocio trip %.3g irid trip %.3g\n", i + 2, e,
-                            ocio_trip, irid_trip);
+            const Xyz xyz{r[0], r[1], r[2]};
+            const Vec3 a = out.inverse(xyz);
+            const std::string where = spec.name + "_inv.csv line " + std::to_string(i + 2);
+            ASSERT_TRUE(std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2])) << where;
+            const Xyz back = out.forward(a);
+            if (out.has_scene_value(xyz)) {
+                EXPECT_LE(display_distance(out, back, xyz), 1e-10) << where;
             }
-            if (e > worst) worst = e, worst_row = static_cast<int>(i) + 2;
+            // Near white (rows 201 to 400) the inverse is ill-conditioned: the round trip above is
+            // the check.
+            if (i >= 200 && i < 400) continue;
+            double e = 0.0;
+            for (int c = 0; c < 3; ++c)
+                e = std::max(e, channel_error(a[c], r[3 + c], inverse_floor));
+            if (e <= inverse_tolerance) continue;
+            // OpenColorIO's inverse takes one step of the focus gain's fixed point where irid
+            // solves it: where its value misses its own forward, irid may differ by that miss
+            // carried back through the inverse's slope.
+            ++beyond_ocio;
+            const double miss = display_distance(out, out.forward({r[3], r[4], r[5]}), xyz) *
+                                spec.peak_nits * out.output_scale() / 100.0;
+            const double allowed = inverse_tolerance * std::max({std::abs(r[3]), std::abs(r[4]),
+                                                                 std::abs(r[5]), inverse_floor}) +
+                                   2.0 * inverse_slope(out, xyz) * miss;
+            for (int c = 0; c < 3; ++c)
+                EXPECT_LE(std::abs(a[c] - r[3 + c]), allowed)
+                    << where << " channel " << c << ", OCIO's miss " << miss;
         }
-        std::printf("%-40s inv worst %.3g (line %d), over %d\n", spec.name.c_str(), worst,
-                    worst_row, over);
     }
+    RecordProperty("rows_beyond_1e-3_explained_by_ocio", beyond_ocio);
+    std::printf("rows beyond 1e-3 explained: %d\n", beyond_ocio);
 }
 
 }  // namespace

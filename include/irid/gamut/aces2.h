@@ -93,12 +93,18 @@ public:
     /// ACES2065-1 to display-linear RGB of the limiting primaries, 1.0 = 100 cd/m² (the fixed
     /// function alone: no clamp before or after).
     [[nodiscard]] Vec3 forward(const Vec3& aces) const noexcept;
-    /// Its inverse, for display values inside the limiting cube [0, peak/100]³ (beyond it the
-    /// result may not be finite; the display chain clamps to the cube first). Exact: the source
-    /// J on which the focus gain depends is solved by iterating to convergence the fixed point
-    /// of which the Academy's inverse takes one step (forward(inverse(d)) returns d to 6e-13
-    /// over the cube; docs/DISPLAY.md).
+    /// Its inverse, for display values inside the limiting cube [0, peak/100]³ (the display
+    /// chain clamps to the cube first). Exact wherever reaches(display): the source J on which
+    /// the focus gain depends is solved by iterating to convergence the fixed point of which the
+    /// Academy's inverse takes one step, and forward(inverse(d)) returns d to 1e-12 of the peak
+    /// (docs/DISPLAY.md). Elsewhere it returns the source at the compression's asymptote, as the
+    /// Academy's does.
     [[nodiscard]] Vec3 inverse(const Vec3& display) const noexcept;
+    /// Whether a display value is one the forward produces, so that inverse() is its source:
+    /// false above the peak's J and beyond the gamut compression's asymptote (next to the
+    /// limiting cube's top corners, where the cube reaches beyond the hull the compression
+    /// aims at; docs/DISPLAY.md, "The inverse").
+    [[nodiscard]] bool reaches(const Vec3& display) const noexcept;
 
     // The stages, in the order forward() applies them.
     [[nodiscard]] const Aces2JmhModel& input_model() const noexcept { return m_input; }
@@ -139,8 +145,13 @@ private:
     [[nodiscard]] std::size_t hue_interval(double h) const noexcept;
     [[nodiscard]] Cusp cusp_at(double h) const noexcept;
     [[nodiscard]] double m_norm(double h) const noexcept;
+    /// `beyond` (when given) is set where the inverse's M lies at or beyond the compression's
+    /// asymptote.
     [[nodiscard]] Aces2Jmh compress(const Aces2Jmh& jmh, double jx, const Cusp& cusp, double reach,
-                                    bool inverse) const noexcept;
+                                    bool inverse, bool* beyond = nullptr) const noexcept;
+    /// The gamut compression's inverse; `exact` (when given) says whether the forward takes the
+    /// result back (the focus gain's fixed point converged and M is inside the asymptote).
+    [[nodiscard]] Aces2Jmh solve_gamut_inverse(const Aces2Jmh& jmh, bool* exact) const noexcept;
     void build_tables(const Aces2Display& display);
 
     Aces2JmhModel m_input;        // AP0

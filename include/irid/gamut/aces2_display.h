@@ -52,7 +52,8 @@ struct Aces2DisplaySpec {
 /// nullptr), the white scaled into the encoding gamut as the built-in displays do. Named in the
 /// form aces2_display() reads. Throws irid::Error for a peak out of range.
 [[nodiscard]] Aces2DisplaySpec custom_aces2_display(double peak_nits, const RgbSpace& limiting,
-                                                    const Xy& limiting_white, const RgbSpace* encoding);
+                                                    const Xy& limiting_white,
+                                                    const RgbSpace* encoding);
 
 /// The display of a name: a built-in one by its short name or the full OCIO style, in any case;
 /// or a custom one, "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz]" with the
@@ -80,6 +81,10 @@ public:
     /// CIE XYZ (1.0 = 100 cd/m²) to ACES2065-1. XYZ outside what the display shows is clamped
     /// to its limiting cube first.
     [[nodiscard]] Vec3 inverse(const Xyz& xyz) const noexcept;
+    /// Whether the display value has a scene value the chain takes to it, so that
+    /// forward(inverse(xyz)) = xyz: inside the limiting cube, a value the rendering reaches
+    /// (Aces2Rendering::reaches), and its source inside the AP1 clamp of step 1.
+    [[nodiscard]] bool has_scene_value(const Xyz& xyz) const noexcept;
 
     [[nodiscard]] const Aces2DisplaySpec& spec() const noexcept { return m_spec; }
     [[nodiscard]] const Aces2Rendering& rendering() const noexcept { return m_rendering; }
