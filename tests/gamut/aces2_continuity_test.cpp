@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 
@@ -167,6 +168,55 @@ TEST(Aces2Continuity, EveryJumpAboveDeltaE1IsASeamThePublishedAlgorithmForces) {
                     r.largest);
     }
     std::printf("all displays: black %d, reach switch %d, largest ΔE2000 %.2f\n", total_black, total_reach, largest);
+}
+
+}  // namespace
+}  // namespace irid
+
+namespace irid {
+namespace {
+
+// OpenColorIO's hue search (Aces2Rendering::hue_interval) changes interval at whole degrees of
+// hue where its window misses the hue's own, and extrapolates there: the gamut compression
+// steps across those degrees. Walked at 20 pairs of J and M per degree: the steps stay below
+// ΔE2000 0.42 (docs/DISPLAY.md gives 0.38) unless they move a colour across the reach switch,
+// and there are none on the displays up to 225 cd/m².
+TEST(Aces2Continuity, OpenColorIOsHueSearchStepsOnlySlightlyAtWholeDegrees) {
+    int steps = 0;
+    double largest = 0.0;
+    for (const Aces2DisplaySpec& spec : aces2_displays()) {
+        const Aces2Output out(spec);
+        const Aces2Rendering& r = out.rendering();
+        const double peak = spec.peak_nits / 100.0;
+        const Mat3 to_xyz = rgb_to_xyz_matrix(spec.limiting, spec.limiting_white);
+        const Vec3 w = to_xyz * Vec3{peak, peak, peak};
+        const Xyz white{w[0], w[1], w[2]};
+        const auto lab = [&](const Aces2Jmh& jmh) {
+            Vec3 rgb = r.limiting_model().jmh_to_rgb(jmh);
+            for (double& v : rgb) v = std::clamp(v, 0.0, peak);
+            const Vec3 x = to_xyz * rgb;
+            return xyz_to_lab({x[0], x[1], x[2]}, white);
+        };
+        int display_steps = 0;
+        for (int degree = 1; degree < 360; ++degree) {
+            double step = 0.0;
+            for (const double j : {0.3, 0.5, 0.7, 0.85, 0.95})
+                for (const double m : {20.0, 50.0, 100.0, 200.0}) {
+                    const Aces2Jmh below = r.gamut_compress_forward({j * r.limit_j_max(), m, degree - 1e-9});
+                    const Aces2Jmh above = r.gamut_compress_forward({j * r.limit_j_max(), m, degree + 1e-9});
+                    if (below.M == m || above.M == m) continue;  // across the reach switch
+                    step = std::max(step, delta_e_2000(lab(below), lab(above)));
+                }
+            if (step > 1e-6) ++display_steps;
+            largest = std::max(largest, step);
+            EXPECT_LE(step, 0.42) << spec.name << " at " << degree << "°";
+        }
+        if (spec.peak_nits * spec.linear_scale <= 108.0) {
+            EXPECT_EQ(display_steps, 0) << spec.name;
+        }
+        steps += display_steps;
+    }
+    std::printf("steps at whole degrees: %d, largest ΔE2000 %.3f\n", steps, largest);
 }
 
 }  // namespace
