@@ -28,7 +28,8 @@ struct Walker {
     explicit Walker(const Aces2DisplaySpec& spec)
         : out(spec),
           white(xy_to_xyz(spec.limiting_white, spec.peak_nits / 100.0 * out.output_scale())),
-          ap0_to_ap1(irid::inverse(rgb_to_xyz_matrix(ap1, aces_white), "AP1") * rgb_to_xyz_matrix(ap0, aces_white)),
+          ap0_to_ap1(irid::inverse(rgb_to_xyz_matrix(ap1, aces_white), "AP1") *
+                     rgb_to_xyz_matrix(ap0, aces_white)),
           ap1_to_ap0(irid::inverse(ap0_to_ap1, "AP0 to AP1")) {}
 
     [[nodiscard]] Lab lab(const Vec3& aces) const { return xyz_to_lab(out.forward(aces), white); }
@@ -64,10 +65,14 @@ Seam classify(const Walker& w, const Vec3& lo, const Vec3& hi) {
     if ((a.in.J == 0.0) != (b.in.J == 0.0)) return Seam::black;
     // The tonescale and chroma compression are continuous across the seam, and the gamut
     // compression leaves M as it is on one side and pulls it in on the other.
-    const bool toned_close = std::abs(a.toned.J - b.toned.J) < 1e-6 && std::abs(a.toned.M - b.toned.M) < 1e-6;
+    const bool toned_close =
+        std::abs(a.toned.J - b.toned.J) < 1e-6 && std::abs(a.toned.M - b.toned.M) < 1e-6;
     const auto untouched = [](const Walker::Stages& s) { return s.compressed.M == s.toned.M; };
-    const auto pulled_in = [](const Walker::Stages& s) { return s.compressed.M < 0.999 * s.toned.M; };
-    if (toned_close && ((untouched(a) && pulled_in(b)) || (untouched(b) && pulled_in(a)))) return Seam::reach_switch;
+    const auto pulled_in = [](const Walker::Stages& s) {
+        return s.compressed.M < 0.999 * s.toned.M;
+    };
+    if (toned_close && ((untouched(a) && pulled_in(b)) || (untouched(b) && pulled_in(a))))
+        return Seam::reach_switch;
     return Seam::other;
 }
 
@@ -100,7 +105,8 @@ WalkResult walk(const Aces2DisplaySpec& spec, int segments) {
             }
             default: {
                 const double k = std::exp(unit(rng) * 4.0);
-                a = {k * (unit(rng) * 1.5 - 0.5), k * (unit(rng) * 1.5 - 0.5), k * (unit(rng) * 1.5 - 0.5)};
+                a = {k * (unit(rng) * 1.5 - 0.5), k * (unit(rng) * 1.5 - 0.5),
+                     k * (unit(rng) * 1.5 - 0.5)};
                 b = {k * (unit(rng) * 1.5 - 0.5), k * unit(rng), k * unit(rng)};
                 for (double& v : a) v = std::max(v, -0.5);
                 for (double& v : b) v = std::max(v, -0.5);
@@ -110,7 +116,8 @@ WalkResult walk(const Aces2DisplaySpec& spec, int segments) {
         Lab lp = w.lab(a);
         for (int i = 1; i <= steps; ++i) {
             const double t = static_cast<double>(i) / steps;
-            const Vec3 c{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+            const Vec3 c{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]),
+                         a[2] + t * (b[2] - a[2])};
             const Lab lc = w.lab(c);
             if (delta_e_2000(lp, lc) > allowed_step) {
                 // Bisect toward the larger half of the change, 60 halvings (to 1e-18 of the step).
@@ -137,9 +144,10 @@ WalkResult walk(const Aces2DisplaySpec& spec, int segments) {
                             ++result.other;
                             if (jump > result.largest_other) {
                                 result.largest_other = jump;
-                                result.other_example = "ΔE2000 " + std::to_string(jump) + " between ACES2065-1 (" +
-                                                       std::to_string(lo[0]) + ", " + std::to_string(lo[1]) + ", " +
-                                                       std::to_string(lo[2]) + ") and its neighbour";
+                                result.other_example =
+                                    "ΔE2000 " + std::to_string(jump) + " between ACES2065-1 (" +
+                                    std::to_string(lo[0]) + ", " + std::to_string(lo[1]) + ", " +
+                                    std::to_string(lo[2]) + ") and its neighbour";
                             }
                     }
                 }
@@ -164,10 +172,11 @@ TEST(Aces2Continuity, EveryJumpAboveDeltaE1IsASeamThePublishedAlgorithmForces) {
         if (spec.peak_nits == 100.0) {
             EXPECT_EQ(r.black + r.reach_switch, 0) << spec.name;
         }
-        std::printf("%-40s black %d reach switch %d largest %.2f\n", spec.name.c_str(), r.black, r.reach_switch,
-                    r.largest);
+        std::printf("%-40s black %d reach switch %d largest %.2f\n", spec.name.c_str(), r.black,
+                    r.reach_switch, r.largest);
     }
-    std::printf("all displays: black %d, reach switch %d, largest ΔE2000 %.2f\n", total_black, total_reach, largest);
+    std::printf("all displays: black %d, reach switch %d, largest ΔE2000 %.2f\n", total_black,
+                total_reach, largest);
 }
 
 }  // namespace
@@ -202,8 +211,10 @@ TEST(Aces2Continuity, OpenColorIOsHueSearchStepsOnlySlightlyAtWholeDegrees) {
             double step = 0.0;
             for (const double j : {0.3, 0.5, 0.7, 0.85, 0.95})
                 for (const double m : {20.0, 50.0, 100.0, 200.0}) {
-                    const Aces2Jmh below = r.gamut_compress_forward({j * r.limit_j_max(), m, degree - 1e-9});
-                    const Aces2Jmh above = r.gamut_compress_forward({j * r.limit_j_max(), m, degree + 1e-9});
+                    const Aces2Jmh below =
+                        r.gamut_compress_forward({j * r.limit_j_max(), m, degree - 1e-9});
+                    const Aces2Jmh above =
+                        r.gamut_compress_forward({j * r.limit_j_max(), m, degree + 1e-9});
                     if (below.M == m || above.M == m) continue;  // across the reach switch
                     step = std::max(step, delta_e_2000(lab(below), lab(above)));
                 }
