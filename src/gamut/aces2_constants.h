@@ -2,8 +2,8 @@
 
 // The constants of the ACES 2.0 output transform that more than one implementation reads: the
 // double reference (aces2_model.cpp, aces2.cpp), the table builder (aces2_tables.cpp) and the
-// Highway kernel (aces2_simd.cpp). The Academy's values (aces-core,
-// Lib.Academy.OutputTransform.ctl and Lib.Academy.Tonescale.ctl); OpenColorIO's
+// Highway kernel (aces2_simd_forward.cpp, aces2_simd_inverse.cpp, aces2_simd-inl.h). The Academy's
+// values (aces-core, Lib.Academy.OutputTransform.ctl and Lib.Academy.Tonescale.ctl); OpenColorIO's
 // ops/fixedfunction/ACES2 uses the same.
 
 #include <irid/color/matrix.h>

@@ -1,5 +1,5 @@
 // Aces2Kernel: the display chain's constants folded and converted once (aces2_kernel.h); the
-// Highway kernel that reads them is aces2_simd.cpp.
+// Highway kernel that reads them is aces2_simd_forward.cpp and aces2_simd_inverse.cpp.
 
 #include <irid/gamut/aces2_kernel.h>
 
@@ -126,8 +126,9 @@ Aces2Kernel::Aces2Kernel(const Aces2Output& output, bool inverse, const Mat3& in
 Aces2Kernel::~Aces2Kernel() = default;
 
 std::size_t Aces2Kernel::run(std::span<const float> in, std::span<float> out) const noexcept {
-    return detail::aces2_run(*this, *m_data, in.data(), out.data(),
-                             std::min(in.size(), out.size()) / 3);
+    const std::size_t colours = std::min(in.size(), out.size()) / 3;
+    return m_inverse ? detail::aces2_inverse_run(*this, *m_data, in.data(), out.data(), colours)
+                     : detail::aces2_forward_run(*this, *m_data, in.data(), out.data(), colours);
 }
 
 void Aces2Kernel::run_stage(Stage stage, std::span<const float> in, std::span<float> out,

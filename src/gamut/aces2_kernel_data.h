@@ -1,7 +1,8 @@
 #pragma once
 
 // The parameters and tables of Aces2Kernel (include/irid/gamut/aces2_kernel.h), converted once
-// from an Aces2Output (aces2_kernel.cpp) and read by the Highway kernel (aces2_simd.cpp).
+// from an Aces2Output (aces2_kernel.cpp) and read by the Highway kernel (aces2_simd_forward.cpp,
+// aces2_simd_inverse.cpp, aces2_simd-inl.h).
 
 #include <irid/gamut/aces2_kernel.h>
 
@@ -55,11 +56,13 @@ struct Aces2KernelData {
     Aces2Params<double> d;
 };
 
-/// The Highway kernel (aces2_simd.cpp): `colours` triples of `in` to `out`; returns how many
-/// it handed to kernel.reference().
-std::size_t aces2_run(const Aces2Kernel& kernel, const Aces2KernelData& data, const float* in,
-                      float* out, std::size_t colours) noexcept;
-/// Its forward's stage alone (Aces2Kernel::run_stage).
+/// The Highway kernel's forward (aces2_simd_forward.cpp) and inverse (aces2_simd_inverse.cpp):
+/// `colours` triples of `in` to `out`; each returns how many it handed to kernel.reference().
+std::size_t aces2_forward_run(const Aces2Kernel& kernel, const Aces2KernelData& data,
+                              const float* in, float* out, std::size_t colours) noexcept;
+std::size_t aces2_inverse_run(const Aces2Kernel& kernel, const Aces2KernelData& data,
+                              const float* in, float* out, std::size_t colours) noexcept;
+/// The forward's stage alone (Aces2Kernel::run_stage).
 void aces2_stage_run(const Aces2KernelData& data, Aces2Kernel::Stage stage, bool in_float,
                      const float* in, float* out, std::size_t colours) noexcept;
 
