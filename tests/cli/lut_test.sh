@@ -234,6 +234,14 @@ expect_stderr_has "nope"
 run '' ocio-config --aces2 sdr-100nit-rec709,sdr-100nit-rec709 -o "$TMP/cfg2"
 expect_status 2
 expect_stderr_has "named twice"
+# Issue 37: an HDR display on an SDR display space is refused, naming its own encoding.
+run '' ocio-config --to srgb --aces2 hdr-1000nit-p3-d65 --methods clamp --size 5 -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "1000 cd/m²"
+expect_stderr_has "p3-d65-pq"
+[[ ! -e $TMP/cfg2 ]] && pass || fail "nothing written after the refusal" "$(ls "$TMP/cfg2")"
+run '' ocio-config --to p3-d65-pq --aces2 hdr-1000nit-p3-d65 --methods clamp --size 5 -o "$TMP/cfg-pq"
+expect_status 0
 run '' ocio-config --aces2 custom:peak=100,limiting=rec709 -o "$TMP/cfg2"
 expect_status 2
 expect_stderr_has "built-in displays"

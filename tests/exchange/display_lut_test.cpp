@@ -7,6 +7,7 @@
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/exchange/display_lut.h>
+#include <irid/exchange/ocio_config.h>
 
 #include <gtest/gtest.h>
 
@@ -177,6 +178,37 @@ TEST(DisplayLut, TheClfCarriesTheMatrixAheadOfTheShaper) {
     // .cube and .spi3d cannot carry it.
     EXPECT_THROW((void)lut_text(lut, LutFormat::cube), Error);
     EXPECT_THROW(check_lut_format(LutFormat::spi3d, lut.domain), Error);
+}
+
+TEST(OcioConfig, AnHdrDisplayIsRefusedOnADisplaySpaceThatCannotHoldItsPeak) {
+    // Issue 37: --to srgb --aces2 hdr-1000nit-p3-d65 baked extended sRGB up to 2.64, silently.
+    OcioConfigOptions o;
+    o.methods = {ClipMethod::clamp};
+    o.size = 5;
+    o.aces2_displays = std::vector<std::string>{"hdr-1000nit-p3-d65"};
+    try {
+        (void)ocio_aces2_displays(o);
+        ADD_FAILURE() << "an HDR display was taken on sRGB";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        for (const char* word : {"hdr-1000nit-p3-d65", "1000 cd/m²", "srgb", "100 cd/m²", "p3-d65-pq"}) {
+            EXPECT_NE(m.find(word), std::string::npos) << word << " in: " << m;
+        }
+    }
+    EXPECT_THROW((void)make_ocio_config(o), Error);
+    // The cinema preset that shows 108 cd/m² is brighter than sRGB's code value 1 too.
+    o.aces2_displays = std::vector<std::string>{"hdr-108nit-p3-d65"};
+    EXPECT_THROW((void)ocio_aces2_displays(o), Error);
+    // PQ holds 10000 cd/m²; a linear display space holds any value; 100 cd/m² fits sRGB.
+    o.display = color_space("p3-d65-pq");
+    o.aces2_displays = std::vector<std::string>{"hdr-1000nit-p3-d65", "sdr-100nit-p3-d65"};
+    EXPECT_EQ(ocio_aces2_displays(o).size(), 2U);
+    o.display = color_space("srgb-linear");
+    o.aces2_displays = std::vector<std::string>{"hdr-4000nit-rec2020"};
+    EXPECT_EQ(ocio_aces2_displays(o).size(), 1U);
+    o.display = color_space("srgb");
+    o.aces2_displays = std::vector<std::string>{"sdr-100nit-rec709", "sdr-100nit-p3-d65"};
+    EXPECT_EQ(ocio_aces2_displays(o).size(), 2U);
 }
 
 }  // namespace

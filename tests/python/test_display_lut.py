@@ -207,3 +207,13 @@ def test_an_xyz_source_is_light_through_its_own_matrix_to_ap1():
     np.testing.assert_allclose(xyz.apply(irid.convert(scene, "aces2065-1", "xyz"), "tetrahedral"),
                                aces.apply(scene, "tetrahedral"), atol=2e-5)
 
+
+def test_an_hdr_display_is_refused_on_an_sdr_display_space(tmp_path):
+    """Issue 37: --to srgb --aces2 hdr-1000nit-p3-d65 baked extended sRGB up to 2.64, silently."""
+    with pytest.raises(ValueError, match="p3-d65-pq"):
+        irid.write_ocio_config(tmp_path / "srgb", methods=["clamp"], size=5, aces2=["hdr-1000nit-p3-d65"])
+    assert not (tmp_path / "srgb").exists()
+    path = irid.write_ocio_config(tmp_path / "pq", display="p3-d65-pq", methods=["clamp"], size=5,
+                                  aces2=["hdr-1000nit-p3-d65"])
+    import PyOpenColorIO as ocio
+    ocio.Config.CreateFromFile(path).validate()
