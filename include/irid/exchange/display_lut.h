@@ -16,7 +16,7 @@ namespace irid {
 /// ACES 2.0's forward limit (1024 at 100 cd/m², 4096 at 1000) down to 2^-6 and 2^-4, linear
 /// below. Of 14 to 24 stops, 16 gave the smallest p95 and p99 ΔE2000 at 33³ and 65³ on both
 /// displays measured, over random colours of the 18-stop and of the 24-stop domain alike
-/// (docs/DISPLAY.md, "How closely the LUT stands for the transform").
+/// (scripts/display-lut-stops; docs/DISPLAY.md, "How closely the LUT stands for the transform").
 inline constexpr int display_lut_stops = 16;
 
 /// The space in which a display LUT over light lays out its cube: AP1 (ACEScg), where the ACES
@@ -24,9 +24,9 @@ inline constexpr int display_lut_stops = 16;
 inline constexpr std::string_view display_lut_cube_space = "acescg-linear";
 
 /// Throws irid::Error unless `source` (a name of irid/color/convert.h) can be a display LUT's
-/// input, which every channel of is one range: light (xyz, or an RGB space's linear light: not
-/// negative for any real colour under ACES 2.0's clamp, and laid out through a log2 shaper) or
-/// an RGB space's code values ([0, 1]). xyY, CIELUV, CIELAB, their LCh forms, Oklab and Oklch
+/// input, which every channel of is one range: light (xyz, or an RGB space's linear light, which
+/// a matrix takes to AP1, where it is clamped as the chain clamps and laid out through a log2
+/// shaper) or an RGB space's code values ([0, 1]). xyY, CIELUV, CIELAB, their LCh forms, Oklab and Oklch
 /// are refused: their axes are lightness, chromaticity, opponent chroma or hue, which a
 /// per-channel shaper over [0, a limit] in light cannot lay out. Throws UnknownNameError for an
 /// unknown name.
