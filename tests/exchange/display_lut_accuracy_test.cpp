@@ -154,6 +154,10 @@ TEST(DisplayLutAccuracy, RandomColoursOverEachLutsDomainStayWithinTheDocumentedD
         // XYZ is light too: through its own matrix to the same AP1 cube (the same colours).
         {sdr, "srgb", "xyz", clf, 33, Spread::code, {0.090, 0.33, 5.0}, 0.79},
         {hdr, "p3-d65-pq", "xyz", clf, 33, Spread::code, {0.113, 0.38, 5.8}, 0.97},
+        // RGB code values: the .clf is uniform over [0, 1] (the scene's sRGB, which reaches
+        // diffuse white; BT.2100 PQ, which reaches 10000 cd/m²).
+        {sdr, "srgb", "srgb", clf, 33, Spread::code, {0.017, 0.050, 0.45}, 0.118},
+        {hdr, "p3-d65-pq", "rec2100-pq", clf, 33, Spread::code, {0.134, 0.51, 2.9}, 1.11},
         // Uniform in light instead: nearly every colour is beyond the display's peak.
         // (Figures below 0.01 are held to 0.01.)
         {sdr, "srgb", "aces2065-1", clf, 65, Spread::light, {0.01, 0.01, 0.12}, 0.01},
