@@ -41,6 +41,8 @@ class Lut:
     shaper: str
     domain: Tuple[float, float]
     stops: int
+    matrix: np.ndarray | None
+    cube_space: str
     title: str
     source: str
     target: str

@@ -78,19 +78,23 @@ def bake_display_lut(display, view="aces2", source="aces2065-1", target=None, si
     target: the display signal's space; default the display's own encoding ("srgb" for
         sdr-100nit-rec709, "rec2100-pq" for hdr-1000nit-rec2020, ...).
     size: nodes per axis, 2 to 129. format: the file the LUT is for, "clf", "cube" or "spi3d",
-        which decides its domain as ``irid lut --view`` does: a .clf over a linear source takes a
-        log2 shaper over [0, the rendering's forward limit] (18 stops); .cube and .spi3d carry no
-        shaper, so they need ``source="acescct"`` (its code values [0, 1]).
+        which decides its domain as ``irid lut --view`` does: a .clf over light (xyz or a linear
+        RGB space) takes a matrix to AP1, where ACES 2.0 clamps its input, then a log2 shaper
+        over AP1 [0, the rendering's forward limit] (16 stops); .cube and .spi3d carry neither,
+        so they need ``source="acescct"`` (its code values [0, 1]).
     threads: threads to use, 0 for all.
 
-    Raises KeyError for unknown names and ValueError for bad values (a display without an RGB
-    encoding of its own and no ``target``, a .cube over a linear source). docs/DISPLAY.md
-    measures the LUT's ΔE2000 against the transform.
+    Raises KeyError for unknown names and ValueError for bad values (a source that is neither
+    light nor RGB code values, such as "lab" or "oklab"; a display without an RGB encoding of
+    its own and no ``target``; a .cube over a linear source). docs/DISPLAY.md measures the
+    LUT's ΔE2000 against the transform.
 
     >>> import irid
     >>> lut = irid.bake_display_lut("sdr-100nit-rec709", size=17)
     >>> lut.size, lut.shaper, lut.domain, lut.stops     # 1024 = 8 (128 + 768 log(1) / log(100))
-    (17, 'log2', (0.0, 1024.0), 18)
+    (17, 'log2', (0.0, 1024.0), 16)
+    >>> lut.cube_space, lut.matrix.shape                # ACES2065-1 to AP1 first
+    ('acescg-linear', (3, 3))
     """
     return _irid.bake_display_lut(_name(view, "view"), _name(display, "display"), _name(source, "source"),
                                   "" if target is None else _name(target, "target"),

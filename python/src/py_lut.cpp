@@ -47,16 +47,29 @@ void add_lut(py::module_& m) {
     py::class_<Lut3D, std::shared_ptr<Lut3D>>(m, "Lut", R"(A 3D LUT baked by bake_lut: a clip method sampled at size³ nodes.
 
 size: nodes per axis. shaper: "none" (nodes uniform over domain) or "log2" (uniform in stops
-below the domain's top, `stops` of them). domain: (lo, hi), the inputs covered on every axis;
-inputs beyond clamp to it. title: the line the files carry (irid's version, the method, its
+below the domain's top, `stops` of them). domain: (lo, hi), the values covered on every axis of
+the cube; inputs beyond clamp to it. matrix: None, or the (3, 3) matrix that takes an input to
+the cube's space first (a display LUT over light: to AP1), cube_space that space's name (the
+source's without a matrix). title: the line the files carry (irid's version, the method, its
 parameters and both spaces). source, target: the spaces of the input and the output.
 table: a read-only float32 view (size, size, size, 3) indexed [r, g, b, channel].
-nodes: the input value of each node along an axis (float64, size).)")
+nodes: the value of each node along an axis of the cube (float64, size).)")
         .def_property_readonly("size", [](const Lut3D& l) { return l.size; })
         .def_property_readonly("shaper",
                                [](const Lut3D& l) { return std::string(l.domain.shaper == LutShaper::log2 ? "log2" : "none"); })
         .def_property_readonly("domain", [](const Lut3D& l) { return py::make_tuple(l.domain.min, l.domain.max); })
         .def_property_readonly("stops", [](const Lut3D& l) { return l.domain.stops; })
+        .def_property_readonly("matrix", [](const Lut3D& l) -> py::object {
+            if (!l.domain.matrix) return py::none();
+            py::array_t<double> a({3, 3});
+            for (int i = 0; i < 3; ++i) {
+                for (int j = 0; j < 3; ++j) a.mutable_at(i, j) = (*l.domain.matrix)[i][j];
+            }
+            return a;
+        })
+        .def_property_readonly("cube_space", [](const Lut3D& l) {
+            return l.domain.matrix ? l.domain.matrix_space : l.source;
+        })
         .def_property_readonly("title", [](const Lut3D& l) { return l.title; })
         .def_property_readonly("source", [](const Lut3D& l) { return l.source; })
         .def_property_readonly("target", [](const Lut3D& l) { return l.destination; })

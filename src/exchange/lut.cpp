@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <optional>
 
 #ifndef IRID_VERSION
 #error "IRID_VERSION (the project's version) must be defined by the build"
@@ -31,19 +32,20 @@ double log_offset(const LutDomain& d) noexcept { return (d.max - d.min) * std::e
 /// log2(max − min + e) − log2(e) = log2(1 + 2^stops): the shaper's span in stops.
 double log_span(const LutDomain& d) noexcept { return std::log2(1.0 + std::exp2(d.stops)); }
 
-/// "[0, 1]", "log2 over [0, 16], 14 stops": the domain in words.
+/// "[0, 1]", "log2 over [0, 16], 14 stops": the domain in words, and the matrix's space.
 std::string describe_domain(const LutDomain& d) {
     const std::string range = fmt::format("[{}, {}]", format_shortest(d.min), format_shortest(d.max));
-    if (d.shaper == LutShaper::none) return fmt::format("uniform over {}", range);
+    const std::string space = d.matrix ? " in " + d.matrix_space : std::string();
+    if (d.shaper == LutShaper::none) return fmt::format("uniform over {}{}", range, space);
     if (d.shaper == LutShaper::nodes) {
         std::string list;
         for (const double x : d.nodes) {
             if (!list.empty()) list += ' ';
             list += format_shortest(x);
         }
-        return fmt::format("nodes over {} at {}", range, list);
+        return fmt::format("nodes over {}{} at {}", range, space, list);
     }
-    return fmt::format("log2 shaper over {}, {} stops", range, d.stops);
+    return fmt::format("log2 shaper over {}, {} stops{}", range, d.stops, space);
 }
 
 /// The samples of the nodes shaper's LUT1D: one every `step` from min to max.
@@ -99,6 +101,15 @@ std::string clf_text(const Lut3D& lut) {
     put("    <Description>{}</Description>\n", xml_escaped(lut.title));
     put("    <InputDescriptor>{}</InputDescriptor>\n", xml_escaped(lut.source));
     put("    <OutputDescriptor>{}</OutputDescriptor>\n", xml_escaped(lut.destination));
+    if (d.matrix) {
+        // CLF 3.0 Matrix: out = M · in, the Array by rows.
+        put("    <Matrix inBitDepth=\"32f\" outBitDepth=\"32f\">\n");
+        put("        <Description>{} to {}, the cube's space</Description>\n", xml_escaped(lut.source),
+            xml_escaped(d.matrix_space));
+        put("        <Array dim=\"3 3\">\n");
+        for (int i = 0; i < 3; ++i) put("{} {} {}\n", (*d.matrix)[i][0], (*d.matrix)[i][1], (*d.matrix)[i][2]);
+        put("        </Array>\n    </Matrix>\n");
+    }
     if (d.shaper == LutShaper::none) {
         // [min, max] → [0, 1], clamped: the cube's index space.
         put("    <Range inBitDepth=\"32f\" outBitDepth=\"32f\" style=\"Clamp\">\n");
@@ -222,6 +233,10 @@ LutInterpolation lut_format_interpolation(LutFormat format) noexcept {
 }
 
 void check_lut_format(LutFormat format, const LutDomain& d) {
+    if (format != LutFormat::clf && d.matrix) {
+        throw Error("." + std::string(lut_format_name(format)) + " carries no matrix ahead of its cube (this "
+                    "LUT's cube is in " + d.matrix_space + "); write a .clf");
+    }
     if (format == LutFormat::cube && d.shaper != LutShaper::none) {
         throw Error(".cube carries no shaper (only LUT_3D_INPUT_RANGE, a uniform range); write "
                     "a .clf for the " + std::string(d.shaper == LutShaper::log2 ? "log2 shaper" : "nodes shaper"));
@@ -237,6 +252,18 @@ void check_lut_domain(const LutDomain& d) {
           d.min < d.max)) {
         throw Error("LUT domain [" + format_shortest(d.min) + ", " + format_shortest(d.max) +
                     "]: needs finite -1e6 <= min < max <= 1e6");
+    }
+    if (d.matrix) {
+        bool finite = true;
+        for (const Vec3& row : d.matrix->m) {
+            for (const double v : row) finite = finite && std::isfinite(v);
+        }
+        const double det = d.matrix->determinant();
+        if (!finite || !(std::abs(det) >= 1e-12) || d.matrix_space.empty() ||
+            d.matrix_space.find_first_of("\r\n") != std::string::npos) {
+            throw Error("LUT matrix: needs finite values, a determinant that is not 0 (" + format_shortest(det) +
+                        ") and the name of its output space (one line)");
+        }
     }
     if (d.shaper == LutShaper::log2 && !(d.stops >= 1 && d.stops <= 40)) {
         throw Error("LUT shaper stops " + std::to_string(d.stops) + ": valid 1 to 40");
@@ -321,10 +348,18 @@ Lut3D lut_grid(int size, const LutDomain& domain) {
     for (int i = 0; i < size; ++i) axis[static_cast<std::size_t>(i)] = static_cast<float>(lut.node(i));
     const std::size_t n = static_cast<std::size_t>(size) * size * size;
     lut.values.resize(3 * n);
+    const Mat3 back = domain.matrix ? inverse(*domain.matrix, "LUT matrix") : Mat3::identity();
     for (std::size_t i = 0; i < n; ++i) {
-        lut.values[3 * i + 0] = axis[i % size];
-        lut.values[3 * i + 1] = axis[(i / size) % size];
-        lut.values[3 * i + 2] = axis[i / (static_cast<std::size_t>(size) * size)];
+        const std::size_t r = i % size, g = (i / size) % size, b = i / (static_cast<std::size_t>(size) * size);
+        if (domain.matrix) {
+            const Vec3 in = back * Vec3{lut.node(static_cast<int>(r)), lut.node(static_cast<int>(g)),
+                                         lut.node(static_cast<int>(b))};
+            for (int c = 0; c < 3; ++c) lut.values[3 * i + c] = static_cast<float>(in[c]);
+            continue;
+        }
+        lut.values[3 * i + 0] = axis[r];
+        lut.values[3 * i + 1] = axis[g];
+        lut.values[3 * i + 2] = axis[b];
     }
     return lut;
 }
@@ -403,8 +438,9 @@ Rgb apply_lut(const Lut3D& lut, const Vec3& in, LutInterpolation interpolation) 
     const int n = lut.size;
     std::array<int, 3> i0{};
     std::array<double, 3> f{};
+    const Vec3 cube = lut.domain.matrix ? *lut.domain.matrix * in : in;
     for (int c = 0; c < 3; ++c) {
-        const double x = lut_shape(lut.domain, in[c]) * (n - 1);
+        const double x = lut_shape(lut.domain, cube[c]) * (n - 1);
         const int i = std::min(static_cast<int>(x), n - 2);
         i0[c] = i;
         f[c] = x - i;

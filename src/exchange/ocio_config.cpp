@@ -87,6 +87,26 @@ ColorSpace canonical(const ColorSpace& s) {
     return s;
 }
 
+/// Throws unless the config's display space holds the light of an ACES 2.0 display: the code
+/// value 1 of an encoded space (100 cd/m² for the SDR curves, 10000 for PQ) must decode to at
+/// least what the display emits at its peak. A linear space holds any value.
+void check_display_holds(const Aces2DisplaySpec& d, const ColorSpace& display) {
+    const ColorSpace space = canonical(display);
+    if (space.family != SpaceFamily::rgb_encoded) return;
+    // irid's display light: 1.0 = 100 cd/m² (display_transform.h).
+    const double holds = 100.0 * space.rgb->transfer().decode(1.0);
+    const double peak = d.peak_nits * d.linear_scale;
+    if (peak <= holds * (1.0 + 1e-9)) return;
+    const RgbSpace* own = default_display_encoding(d);
+    throw Error(fmt::format(
+        "the ACES 2.0 display {} reaches {} cd/m², and the config's display {} holds {} cd/m² at its code "
+        "value 1: the view would clip its highlights there, or need codes above 1 that the display does not "
+        "show; make the config for {} (the display's own encoding), or name displays of at most {} cd/m²",
+        d.name, fmt::format("{:g}", peak), color_space_name(space), fmt::format("{:g}", holds),
+        own != nullptr ? own->name() : std::string("its encoding (CIE XYZ or other primaries)"),
+        fmt::format("{:g}", holds)));
+}
+
 }  // namespace
 
 std::pair<double, double> ocio_source_range(const OcioConfigOptions& o) {
@@ -208,6 +228,7 @@ std::vector<std::string> ocio_aces2_displays(const OcioConfigOptions& o) {
         if (std::find(names.begin(), names.end(), d.name) != names.end()) {
             throw Error("the ACES 2.0 display " + d.name + " is named twice; each view is offered once");
         }
+        if (o.display.is_rgb()) check_display_holds(d, o.display);
         names.push_back(d.name);
     }
     return names;

@@ -155,8 +155,19 @@ grep -q -- "domain log2 shaper over \[0, 1024\], 20 stops" "$TMP/stops.clf" &&
     pass || fail "--stops with the default range" "$(head -3 "$TMP/stops.clf")"
 run '' lut --view aces2 --display sdr-100nit-rec709 --domain 0,64 --size 3 -o "$TMP/dom.clf"
 expect_status 0
-grep -q -- "domain log2 shaper over \[0, 64\], 18 stops" "$TMP/dom.clf" &&
-    pass || fail "--domain with the default stops" "$(head -3 "$TMP/dom.clf")"
+grep -q -- "domain log2 shaper over \[0, 64\], 16 stops in acescg-linear" "$TMP/dom.clf" &&
+    pass || fail "--domain with the default stops, the cube still in AP1" "$(head -3 "$TMP/dom.clf")"
+# Issue 37: the LUT's source must be light or RGB code values. Lab, Luv, Oklab and their LCh
+# forms (and xyY) are refused, naming the source and what is allowed; XYZ is light.
+for space in lab luv lchab oklab oklch xyy; do
+    run '' lut --view aces2 --display sdr-100nit-rec709 --from "$space" --size 3 -o "$TMP/x.clf"
+    expect_status 2
+    expect_stderr_has "--from $space"
+    expect_stderr_has "aces2065-1 or acescct"
+done
+run '' lut --view aces2 --display sdr-100nit-rec709 --from xyz --size 3 -o "$TMP/xyz.clf"
+expect_status 0
+grep -q -- "<Matrix" "$TMP/xyz.clf" && pass || fail "an XYZ .clf takes its matrix to AP1" "$(head -12 "$TMP/xyz.clf")"
 run '' lut --view aces2 --display sdr-100nit-rec709 --from acescct --stops 20 -o "$TMP/x.cube"
 expect_status 2
 expect_stderr_has "--stops applies to --shaper log2"
@@ -223,6 +234,14 @@ expect_stderr_has "nope"
 run '' ocio-config --aces2 sdr-100nit-rec709,sdr-100nit-rec709 -o "$TMP/cfg2"
 expect_status 2
 expect_stderr_has "named twice"
+# Issue 37: an HDR display on an SDR display space is refused, naming its own encoding.
+run '' ocio-config --to srgb --aces2 hdr-1000nit-p3-d65 --methods clamp --size 5 -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "1000 cd/m²"
+expect_stderr_has "p3-d65-pq"
+[[ ! -e $TMP/cfg2 ]] && pass || fail "nothing written after the refusal" "$(ls "$TMP/cfg2")"
+run '' ocio-config --to p3-d65-pq --aces2 hdr-1000nit-p3-d65 --methods clamp --size 5 -o "$TMP/cfg-pq"
+expect_status 0
 run '' ocio-config --aces2 custom:peak=100,limiting=rec709 -o "$TMP/cfg2"
 expect_status 2
 expect_stderr_has "built-in displays"

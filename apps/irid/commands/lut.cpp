@@ -92,10 +92,15 @@ int run_display_lut(const LutOptions& o) {
     } catch (const Error& e) {
         throw UsageError(std::string("--display: ") + e.what());
     }
+    const std::string from = o.from_option->count() > 0 ? o.from : "aces2065-1";
+    try {
+        check_display_lut_source(from);
+    } catch (const Error& e) {
+        throw UsageError("--from " + from + ": " + e.what());
+    }
     DisplayTransformOptions options;
     try {
-        options = display_lut_options(o.view, o.display, o.from_option->count() > 0 ? o.from : "aces2065-1",
-                                      o.to_option->count() > 0 ? o.to : "");
+        options = display_lut_options(o.view, o.display, from, o.to_option->count() > 0 ? o.to : "");
     } catch (const Error& e) {
         throw UsageError(std::string("--to: ") + e.what());
     }
@@ -120,7 +125,11 @@ int run_display_lut(const LutOptions& o) {
         if (o.domain_option->count() == 0) {
             given.domain = format_shortest(domain.min) + "," + format_shortest(domain.max);
         }
+        const std::optional<Mat3> matrix = domain.matrix;
+        const std::string matrix_space = domain.matrix_space;
         domain = make_domain(given);
+        domain.matrix = matrix;  // the cube stays in the library's space (AP1 for light)
+        domain.matrix_space = matrix_space;
     }
     try {
         check_lut_format(format, domain);
@@ -168,7 +177,7 @@ void add_lut_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--view", o->view,
                     "Bake a display transform instead of a method: " + join(display_views()) +
                         " (with --display; --from defaults to aces2065-1, --to to the display's "
-                        "encoding, a .clf to the log2 shaper over [0, the forward limit])");
+                        "encoding, a .clf to the log2 shaper over AP1 [0, the forward limit])");
     cmd->add_option("--display", o->display, "The display of --view (irid display --list)");
     cmd->add_option("--param", o->params,
                     "A method's parameter, name=value (repeatable): " + clip_parameter_help())

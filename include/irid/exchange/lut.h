@@ -21,15 +21,22 @@
 //   the shaper every `step`, on which every node lies.
 // Inputs beyond the domain clamp to it (every client does).
 //
+// A domain may also carry a matrix (.clf only: a Matrix node ahead of everything else): the
+// inputs go through it first, and the cube's axes are then those of the matrix's output space.
+// A display LUT over a linear source takes it to AP1, where ACES 2.0 clamps its input
+// (display_lut.h), so that the domain's faces are the transform's own clamp.
+//
 // The nodes are written in each format's order: .cube red fastest, .clf blue fastest (CLF 3,
 // the LUT3D Array), .spi3d with explicit indices. The text names irid's version, the method, its
 // parameters and both spaces: .cube in '#' comments ahead of the data (OCIO 2.1's Resolve reader
 // refuses TITLE), .clf in Description and the Input/OutputDescriptor, .spi3d in a '#' line after
 // the last entry (the only place OCIO's reader ignores).
 
+#include <irid/color/matrix.h>
 #include <irid/gamut/pipeline.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -56,13 +63,19 @@ struct LutDomain {
     /// LUT, each a whole multiple of `step` (2^-20 to 1; (max − min) / step at most 2^20).
     std::vector<double> nodes{};
     double step = 0.0;
+    /// The matrix (rows: out = matrix · in) that takes an input to the cube's space before the
+    /// shaper, and that space's name (color_space_name); none: the cube is in the input space.
+    /// Finite and invertible; .clf only.
+    std::optional<Mat3> matrix{};
+    std::string matrix_space{};
 };
 
 /// Throws irid::Error unless the domain is valid.
 void check_lut_domain(const LutDomain& domain);
 /// The same, and for LutShaper::nodes one node per node of a LUT of `size`.
 void check_lut_domain(const LutDomain& domain, int size);
-/// The domain in words, as LUT titles name it ("log2 shaper over [0, 16], 14 stops").
+/// The domain in words, as LUT titles name it ("log2 shaper over [0, 16], 14 stops"; with a
+/// matrix, "... in acescg-linear").
 [[nodiscard]] std::string describe_lut_domain(const LutDomain& domain);
 /// The shaper s: [min, max] → [0, 1] (clamping) and its inverse ((x − min) / (max − min) for no
 /// shaper).
@@ -79,7 +92,7 @@ struct Lut3D {
     /// The spaces of the LUT's input and output (color_space_name).
     std::string source, destination;
 
-    /// The input value of node i along any axis.
+    /// The value of node i along any axis (in the matrix's space when the domain has one).
     [[nodiscard]] double node(int i) const noexcept {
         return lut_unshape(domain, static_cast<double>(i) / (size - 1));
     }
@@ -89,8 +102,9 @@ struct Lut3D {
 inline constexpr int lut_min_size = 2;
 inline constexpr int lut_max_size = 129;
 
-/// A LUT of `size` over the domain whose values are its own nodes (the identity), ready to be run
-/// through a transform in place; bake_lut and bake_display_lut (display_lut.h) start from it.
+/// A LUT of `size` over the domain whose values are the inputs of its nodes (the identity; with a
+/// matrix, each node taken back through the matrix's inverse), ready to be run through a
+/// transform in place; bake_lut and bake_display_lut (display_lut.h) start from it.
 /// Throws irid::Error for a size outside [lut_min_size, lut_max_size] or a bad domain.
 [[nodiscard]] Lut3D lut_grid(int size, const LutDomain& domain);
 
@@ -104,8 +118,8 @@ inline constexpr int lut_max_size = 129;
 /// irid's version ("0.1.0"), as the LUTs and images it writes name it.
 [[nodiscard]] std::string_view irid_version() noexcept;
 
-/// Throws irid::Error when `format` cannot carry the domain (.spi3d: [0, 1] without a shaper;
-/// .cube: no shaper; .clf: any), saying which format can.
+/// Throws irid::Error when `format` cannot carry the domain (.spi3d: [0, 1] without a shaper or
+/// matrix; .cube: no shaper or matrix; .clf: any), saying which format can.
 void check_lut_format(LutFormat format, const LutDomain& domain);
 
 /// The LUT as a file of `format`; throws irid::Error as check_lut_format.
@@ -124,9 +138,9 @@ enum class LutInterpolation { trilinear, tetrahedral };
 /// and .spi3d, what the .clf names for .clf).
 [[nodiscard]] LutInterpolation lut_format_interpolation(LutFormat format) noexcept;
 
-/// The LUT at an input, the input clamped to the domain and shaped, then interpolated between
-/// the nodes as a client does; for measuring a LUT against the method it stands for. A NaN
-/// channel is taken as `min`.
+/// The LUT at an input, the input taken through the domain's matrix, clamped to the domain and
+/// shaped, then interpolated between the nodes as a client does; for measuring a LUT against the
+/// method it stands for. A NaN channel (after the matrix) is taken as `min`.
 [[nodiscard]] Rgb apply_lut(const Lut3D& lut, const Vec3& in,
                             LutInterpolation interpolation = LutInterpolation::trilinear) noexcept;
 

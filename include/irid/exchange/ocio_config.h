@@ -20,9 +20,10 @@
 //
 // ACES 2.0 views: for each chosen ACES 2.0 display (by default every built-in one whose default
 // encoding is the config's display space), a colour space "aces2-<display>" whose transform from
-// the reference is the display transform baked as a .clf (display_lut.h: the log2 shaper over
-// [0, the forward limit]) in DIR/luts/aces2-<display>.clf, and a view "ACES 2.0 <display>" on the
-// display. OpenColorIO 2.1, which has no ACES 2.0, shows it through the LUT.
+// the reference is the display transform baked as a .clf (display_lut.h: a matrix to AP1 and
+// the log2 shaper over [0, the forward limit]) in DIR/luts/aces2-<display>.clf, and a view
+// "ACES 2.0 <display>" on the display. OpenColorIO 2.1, which has no ACES 2.0, shows it through
+// the LUT. A display brighter than the display space holds (an HDR one on sRGB) is refused.
 
 #include <irid/color/adaptation.h>
 #include <irid/color/convert.h>
@@ -87,8 +88,11 @@ struct OcioConfig {
 };
 
 /// The ACES 2.0 displays the config offers as views: the options' list, or its default. Throws
-/// irid::UnknownNameError for an unknown display and irid::Error for a custom one (a config
-/// names its views and LUT files by built-in names).
+/// irid::UnknownNameError for an unknown display, and irid::Error for a custom one (a config
+/// names its views and LUT files by built-in names) and for one brighter than the config's
+/// display space holds at its code value 1 (an HDR display, above 100 cd/m², on an SDR curve:
+/// sRGB, γ 2.4, ...; PQ holds 10000 cd/m², a linear space any value), naming the display's own
+/// encoding.
 [[nodiscard]] std::vector<std::string> ocio_aces2_displays(const OcioConfigOptions& options);
 
 /// Builds the config and bakes its LUTs. Throws irid::Error for a source or display that is not
