@@ -27,7 +27,7 @@ namespace {
 
 /// Colours per display: 2²² in the Release build; the sanitizer build walks 2¹⁶ (the same
 /// generator, a sixty-fourth of the colours).
-#ifdef IRID_SANITIZE_BUILD
+#ifdef IRID_SANITIZED
 constexpr std::size_t colours_per_display = std::size_t{1} << 16;
 #else
 constexpr std::size_t colours_per_display = std::size_t{1} << 22;
