@@ -181,7 +181,7 @@ def _clip_pipeline(method, source, target, max, white, adaptation, inverse, para
     _name(method, "method")
     _name(source, "source")
     if target is None:
-        target = source if source in _RGB_SPACES else "srgb-linear"
+        target = source if _irid.canonical_space_name(source) in _RGB_SPACES else "srgb-linear"
     _name(target, "target")
     peak = _number(max, "max")
     values = _method_parameters(method, params)
@@ -328,7 +328,7 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
     for note in decided.notes:
         warnings.warn(note, stacklevel=2)
     if target is None:
-        target = given if given in _RGB_SPACES else "srgb-linear"
+        target = given if given is not None and _irid.canonical_space_name(given) in _RGB_SPACES else "srgb-linear"
     _name(target, "target")
     peak = _number(max, "max")
     wx, wy = _white(white)

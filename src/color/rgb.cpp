@@ -480,13 +480,20 @@ std::vector<std::string> rgb_space_names() {
     return names;
 }
 
-const RgbSpace* find_rgb_space(std::string_view name) noexcept {
-    for (const RgbSpace* space : builtin_rgb_spaces()) {
-        if (space->name() == name) return space;
+bool same_name(std::string_view given, std::string_view canonical) noexcept {
+    if (given.size() != canonical.size()) return false;
+    for (std::size_t i = 0; i < given.size(); ++i) {
+        char c = given[i];
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+        if (c != canonical[i]) return false;
     }
-    for (const auto list : {log_rgb_spaces(), display_rgb_spaces()}) {
+    return true;
+}
+
+const RgbSpace* find_rgb_space(std::string_view name) noexcept {
+    for (const auto list : {builtin_rgb_spaces(), log_rgb_spaces(), display_rgb_spaces()}) {
         for (const RgbSpace* space : list) {
-            if (space->name() == name) return space;
+            if (same_name(name, space->name())) return space;
         }
     }
     return nullptr;

@@ -314,6 +314,35 @@ expect_output $'L,a,b\n'
 run '' delta-e --metric ciede2000
 expect_output $'delta_e\n'
 
+# === 11. Space names in any case, as display names (issue 37, item 9) =========================
+
+run $'1,1,1\n' convert --from SRGB-Linear --to XYZ
+expect_close "$D65_XYZ" 1e-12
+run $'1,1,1\n' convert --from srgb-linear --to xyz
+slurp lower "$TMP/out"
+for args in "convert --from sRGB --to LAB" "convert --from Display-P3 --to OkLCh" "clip --method smits --from SRGB --to Display-P3" \
+    "display --display sdr-100nit-rec709 --to SRGB" "display --display custom:peak=1000,limiting=Display-P3,encoding=Rec2100-PQ --to P3-D65-PQ" \
+    "display --display hdr-1000nit-p3-d65 --inverse --from P3-D65-PQ --to ACEScg"; do
+    lowered=${args,,}
+    # shellcheck disable=SC2086  # the arguments are words
+    run $'0.5,0.4,0.3\n' $lowered
+    slurp want "$TMP/out"
+    # shellcheck disable=SC2086
+    run $'0.5,0.4,0.3\n' $args
+    expect_output "$want"
+done
+run "" film --layer water:300 --color --rgb Display-P3
+expect_status 0
+expect_stdout_has "R_linear"
+run '' lut --method smits --from ACEScg-Linear --to SRGB --size 5 -o "$TMP/case.cube"
+expect_status 0
+run '' ocio-config --from ACEScg-Linear --to SRGB --methods clamp --size 5 --aces2 none -o "$TMP/case-cfg"
+expect_status 0
+# An unknown name still lists the canonical names.
+run $'1,1,1\n' convert --from SRGBX --to xyz
+expect_status 2
+expect_stderr_has "srgb, srgb-linear"
+
 # ===========================================================================================
 
 echo "$passed passed, $failed failed"

@@ -204,7 +204,12 @@ private:
 /// names find_rgb_space knows), in that stable order.
 [[nodiscard]] std::vector<std::string> rgb_space_names();
 /// The built-in space with this name ("srgb", "display-p3", "rec2020", "adobe-rgb",
-/// "smpte-c", "ntsc1953", "aces2065-1", "acescg", "acescct", or a display encoding), or nullptr.
+/// "smpte-c", "ntsc1953", "aces2065-1", "acescg", "acescct", or a display encoding), in any case
+/// ("sRGB", "ACEScg"; same_name), or nullptr. The space keeps its canonical lower-case name().
 [[nodiscard]] const RgbSpace* find_rgb_space(std::string_view name) noexcept;
+/// Whether `given` names the lower-case `canonical`: equal but for the case of ASCII letters
+/// (UTF-8 and every other byte compared as they are). How every space is looked up by name, as
+/// displays are (irid/gamut/aces2_display.h).
+[[nodiscard]] bool same_name(std::string_view given, std::string_view canonical) noexcept;
 
 }  // namespace irid
