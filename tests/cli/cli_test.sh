@@ -314,6 +314,23 @@ expect_output $'L,a,b\n'
 run '' delta-e --metric ciede2000
 expect_output $'delta_e\n'
 
+# === 10. --threads: a whole number in [0, 2^20], as Python has it (issue 37, item 6) ========
+
+for args in "clip --method smits" "display --display sdr-100nit-rec709" "lut --method smits -o $TMP/t.cube" \
+    "ocio-config -o $TMP/cfg" "render soap-bubbles --width 8 --height 6 --spp 1 -q -o $TMP/t.png" \
+    "gallery -o $TMP/gallery -q"; do
+    for threads in -1 1048577 two 1.5; do
+        # shellcheck disable=SC2086  # the arguments are words
+        run '' $args --threads "$threads"
+        expect_status 2
+        expect_stderr_has "--threads"
+        expect_stderr_has "allowed: 0 to 1048576"
+    done
+done
+# The bound itself is a number of threads to ask for (irid uses what the machine has).
+run $'0.5,0.5,0.5\n' clip --method smits --threads 1048576
+expect_output $'R,G,B\n0.5,0.5,0.5\n'
+
 # === 11. Space names in any case, as display names (issue 37, item 9) =========================
 
 run $'1,1,1\n' convert --from SRGB-Linear --to XYZ

@@ -170,7 +170,7 @@ void add_display_command(CLI::App& app, Runner& runner) {
                   "their files");
     cmd->add_option("--bits", options->bits,
                     "Bits per sample of PNG and TIFF output: 8 or 16 (default 16 for PQ, else 8)");
-    cmd->add_option("--threads", options->threads, "Threads for images (0: all)")->capture_default_str();
+    add_threads_option(cmd, options->threads, "Threads for images (0: all)");
     cmd->add_option("IN", options->in,
                     "Input image (EXR, or anything OpenImageIO reads) of scene colours: its EXR chromaticities' "
                     "or ICC profile's space, else ACES2065-1; --from overrides it");

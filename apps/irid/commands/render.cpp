@@ -201,8 +201,7 @@ void add_render_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--height", o->height, "Image height in pixels")
         ->check(whole_number_in(1, render::max_image_side));
     cmd->add_option("--spp", o->spp, "Samples per pixel")->check(whole_number_in(1, render::max_spp));
-    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")
-        ->check(whole_number_in(0, 1024));
+    add_threads_option(cmd, o->threads, "Worker threads (0: all)");
     // CLI11 2.1 reads "-1" as 2^64 - 1 and saturates numbers beyond 2^64 - 1: check the text.
     cmd->add_option("--seed", o->seed, "Seed of the sampling and of the noise textures")
         ->check(CLI::Validator(
