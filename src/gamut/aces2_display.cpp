@@ -297,7 +297,7 @@ Aces2Output::Aces2Output(const Aces2DisplaySpec& spec)
 }
 
 Xyz Aces2Output::forward(const Vec3& aces) const noexcept {
-    Vec3 ap1 = m_ap0_to_ap1 * aces;
+    Vec3 ap1 = m_ap0_to_ap1 * Vec3{aces2_finite_input(aces[0]), aces2_finite_input(aces[1]), aces2_finite_input(aces[2])};
     const double limit = m_rendering.forward_limit();
     for (double& v : ap1) v = std::isnan(v) ? 0.0 : std::clamp(v, 0.0, limit);
     Vec3 rgb = m_rendering.forward(m_ap1_to_ap0 * ap1);
@@ -308,7 +308,8 @@ Xyz Aces2Output::forward(const Vec3& aces) const noexcept {
 }
 
 Vec3 Aces2Output::inverse(const Xyz& xyz) const noexcept {
-    Vec3 rgb = m_xyz_to_limiting * Vec3{xyz.X / m_scale, xyz.Y / m_scale, xyz.Z / m_scale};
+    Vec3 rgb = m_xyz_to_limiting * Vec3{aces2_finite_input(xyz.X) / m_scale, aces2_finite_input(xyz.Y) / m_scale,
+                                        aces2_finite_input(xyz.Z) / m_scale};
     const double peak = m_spec.peak_nits / 100.0;
     for (double& v : rgb) v = std::isnan(v) ? 0.0 : std::clamp(v, 0.0, peak);
     Vec3 ap1 = m_ap0_to_ap1 * m_rendering.inverse(rgb);

@@ -59,7 +59,7 @@ DisplayTransform::DisplayTransform(const DisplayTransformOptions& options) : m_o
 
 Vec3 DisplayTransform::operator()(const Vec3& in) const {
     const auto finite = [](Vec3 v) {
-        for (double& x : v) x = std::isfinite(x) ? x : 0.0;
+        for (double& x : v) x = aces2_finite_input(x);
         return v;
     };
     if (!m_options.inverse) {

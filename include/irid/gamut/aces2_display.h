@@ -17,12 +17,23 @@
 #include <irid/color/types.h>
 #include <irid/gamut/aces2.h>
 
+#include <cmath>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace irid {
+
+/// What the display chain takes a non-finite input channel as (forward and inverse, the double
+/// chain, Aces2Kernel and DisplayTransform alike, before any matrix): +Inf as 65504, the largest
+/// finite IEEE 754 binary16 value (a half float's +Inf is an overflow beyond it), which lies
+/// beyond every display's forward limit (at most 7168 in AP1, at 10000 cd/m²), so a blown-out
+/// highlight is shown as the brightest the display shows of it, not as black; -Inf and NaN as 0.
+inline constexpr double aces2_positive_infinity_as = 65504.0;
+[[nodiscard]] inline double aces2_finite_input(double v) noexcept {
+    return std::isfinite(v) ? v : (v > 0.0 ? aces2_positive_infinity_as : 0.0);
+}
 
 /// One display of the ACES 2.0 Output Transform.
 struct Aces2DisplaySpec {
