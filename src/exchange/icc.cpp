@@ -389,8 +389,9 @@ std::vector<unsigned char> make_icc_profile(const RgbSpace& space, std::string_v
     if (!icc_curve_can_hold(t)) {
         throw Error("ICC profile of " + space.name() + ": its curve decodes the code value 1 to " +
                     format_shortest(t.decode(1.0)) +
-                    " (PQ: absolute luminance up to 10000 cd/m²; ACEScct: scene light up to 222.86), "
-                    "which an ICC.1 tone curve (relative, 0 to 1) cannot hold");
+                    " (PQ: absolute luminance up to 10000 cd/m²; HLG: 1000 cd/m², through an OOTF on "
+                    "luminance; ACEScct: scene light up to 222.86), which an ICC.1 tone curve (relative, 0 to 1, "
+                    "per channel) cannot hold");
     }
     Context ctx;
     Curve curve;

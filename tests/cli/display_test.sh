@@ -77,6 +77,15 @@ expect_stdout_has $'\n1,1,1'
 run $'0.5,0.5,0.5\n' convert --from rec1886 --to rec1886-linear
 expect_close "0.18946457081379978,0.18946457081379978,0.18946457081379978" 1e-12
 
+# --- rec2100-hlg (issue 37, item 7): BT.2100 HLG on a 1000 cd/m² display; the HDR reference white
+# 203 cd/m² is a 75 % signal (ITU-R BT.2408), 1000 cd/m² is 1 ----------------------------------------
+run $'2.03,2.03,2.03\n10,10,10\n' convert --from rec2100-hlg-linear --to rec2100-hlg
+expect_close $'0.75,0.75,0.75\n1,1,1' 1e-3
+run $'0.5,0.5,0.5\n' convert --from REC2100-HLG --to rec2100-hlg-linear
+expect_close "0.50697028,0.50697028,0.50697028" 1e-7   # 1000 (1/12)^1.2 cd/m²
+run $'0.5,0.4,0.3\n' display --display hdr-1000nit-rec2020 --to rec2100-hlg
+expect_status 0
+
 # --- a custom display: the built-in one it repeats ------------------------------------------------
 run $'0.5,0.4,0.3\n' display --display custom:peak=1000,limiting=display-p3
 expect_status 0
