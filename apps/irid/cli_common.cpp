@@ -1,6 +1,7 @@
 #include "cli_common.h"
 
 #include <irid/error.h>
+#include <irid/parallel.h>
 #include <irid/text_input.h>
 
 #include <cerrno>
@@ -61,6 +62,10 @@ CLI::Validator whole_number_in(long long lo, long long hi) {
             return {};
         },
         "INT in " + allowed);
+}
+
+CLI::Option* add_threads_option(CLI::App* cmd, int& threads, const std::string& description) {
+    return cmd->add_option("--threads", threads, description)->check(whole_number_in(0, max_threads))->capture_default_str();
 }
 
 bool is_exr_path(const std::string& path) {

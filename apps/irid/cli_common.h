@@ -59,6 +59,10 @@ void write_stdout(const std::string& text);
 /// number; allowed: 1 to 16384", not "out of range".
 [[nodiscard]] CLI::Validator whole_number_in(long long lo, long long hi);
 
+/// Adds `--threads` (0: all) to `cmd`, a whole number in [0, irid::max_threads] as Python's
+/// `threads=` takes it; anything else is a usage error naming the range.
+CLI::Option* add_threads_option(CLI::App* cmd, int& threads, const std::string& description);
+
 /// "LO,HI" as two numbers; throws UsageError "OPTION 'TEXT': give ... as LO,HI (two numbers,
 /// e.g. EXAMPLE)" otherwise. `what` says what the pair is ("the inputs covered").
 [[nodiscard]] std::pair<double, double> parse_number_pair(const std::string& option, const std::string& text,

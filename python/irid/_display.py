@@ -64,7 +64,7 @@ def display_transform(rgb, view="aces2", display=None, source="aces2065-1", targ
             if len(_recent) >= 64:
                 _recent.clear()
             _recent[key] = t
-    return t.run(rgb, _whole(threads, "threads", 0, 1 << 20), out)
+    return t.run(rgb, _whole(threads, "threads", 0, _irid.max_threads), out)
 
 
 _recent = {}
@@ -99,4 +99,4 @@ def bake_display_lut(display, view="aces2", source="aces2065-1", target=None, si
     return _irid.bake_display_lut(_name(view, "view"), _name(display, "display"), _name(source, "source"),
                                   "" if target is None else _name(target, "target"),
                                   _whole(size, "size", 2, 129), _name(format, "format"),
-                                  _whole(threads, "threads", 0, 1 << 20))
+                                  _whole(threads, "threads", 0, _irid.max_threads))

@@ -145,8 +145,8 @@ def clip(rgb, method, source="srgb-linear", target=None, max=1.0, white="D65",
             if len(_recent) >= 256:
                 _recent.clear()
             _recent[key] = p
-    if threads.__class__ is not int or not 0 <= threads <= 1 << 20:
-        threads = _whole(threads, "threads", 0, 1 << 20)
+    if threads.__class__ is not int or not 0 <= threads <= _irid.max_threads:
+        threads = _whole(threads, "threads", 0, _irid.max_threads)
     return p.run(rgb, threads, out)
 
 
@@ -172,7 +172,7 @@ def clip_branches(rgb, method, source="srgb-linear", target=None, max=1.0, white
     (dtype('uint64'), 0, True)
     """
     p = _clip_pipeline(method, source, target, max, white, adaptation, inverse, params)
-    threads = _whole(threads, "threads", 0, 1 << 20)
+    threads = _whole(threads, "threads", 0, _irid.max_threads)
     return p.branches(np.asarray(rgb, dtype=np.float64), threads)
 
 
@@ -181,7 +181,7 @@ def _clip_pipeline(method, source, target, max, white, adaptation, inverse, para
     _name(method, "method")
     _name(source, "source")
     if target is None:
-        target = source if source in _RGB_SPACES else "srgb-linear"
+        target = source if _irid.canonical_space_name(source) in _RGB_SPACES else "srgb-linear"
     _name(target, "target")
     peak = _number(max, "max")
     values = _method_parameters(method, params)
@@ -235,7 +235,7 @@ def bake_lut(method, source="srgb-linear", target="srgb", size=33, shaper="none"
         except (TypeError, ValueError):
             raise ValueError(f"domain: {domain!r}; expected (lo, hi)") from None
     return _irid.bake_lut(p, _whole(size, "size", 2, 129), _name(shaper, "shaper"), lo, hi,
-                          _whole(stops, "stops", 1, 40), _whole(threads, "threads", 0, 1 << 20))
+                          _whole(stops, "stops", 1, 40), _whole(threads, "threads", 0, _irid.max_threads))
 
 
 def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None, size=33,
@@ -278,7 +278,7 @@ def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None,
     return _irid.write_ocio_config(_path(dir), _name(source, "source"), _name(display, "display"),
                                    names, _whole(size, "size", 5, 129),
                                    _name(adaptation, "adaptation"),
-                                   _whole(threads, "threads", 0, 1 << 20), range, aces2)
+                                   _whole(threads, "threads", 0, _irid.max_threads), range, aces2)
 
 
 def clip_image(pixels, channels, method, source=None, target=None, premultiplied=False,
@@ -328,7 +328,7 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
     for note in decided.notes:
         warnings.warn(note, stacklevel=2)
     if target is None:
-        target = given if given in _RGB_SPACES else "srgb-linear"
+        target = given if given is not None and _irid.canonical_space_name(given) in _RGB_SPACES else "srgb-linear"
     _name(target, "target")
     peak = _number(max, "max")
     wx, wy = _white(white)
@@ -343,7 +343,7 @@ def clip_image(pixels, channels, method, source=None, target=None, premultiplied
     pre_in = _flag(premultiplied, "premultiplied")
     pre_out = pre_in if premultiplied_out is None else _flag(premultiplied_out, "premultiplied_out")
     names = _irid.clip_image(out, names, p, pre_in, pre_out, _flag(encode, "encode"),
-                             _whole(threads, "threads", 0, 1 << 20), decided)
+                             _whole(threads, "threads", 0, _irid.max_threads), decided)
     return out, names
 
 

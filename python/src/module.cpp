@@ -6,6 +6,7 @@
 #include "arrays.h"
 
 #include <irid/error.h>
+#include <irid/parallel.h>
 
 #include <pybind11/pybind11.h>
 
@@ -33,6 +34,8 @@ PYBIND11_MODULE(_irid, m) {
             PyErr_SetString(PyExc_ValueError, e.what());
         }
     });
+    // The most threads= takes (irid/parallel.h), as every --threads of the command line.
+    m.attr("max_threads") = irid::max_threads;
     irid::python::add_colour(m);
     irid::python::add_gamut(m);
     irid::python::add_io(m);

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <functional>
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -62,6 +63,11 @@ py::array convert_rows(const py::handle& a, const Converter& c, const py::object
 void add_colour(py::module_& m) {
     m.def("color_space_names", &color_space_names);
     m.def("rgb_color_space_names", &rgb_color_space_names);
+    // A space's canonical name, from a name in any case; None when no space has it.
+    m.def("canonical_space_name", [](const std::string& name) -> std::optional<std::string> {
+        if (const std::optional<ColorSpace> s = find_color_space(name)) return color_space_name(*s);
+        return std::nullopt;
+    });
     m.def("white_point", [](const std::string& name) {
         const Xy w = white_point_xy(name);
         return py::make_tuple(w.x, w.y);

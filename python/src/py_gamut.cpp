@@ -185,6 +185,7 @@ void add_gamut(py::module_& m) {
         .def(py::init([](const py::dict& facts) { return std::make_shared<ImageSpace>(image_space(image_facts(facts), "image")); }),
              py::arg("facts"))
         .def_property_readonly("space", [](const ImageSpace& f) {
+            if (f.xyz) return py::object(py::str("xyz"));
             if (f.builtin == nullptr) return py::object(py::none());
             return py::object(py::str(color_space_name(ColorSpace{f.colour_space().family, f.builtin})));
         })

@@ -144,7 +144,8 @@ void add_io(py::module_& m) {
                 }
                 tag_image(image, as_named(*named), format);
             }
-            image.color_space = color_space;
+            // A name of irid's, in any case, is written as its canonical one.
+            image.color_space = tag && named ? color_space_name(*named) : color_space;
             if (icc_profile) {
                 if (format == io::ImageFormat::exr) {
                     throw py::value_error("icc_profile: EXR files carry chromaticities, not ICC profiles");

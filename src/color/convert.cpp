@@ -48,11 +48,11 @@ std::vector<std::string> rgb_color_space_names() {
 
 std::optional<ColorSpace> find_color_space(std::string_view name) {
     for (const auto& [n, f] : fixed_spaces) {
-        if (name == n) return ColorSpace{f};
+        if (same_name(name, n)) return ColorSpace{f};
     }
     if (const RgbSpace* s = find_rgb_space(name)) return ColorSpace{SpaceFamily::rgb_encoded, s};
     constexpr std::string_view suffix = "-linear";
-    if (name.size() > suffix.size() && name.ends_with(suffix)) {
+    if (name.size() > suffix.size() && same_name(name.substr(name.size() - suffix.size()), suffix)) {
         if (const RgbSpace* s = find_rgb_space(name.substr(0, name.size() - suffix.size()))) {
             return ColorSpace{SpaceFamily::rgb_linear, s};
         }

@@ -86,6 +86,20 @@ std::array<double, 3> hlg_inverse_ootf(const std::array<double, 3>& display, dou
     return {std::min(1.0, f[0] * scale), std::min(1.0, f[1] * scale), std::min(1.0, f[2] * scale)};
 }
 
+std::array<double, 3> hlg_scene_light_unclamped(const std::array<double, 3>& display, double peak_nits) noexcept {
+    const double peak = clamped(peak_nits, 100.0, 10000.0);
+    const double gamma = hlg_system_gamma(peak);
+    std::array<double, 3> f{};
+    double yd = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        f[i] = std::isnan(display[i]) ? 0.0 : display[i];
+        yd += bt2100_luminance[i] * f[i];
+    }
+    if (!(yd > 0.0)) return {0.0, 0.0, 0.0};
+    const double scale = std::pow(yd / peak, (1.0 - gamma) / gamma) / peak;
+    return {f[0] * scale, f[1] * scale, f[2] * scale};
+}
+
 std::array<double, 3> hlg_decode(const std::array<double, 3>& signal, double peak_nits) noexcept {
     return hlg_ootf({hlg_inverse_oetf(signal[0]), hlg_inverse_oetf(signal[1]), hlg_inverse_oetf(signal[2])},
                     peak_nits);

@@ -55,6 +55,24 @@ std::vector<std::string_view> split_fields(std::string_view line) {
     }
 }
 
+/// A header's field: a name, which begins with an ASCII letter or a character beyond ASCII (a
+/// UTF-8 letter such as λ or Δ) and is no number ("nan" and "inf" are numbers).
+bool is_name(std::string_view field, Parse parsed) noexcept {
+    field = trim(field);
+    if (field.empty() || parsed != Parse::not_a_number) return false;
+    const auto first = static_cast<unsigned char>(field.front());
+    return (first >= 'A' && first <= 'Z') || (first >= 'a' && first <= 'z') || first >= 0x80;
+}
+
+/// What line 1 may hold, for its error: "3 numbers separated by commas, or a header of 3 names
+/// (each beginning with a letter)".
+std::string first_line_shape(int columns, int min_columns) {
+    const std::string count = columns > 0      ? std::to_string(columns) + " "
+                              : min_columns > 1 ? "at least " + std::to_string(min_columns) + " "
+                                                : "";
+    return count + "numbers separated by commas, or a header of " + count + "names (each beginning with a letter)";
+}
+
 }  // namespace
 
 NumericTable read_numeric_table(std::string_view text, std::string_view source, int columns,
@@ -62,10 +80,12 @@ NumericTable read_numeric_table(std::string_view text, std::string_view source, 
     NumericTable table;
     int line_number = 0;
     bool first_content_line = true;
+    std::size_t header_columns = 0;  // the header's names, when there is one
+    int header_line = 0;
     const auto fail = [&](const std::string& what) {
         throw Error(std::string(source) + ":" + std::to_string(line_number) + ": " + what);
     };
-    const auto field_error = [&](std::size_t i, std::string_view field, const char* what) {
+    const auto field_error = [&](std::size_t i, std::string_view field, const std::string& what) {
         fail("field " + std::to_string(i + 1) + " " + quote_untrusted(trim(field)) + " " + what);
     };
     std::vector<double> row;
@@ -85,28 +105,39 @@ NumericTable read_numeric_table(std::string_view text, std::string_view source, 
         row.assign(fields.size(), 0.0);
         Parse status = Parse::ok;
         std::size_t bad_field = 0;
-        bool any_number = false, any_text = false;
+        bool all_names = true;
         for (std::size_t i = 0; i < fields.size(); ++i) {
             const Parse p = parse_number(fields[i], row[i]);
             // A value too large for a double is still a number (mistyped data, not a name).
-            any_number = any_number || p != Parse::not_a_number;
-            any_text = any_text || !trim(fields[i]).empty();
+            all_names = all_names && is_name(fields[i], p);
             if (p != Parse::ok && status == Parse::ok) {
                 status = p;
                 bad_field = i;
             }
         }
-        if (first_content_line) {
-            first_content_line = false;
-            if (!any_number && any_text) {
+        const bool first_line = first_content_line;
+        first_content_line = false;
+        if (first_line) {
+            // A header names every column: a name per field, as many fields as a row holds.
+            const std::size_t n = fields.size();
+            const bool shaped = columns > 0 ? n == static_cast<std::size_t>(columns)
+                                            : n >= static_cast<std::size_t>(std::max(min_columns, 1));
+            if (all_names && shaped) {
                 table.header = std::string(content);
+                header_columns = n;
+                header_line = line_number;
                 continue;
             }
         }
         if (status == Parse::out_of_range) {
             field_error(bad_field, fields[bad_field], "is out of the range of a double");
         }
-        if (status != Parse::ok) field_error(bad_field, fields[bad_field], "is not a number");
+        if (status != Parse::ok) {
+            field_error(bad_field, fields[bad_field],
+                        first_line ? "is not a number; line " + std::to_string(line_number) + " holds " +
+                                         first_line_shape(columns, min_columns)
+                                   : std::string("is not a number"));
+        }
         for (std::size_t i = 0; i < row.size(); ++i) {
             if (!std::isfinite(row[i])) field_error(i, fields[i], "is not a finite number");
         }
@@ -118,6 +149,10 @@ NumericTable read_numeric_table(std::string_view text, std::string_view source, 
         if (n < static_cast<std::size_t>(std::max(min_columns, 1))) {
             fail("expected at least " + std::to_string(min_columns) +
                  " comma-separated numbers, found " + std::to_string(n));
+        }
+        if (header_columns != 0 && n != header_columns) {
+            fail("expected " + std::to_string(header_columns) + " comma-separated numbers like the header's names on line " +
+                 std::to_string(header_line) + ", found " + std::to_string(n));
         }
         if (table.empty()) {
             table.columns = n;

@@ -172,6 +172,7 @@ std::optional<TransferFunction::Parameters> TransferFunction::parameters() const
         case Kind::parametric: return m_params;
         case Kind::sampled:
         case Kind::pq:
+        case Kind::hlg:
         case Kind::acescct: return std::nullopt;
     }
     return std::nullopt;
@@ -230,8 +231,22 @@ double TransferFunction::encode_magnitude(double v) const noexcept {
     return (static_cast<double>(i) + t) / last;
 }
 
-/// Linear 1.0 is this many cd/m² for the PQ kind (irid's display-light scale).
+namespace {
+
+/// Linear 1.0 is this many cd/m² for the PQ and HLG kinds (irid's display-light scale).
 constexpr double pq_linear_nits = 100.0;
+
+/// HLG on the neutral axis (R = G = B, where the OOTF's Y_S is E): display light [linear] to
+/// signal and back, on the 1000 cd/m² display (BT.2100-2 Table 5).
+double hlg_grey_encode(double linear) noexcept {
+    const double nits = std::isnan(linear) ? 0.0 : linear * pq_linear_nits;
+    return hlg_encode({nits, nits, nits}, hlg_nominal_peak_nits)[0];
+}
+double hlg_grey_decode(double signal) noexcept {
+    return hlg_decode({signal, signal, signal}, hlg_nominal_peak_nits)[0] / pq_linear_nits;
+}
+
+}  // namespace
 
 double TransferFunction::encode(double linear) const noexcept {
     const double v = std::abs(linear);
@@ -239,6 +254,7 @@ double TransferFunction::encode(double linear) const noexcept {
     switch (m_kind) {
         case Kind::linear: return linear;
         case Kind::pq: return pq_encode(std::isnan(linear) ? 0.0 : linear * pq_linear_nits);
+        case Kind::hlg: return hlg_grey_encode(linear);
         case Kind::acescct: return acescct_encode(linear);
         case Kind::parametric:
         case Kind::sampled:
@@ -269,6 +285,7 @@ double TransferFunction::decode(double encoded) const noexcept {
     switch (m_kind) {
         case Kind::linear: return encoded;
         case Kind::pq: return pq_decode(encoded) / pq_linear_nits;
+        case Kind::hlg: return hlg_grey_decode(encoded);
         case Kind::acescct: return acescct_decode(encoded);
         case Kind::parametric:
         case Kind::sampled:
@@ -340,10 +357,19 @@ Rgb RgbSpace::from_xyz(const Xyz& c) const noexcept {
 }
 
 Rgb RgbSpace::encode(const Rgb& c) const noexcept {
+    if (m_transfer.kind() == TransferFunction::Kind::hlg) {
+        const auto nits = [](double v) { return std::isnan(v) ? 0.0 : v * pq_linear_nits; };
+        const std::array<double, 3> e = hlg_encode({nits(c.r), nits(c.g), nits(c.b)}, hlg_nominal_peak_nits);
+        return {e[0], e[1], e[2]};
+    }
     return {m_transfer.encode(c.r), m_transfer.encode(c.g), m_transfer.encode(c.b)};
 }
 
 Rgb RgbSpace::decode(const Rgb& c) const noexcept {
+    if (m_transfer.kind() == TransferFunction::Kind::hlg) {
+        const std::array<double, 3> d = hlg_decode({c.r, c.g, c.b}, hlg_nominal_peak_nits);
+        return {d[0] / pq_linear_nits, d[1] / pq_linear_nits, d[2] / pq_linear_nits};
+    }
     return {m_transfer.decode(c.r), m_transfer.decode(c.g), m_transfer.decode(c.b)};
 }
 
@@ -448,6 +474,14 @@ const RgbSpace& p3_d65_pq() {
     return space;
 }
 
+const RgbSpace& rec2100_hlg() {
+    // ITU-R BT.2100-2 Table 1 (the BT.2020 primaries, D65) and Table 5 (HLG, its reference OOTF at
+    // 1000 cd/m²).
+    static const RgbSpace space("rec2100-hlg", {{0.708, 0.292}, {0.170, 0.797}, {0.131, 0.046}},
+                                d65_xy, TransferFunction(Kind::hlg));
+    return space;
+}
+
 const RgbSpace& acescct() {
     // Academy S-2016-001 (ACEScct) §4.1 and §4.4: AP1 primaries, the ACES white, the ACEScct curve.
     static const RgbSpace space("acescct", {{0.713, 0.293}, {0.165, 0.830}, {0.128, 0.044}},
@@ -461,8 +495,8 @@ std::span<const RgbSpace* const> log_rgb_spaces() {
 }
 
 std::span<const RgbSpace* const> display_rgb_spaces() {
-    static const std::array<const RgbSpace*, 5> spaces{&rec1886(), &rec1886_rec2020(), &p3_d65(), &rec2100_pq(),
-                                                       &p3_d65_pq()};
+    static const std::array<const RgbSpace*, 6> spaces{&rec1886(),    &rec1886_rec2020(), &p3_d65(),
+                                                       &rec2100_pq(), &p3_d65_pq(),       &rec2100_hlg()};
     return spaces;
 }
 
@@ -480,13 +514,20 @@ std::vector<std::string> rgb_space_names() {
     return names;
 }
 
-const RgbSpace* find_rgb_space(std::string_view name) noexcept {
-    for (const RgbSpace* space : builtin_rgb_spaces()) {
-        if (space->name() == name) return space;
+bool same_name(std::string_view given, std::string_view canonical) noexcept {
+    if (given.size() != canonical.size()) return false;
+    for (std::size_t i = 0; i < given.size(); ++i) {
+        char c = given[i];
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+        if (c != canonical[i]) return false;
     }
-    for (const auto list : {log_rgb_spaces(), display_rgb_spaces()}) {
+    return true;
+}
+
+const RgbSpace* find_rgb_space(std::string_view name) noexcept {
+    for (const auto list : {builtin_rgb_spaces(), log_rgb_spaces(), display_rgb_spaces()}) {
         for (const RgbSpace* space : list) {
-            if (space->name() == name) return space;
+            if (same_name(name, space->name())) return space;
         }
     }
     return nullptr;

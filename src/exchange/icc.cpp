@@ -389,8 +389,9 @@ std::vector<unsigned char> make_icc_profile(const RgbSpace& space, std::string_v
     if (!icc_curve_can_hold(t)) {
         throw Error("ICC profile of " + space.name() + ": its curve decodes the code value 1 to " +
                     format_shortest(t.decode(1.0)) +
-                    " (PQ: absolute luminance up to 10000 cd/m²; ACEScct: scene light up to 222.86), "
-                    "which an ICC.1 tone curve (relative, 0 to 1) cannot hold");
+                    " (PQ: absolute luminance up to 10000 cd/m²; HLG: 1000 cd/m², through an OOTF on "
+                    "luminance; ACEScct: scene light up to 222.86), which an ICC.1 tone curve (relative, 0 to 1, "
+                    "per channel) cannot hold");
     }
     Context ctx;
     Curve curve;
@@ -581,6 +582,13 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
                            "RGB without one (R = (1 - C)(1 - K), ...), which is no colour space: convert "
                            "the file to RGB with its press profile, or name a space to take that RGB as");
     }
+    if (image.chromaticities.size() == exr_xyz_chromaticities.size() &&
+        std::equal(image.chromaticities.begin(), image.chromaticities.end(), exr_xyz_chromaticities.begin(),
+                   [](float a, float b) { return std::abs(a - b) <= 1e-6f; })) {
+        s.xyz = true;
+        s.origin = "its EXR chromaticities of CIE XYZ (red 1, 0, green 0, 1, blue 0, 0, white 1/3, 1/3)";
+        return s;
+    }
     if (!image.chromaticities.empty()) {
         const RgbSpace exr = rgb_space_from_chromaticities(image.chromaticities, "exr-chromaticities", what);
         s.builtin = matching_builtin_space(exr, 2e-4, true);
@@ -601,8 +609,19 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
 }
 
 ColorSpace ImageSpace::colour_space() const noexcept {
-    if (profile) return {SpaceFamily::xyz, nullptr};
+    if (profile || xyz) return {SpaceFamily::xyz, nullptr};
     return {encoded ? SpaceFamily::rgb_encoded : SpaceFamily::rgb_linear, &*rgb};
+}
+
+void tag_image_xyz(io::Image& image) {
+    image.color_space = "xyz";
+    image.icc_profile.clear();
+    image.adopted_neutral.clear();
+    if (image.channels < 3) {
+        image.chromaticities.clear();
+        return;
+    }
+    image.chromaticities.assign(exr_xyz_chromaticities.begin(), exr_xyz_chromaticities.end());
 }
 
 void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format) {

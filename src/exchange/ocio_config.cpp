@@ -52,6 +52,7 @@ std::string encode_transform(const RgbSpace& space) {
         case TransferFunction::Kind::pq:
             // OCIO 2.1's built-in curve has irid's scale: linear 1.0 = 100 cd/m².
             return "!<BuiltinTransform> {style: \"CURVE - ST-2084_to_LINEAR\", direction: inverse}";
+        case TransferFunction::Kind::hlg:  // its OOTF acts on luminance: no curve of OCIO 2.1 holds it
         case TransferFunction::Kind::parametric:
         case TransferFunction::Kind::sampled: break;
     }

@@ -2,6 +2,7 @@
 
 #include <irid/color/illuminant.h>
 #include <irid/color/numeric_table.h>
+#include <irid/color/observer.h>
 #include <irid/error.h>
 #include <irid/gamut/aces2_display.h>
 #include <irid/text_input.h>
@@ -71,7 +72,8 @@ std::vector<Aces2DisplaySpec> build_displays() {
 constexpr std::string_view ocio_prefix = "aces-output - aces2065-1_to_cie-xyz-d65 - ";
 constexpr std::string_view ocio_suffix = "_2.0";
 constexpr std::string_view custom_prefix = "custom:";
-constexpr std::string_view custom_form = "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz]";
+constexpr std::string_view custom_form =
+    "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz][,linear-scale=S][,scale-white=yes|no]";
 
 const RgbSpace& custom_space(std::string_view value, const char* key) {
     if (const RgbSpace* s = find_rgb_space(value)) return *s;
@@ -81,15 +83,40 @@ const RgbSpace& custom_space(std::string_view value, const char* key) {
                            valid);
 }
 
+/// A number of the custom form, or nothing.
+std::optional<double> custom_number(std::string_view value) {
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+    if (value.empty() || ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v))
+        return std::nullopt;
+    return v;
+}
+
+/// The limiting white: a white point's name, "aces", or its chromaticity as x,y or x:y.
 Xy custom_white(std::string_view value) {
     if (value == "aces") return d60;
-    std::string text(value);
-    std::replace(text.begin(), text.end(), ':', ',');
+    const std::size_t split = value.find_first_of(",:");
+    const std::string text(value);
     try {
-        return white_point_xy(text);
+        if (split != std::string_view::npos) {
+            const std::optional<double> x = custom_number(value.substr(0, split));
+            const std::optional<double> y = custom_number(value.substr(split + 1));
+            if (x && y) {
+                const Xy xy{*x, *y};
+                check_white_chromaticity(xy, "white point " + quote_untrusted(value, 40));
+                return xy;
+            }
+        } else if (!custom_number(value)) {
+            return white_point_xy(text);
+        }
+    } catch (const UnknownNameError&) {
     } catch (const Error& e) {
-        throw Error(std::string("custom display: white: ") + e.what() + "; or aces, or x:y");
+        throw Error(std::string("custom display: white: ") + e.what());
     }
+    throw Error(fmt::format("custom display: white {}: give a white point's name ({}), aces (the ACES white), or "
+                            "the chromaticity as x,y or x:y; e.g. white=D65, white=aces, white=0.3127,0.329 or "
+                            "white=0.3127:0.329",
+                            quote_untrusted(value, 40), fmt::join(white_point_names(), ", ")));
 }
 
 /// The custom form (see aces2_display), lower case without its prefix.
@@ -99,26 +126,33 @@ Aces2DisplaySpec parse_custom(std::string_view name, std::string_view body) {
     const RgbSpace* encoding = nullptr;
     bool encoding_xyz = false;
     std::optional<Xy> white;
+    double linear_scale = 1.0;
+    bool scale_white = true;
+    // The items between commas, each a view into `body` (a final comma ends with an empty one).
+    std::vector<std::string_view> items;
+    for (std::size_t start = 0; !body.empty();) {
+        const std::size_t comma = body.find(',', start);
+        items.push_back(body.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+        if (comma == std::string_view::npos) break;
+        start = comma + 1;
+    }
     std::vector<std::string_view> seen;
-    for (std::string_view rest = body; !rest.empty();) {
-        const std::size_t comma = rest.find(',');
-        const std::string_view item = rest.substr(0, comma);
-        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const std::string_view item = items[i];
         const std::size_t eq = item.find('=');
         if (eq == std::string_view::npos || eq == 0) {
             throw Error(fmt::format("custom display {}: {} is not key=value; the form is {}", quote_untrusted(name, 80),
                                     quote_untrusted(item, 40), custom_form));
         }
-        const std::string_view key = item.substr(0, eq), value = item.substr(eq + 1);
+        const std::string_view key = item.substr(0, eq);
+        std::string_view value = item.substr(eq + 1);
         if (std::find(seen.begin(), seen.end(), key) != seen.end())
             throw Error(fmt::format("custom display: {} is given twice", quote_untrusted(key, 20)));
         seen.push_back(key);
         if (key == "peak") {
-            double v = 0.0;
-            const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-            if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v))
-                throw Error(fmt::format("custom display: peak {} is not a number", quote_untrusted(value, 40)));
-            peak = v;
+            const std::optional<double> v = custom_number(value);
+            if (!v) throw Error(fmt::format("custom display: peak {} is not a number", quote_untrusted(value, 40)));
+            peak = *v;
         } else if (key == "limiting") {
             limiting = &custom_space(value, "limiting");
         } else if (key == "encoding") {
@@ -128,7 +162,24 @@ Aces2DisplaySpec parse_custom(std::string_view name, std::string_view body) {
                 encoding = &custom_space(value, "encoding");
             }
         } else if (key == "white") {
+            // white=x,y: the ',' that separates keys also separates x from y. A number followed
+            // by an item without '=' is unambiguous: that item is y.
+            if (custom_number(value) && i + 1 < items.size() && items[i + 1].find('=') == std::string_view::npos) {
+                value = std::string_view(value.data(), static_cast<std::size_t>(items[i + 1].data() - value.data()) +
+                                                           items[i + 1].size());
+                ++i;
+            }
             white = custom_white(value);
+        } else if (key == "linear-scale") {
+            const std::optional<double> v = custom_number(value);
+            if (!v || !(*v > 0.0 && *v <= 1.0))
+                throw Error(fmt::format("custom display: linear-scale {} must be a number in (0, 1]",
+                                        quote_untrusted(value, 40)));
+            linear_scale = *v;
+        } else if (key == "scale-white") {
+            if (value != "yes" && value != "no")
+                throw Error(fmt::format("custom display: scale-white {}: give yes or no", quote_untrusted(value, 20)));
+            scale_white = value == "yes";
         } else {
             throw Error(fmt::format("custom display: unknown key {}; the form is {}", quote_untrusted(key, 20),
                                     custom_form));
@@ -138,24 +189,31 @@ Aces2DisplaySpec parse_custom(std::string_view name, std::string_view body) {
         throw Error(fmt::format("custom display {} needs peak and limiting; the form is {}", quote_untrusted(name, 80),
                                 custom_form));
     if (encoding == nullptr && !encoding_xyz) encoding = limiting;
-    return custom_aces2_display(*peak, *limiting, white.value_or(limiting->white()), encoding);
+    return custom_aces2_display(*peak, *limiting, white.value_or(limiting->white()), encoding, linear_scale,
+                                scale_white);
 }
 
 }  // namespace
 
 Aces2DisplaySpec custom_aces2_display(double peak_nits, const RgbSpace& limiting, const Xy& limiting_white,
-                                      const RgbSpace* encoding) {
+                                      const RgbSpace* encoding, double linear_scale, bool scale_white) {
     if (!(peak_nits >= 100.0 && peak_nits <= 10000.0)) {
         throw Error(fmt::format("custom display: peak {} cd/m² is outside 100 to 10000, the ACES 2.0 "
                                 "rendering's range",
                                 format_shortest(peak_nits)));
     }
+    if (!(linear_scale > 0.0 && linear_scale <= 1.0))
+        throw Error(fmt::format("custom display: linear-scale {} must be in (0, 1]", format_shortest(linear_scale)));
     (void)rgb_to_xyz_matrix(limiting.primaries(), limiting_white);  // the white inside the primaries
     Aces2DisplaySpec d;
     d.name = fmt::format("custom:peak={},limiting={}", format_shortest(peak_nits), limiting.name());
     if (limiting_white.x != limiting.white().x || limiting_white.y != limiting.white().y)
         d.name += fmt::format(",white={}:{}", format_shortest(limiting_white.x), format_shortest(limiting_white.y));
     d.name += ",encoding=" + (encoding != nullptr ? encoding->name() : std::string("xyz"));
+    if (linear_scale != 1.0) d.name += ",linear-scale=" + format_shortest(linear_scale);
+    if (!scale_white) d.name += ",scale-white=no";
+    d.linear_scale = linear_scale;
+    d.scale_white = scale_white;
     d.peak_nits = peak_nits;
     d.limiting = limiting.primaries();
     d.limiting_white = limiting_white;
@@ -239,7 +297,7 @@ Aces2Output::Aces2Output(const Aces2DisplaySpec& spec)
 }
 
 Xyz Aces2Output::forward(const Vec3& aces) const noexcept {
-    Vec3 ap1 = m_ap0_to_ap1 * aces;
+    Vec3 ap1 = m_ap0_to_ap1 * Vec3{aces2_finite_input(aces[0]), aces2_finite_input(aces[1]), aces2_finite_input(aces[2])};
     const double limit = m_rendering.forward_limit();
     for (double& v : ap1) v = std::isnan(v) ? 0.0 : std::clamp(v, 0.0, limit);
     Vec3 rgb = m_rendering.forward(m_ap1_to_ap0 * ap1);
@@ -250,7 +308,8 @@ Xyz Aces2Output::forward(const Vec3& aces) const noexcept {
 }
 
 Vec3 Aces2Output::inverse(const Xyz& xyz) const noexcept {
-    Vec3 rgb = m_xyz_to_limiting * Vec3{xyz.X / m_scale, xyz.Y / m_scale, xyz.Z / m_scale};
+    Vec3 rgb = m_xyz_to_limiting * Vec3{aces2_finite_input(xyz.X) / m_scale, aces2_finite_input(xyz.Y) / m_scale,
+                                        aces2_finite_input(xyz.Z) / m_scale};
     const double peak = m_spec.peak_nits / 100.0;
     for (double& v : rgb) v = std::isnan(v) ? 0.0 : std::clamp(v, 0.0, peak);
     Vec3 ap1 = m_ap0_to_ap1 * m_rendering.inverse(rgb);

@@ -144,7 +144,7 @@ double Aces2Kernel::error_of_largest() const noexcept {
 
 Vec3 Aces2Kernel::reference(const Vec3& in) const noexcept {
     Vec3 x = in;
-    for (double& v : x) v = std::isfinite(v) ? v : 0.0;
+    for (double& v : x) v = aces2_finite_input(v);
     x = m_in * x;
     if (!m_inverse) {
         const Xyz xyz = m_output.forward(x);

@@ -422,9 +422,11 @@ HWY_INLINE std::size_t Run(D d, const Aces2Kernel& kernel, const Params<D>& p, c
             x2 = hn::PromoteTo(d, f2);
         }
         const V raw0 = x0, raw1 = x1, raw2 = x2;
-        x0 = hn::IfThenElseZero(hn::IsFinite(x0), x0);
-        x1 = hn::IfThenElseZero(hn::IsFinite(x1), x1);
-        x2 = hn::IfThenElseZero(hn::IsFinite(x2), x2);
+        // A non-finite channel as aces2_finite_input takes it: +Inf as 65504, -Inf and NaN as 0.
+        const V inf_as = hn::Set(d, static_cast<T>(aces2_positive_infinity_as));
+        x0 = hn::IfThenElse(hn::IsFinite(x0), x0, hn::IfThenElseZero(hn::Gt(x0, hn::Zero(d)), inf_as));
+        x1 = hn::IfThenElse(hn::IsFinite(x1), x1, hn::IfThenElseZero(hn::Gt(x1, hn::Zero(d)), inf_as));
+        x2 = hn::IfThenElse(hn::IsFinite(x2), x2, hn::IfThenElseZero(hn::Gt(x2, hn::Zero(d)), inf_as));
         auto hard = body(d, p, x0, x1, x2);
         hard = hn::Or(
             hard, hn::Not(hn::And(hn::And(hn::IsFinite(x0), hn::IsFinite(x1)), hn::IsFinite(x2))));

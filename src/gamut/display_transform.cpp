@@ -33,6 +33,9 @@ DisplayTransform::DisplayTransform(const DisplayTransformOptions& options) : m_o
     m_output = std::make_shared<const Aces2Output>(aces2_display(options.display));
     const ColorSpace source = space_of(options.source, "source");
     const ColorSpace target = space_of(options.target, "target");
+    // Names are found in any case; options() says the canonical ones.
+    m_options.source = color_space_name(source);
+    m_options.target = color_space_name(target);
     const ColorSpace aces = color_space("aces2065-1-linear");
     const ColorSpace xyz = color_space("xyz");
     const ColorSpace& display = options.inverse ? source : target;
@@ -56,7 +59,7 @@ DisplayTransform::DisplayTransform(const DisplayTransformOptions& options) : m_o
 
 Vec3 DisplayTransform::operator()(const Vec3& in) const {
     const auto finite = [](Vec3 v) {
-        for (double& x : v) x = std::isfinite(x) ? x : 0.0;
+        for (double& x : v) x = aces2_finite_input(x);
         return v;
     };
     if (!m_options.inverse) {

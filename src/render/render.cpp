@@ -452,10 +452,14 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         // does for images.
         const GamutClipper clipper(method, Gamut(*space, 1.0), display_clip_settings(method));
         arena.execute([&] { clip_batch(clipper, rgb, BatchOptions{threads}); });
-        const TransferFunction& transfer = space->transfer();
-        for (std::size_t i = 0; i < rgb.size(); ++i)
-            result.display.pixels[i] =
-                static_cast<float>(std::clamp(transfer.encode(std::clamp<double>(rgb[i], 0.0, 1.0)), 0.0, 1.0));
+        // Whole colours through the curve (HLG's acts on their luminance).
+        const auto unit = [](double v) { return std::clamp(v, 0.0, 1.0); };
+        for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
+            const Rgb e = space->encode({unit(rgb[i]), unit(rgb[i + 1]), unit(rgb[i + 2])});
+            result.display.pixels[i] = static_cast<float>(unit(e.r));
+            result.display.pixels[i + 1] = static_cast<float>(unit(e.g));
+            result.display.pixels[i + 2] = static_cast<float>(unit(e.b));
+        }
     }
 
     result.stats.camera_rays = static_cast<std::uint64_t>(W) * H * spp;

@@ -314,6 +314,52 @@ expect_output $'L,a,b\n'
 run '' delta-e --metric ciede2000
 expect_output $'delta_e\n'
 
+# === 10. --threads: a whole number in [0, 2^20], as Python has it (issue 37, item 6) ========
+
+for args in "clip --method smits" "display --display sdr-100nit-rec709" "lut --method smits -o $TMP/t.cube" \
+    "ocio-config -o $TMP/cfg" "render soap-bubbles --width 8 --height 6 --spp 1 -q -o $TMP/t.png" \
+    "gallery -o $TMP/gallery -q"; do
+    for threads in -1 1048577 two 1.5; do
+        # shellcheck disable=SC2086  # the arguments are words
+        run '' $args --threads "$threads"
+        expect_status 2
+        expect_stderr_has "--threads"
+        expect_stderr_has "allowed: 0 to 1048576"
+    done
+done
+# The bound itself is a number of threads to ask for (irid uses what the machine has).
+run $'0.5,0.5,0.5\n' clip --method smits --threads 1048576
+expect_output $'R,G,B\n0.5,0.5,0.5\n'
+
+# === 11. Space names in any case, as display names (issue 37, item 9) =========================
+
+run $'1,1,1\n' convert --from SRGB-Linear --to XYZ
+expect_close "$D65_XYZ" 1e-12
+run $'1,1,1\n' convert --from srgb-linear --to xyz
+slurp lower "$TMP/out"
+for args in "convert --from sRGB --to LAB" "convert --from Display-P3 --to OkLCh" "clip --method smits --from SRGB --to Display-P3" \
+    "display --display sdr-100nit-rec709 --to SRGB" "display --display custom:peak=1000,limiting=Display-P3,encoding=Rec2100-PQ --to P3-D65-PQ" \
+    "display --display hdr-1000nit-p3-d65 --inverse --from P3-D65-PQ --to ACEScg"; do
+    lowered=${args,,}
+    # shellcheck disable=SC2086  # the arguments are words
+    run $'0.5,0.4,0.3\n' $lowered
+    slurp want "$TMP/out"
+    # shellcheck disable=SC2086
+    run $'0.5,0.4,0.3\n' $args
+    expect_output "$want"
+done
+run "" film --layer water:300 --color --rgb Display-P3
+expect_status 0
+expect_stdout_has "R_linear"
+run '' lut --method smits --from ACEScg-Linear --to SRGB --size 5 -o "$TMP/case.cube"
+expect_status 0
+run '' ocio-config --from ACEScg-Linear --to SRGB --methods clamp --size 5 --aces2 none -o "$TMP/case-cfg"
+expect_status 0
+# An unknown name still lists the canonical names.
+run $'1,1,1\n' convert --from SRGBX --to xyz
+expect_status 2
+expect_stderr_has "srgb, srgb-linear"
+
 # ===========================================================================================
 
 echo "$passed passed, $failed failed"

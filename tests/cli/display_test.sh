@@ -77,12 +77,40 @@ expect_stdout_has $'\n1,1,1'
 run $'0.5,0.5,0.5\n' convert --from rec1886 --to rec1886-linear
 expect_close "0.18946457081379978,0.18946457081379978,0.18946457081379978" 1e-12
 
+# --- rec2100-hlg (issue 37, item 7): BT.2100 HLG on a 1000 cd/m² display; the HDR reference white
+# 203 cd/m² is a 75 % signal (ITU-R BT.2408), 1000 cd/m² is 1 ----------------------------------------
+run $'2.03,2.03,2.03\n10,10,10\n' convert --from rec2100-hlg-linear --to rec2100-hlg
+expect_close $'0.75,0.75,0.75\n1,1,1' 1e-3
+run $'0.5,0.5,0.5\n' convert --from REC2100-HLG --to rec2100-hlg-linear
+expect_close "0.50697028,0.50697028,0.50697028" 1e-7   # 1000 (1/12)^1.2 cd/m²
+run $'0.5,0.4,0.3\n' display --display hdr-1000nit-rec2020 --to rec2100-hlg
+expect_status 0
+
 # --- a custom display: the built-in one it repeats ------------------------------------------------
 run $'0.5,0.4,0.3\n' display --display custom:peak=1000,limiting=display-p3
 expect_status 0
 custom=$(cat "$TMP/out")
 run $'0.5,0.4,0.3\n' display --display hdr-1000nit-p3-d65
 if [[ "$(cat "$TMP/out")" == "$custom" ]]; then pass; else fail "custom display equals its built-in" "$custom"; fi
+# Every form of the white the message names works, x,y included (issue 37, item 4), and the XYZ
+# displays have custom twins that say whether they scale the white (item 5).
+run $'0.5,0.4,0.3\n' display --display sdr-100nit-rec709-d60-in-rec2020-d65
+slurp builtin "$TMP/out"
+for white in aces 0.32168,0.33767 0.32168:0.33767; do
+    run $'0.5,0.4,0.3\n' display --display "custom:peak=100,limiting=srgb,white=$white,encoding=rec2020"
+    expect_output "$builtin"
+done
+run $'0.5,0.4,0.3\n' display --display sdr-100nit-p3-d60-in-xyz-e
+slurp builtin "$TMP/out"
+run $'0.5,0.4,0.3\n' display --display custom:peak=100,limiting=p3-d65,white=aces,encoding=xyz,scale-white=no
+expect_output "$builtin"
+run $'0.5,0.4,0.3\n' display --display hdr-300nit-p3-d60-in-xyz-e
+slurp builtin "$TMP/out"
+run $'0.5,0.4,0.3\n' display --display custom:peak=625,limiting=p3-d65,white=aces,encoding=xyz,linear-scale=0.48
+expect_output "$builtin"
+run $'0.5,0.4,0.3\n' display --display custom:peak=100,limiting=srgb,white=blue
+expect_status 2
+expect_stderr_has "white=0.3127,0.329"
 run $'0.5,0.4,0.3\n' display --display custom:peak=50,limiting=srgb
 expect_status 2
 expect_stderr_has "100 to 10000"

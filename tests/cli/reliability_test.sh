@@ -204,6 +204,38 @@ expect_stderr_has "<stdin>:1: field 2 'abc' is not a number"
 run $'R,G,B\n0.1,0.2,0.3\n' clip --method smits
 expect_output $'R,G,B\n0.1,0.2,0.3\n'
 
+# A first line is a header only when it is one (numeric_table.h): a name for each column, each
+# beginning with a letter. Numbers with other separators, or one name where three columns are
+# read, are data, and an error naming line 1 and what the line may hold; on every command that
+# reads CSV (issue 37, item 1).
+for args in "display --display sdr-100nit-rec709" "convert --from srgb --to lab" "clip --method smits"; do
+    for line in '0.1;0.2;0.3' '0.1 0.2 0.3' 'R;G;B' '#R,G,B' 'X,Y'; do
+        # shellcheck disable=SC2086  # the arguments are words
+        run "$line"$'\n' $args
+        expect_bad_data 1
+        expect_stderr_has "or a header of 3 names"
+    done
+    # shellcheck disable=SC2086
+    run $'R,G,B\n0.1,0.2,0.3\n' $args
+    expect_status 0
+    # A header of two names above rows of three numbers does not name the columns.
+    # shellcheck disable=SC2086
+    run $'X,Y\n0.1,0.2,0.3\n' $args
+    expect_bad_data 1
+done
+run $'0.1;0.2;0.3;0.4;0.5;0.6\n' delta-e --metric ciede2000
+expect_bad_data 1
+expect_stderr_has "field 1 '0.1;0.2;0.3;0.4;0.5;0.6' is not a number; line 1 holds 6 numbers separated by commas, or a header of 6 names"
+run $'L1,a1,b1,L2,a2,b2\n50,0,0,50,0,0\n' delta-e --metric ciede2000
+expect_output $'delta_e\n0\n'
+run $'400;0.5\n500;0.5\n' xyz
+expect_bad_data 1
+expect_stderr_has "at least 2 numbers separated by commas, or a header of at least 2 names"
+run $'wavelength_nm,grey\n400,0.5\n700,0.5\n' xyz
+expect_status 0
+run $'λ,grey\n400,0.5\n700,0.5\n' xyz
+expect_status 0
+
 # A folder or a closed standard input is a read error, not empty input.
 sh_run '"$IRID" convert --from srgb --to lab < /'
 expect_status 1

@@ -2,12 +2,16 @@
 // and the batch paths (the SIMD linear → Oklab kernel among them) against the per-colour one.
 
 #include <irid/color/convert.h>
+#include <irid/error.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace irid {
@@ -89,6 +93,37 @@ TEST(Converter, BatchOklabSpecialValues) {
         }
     }
     EXPECT_EQ(v[0], 0.0);  // black is exactly black
+}
+
+
+TEST(ColorSpaceNames, AreFoundInAnyCaseAndNamedCanonically) {
+    // Display names are found in any case (aces2_display.h); space names too (issue 37, item 9),
+    // ASCII letters only, and the space found says its canonical (lower-case) name.
+    const std::pair<const char*, const char*> names[] = {
+        {"SRGB", "srgb"},           {"sRGB", "srgb"},
+        {"Display-P3", "display-p3"}, {"ACEScg-Linear", "acescg-linear"},
+        {"XYZ", "xyz"},             {"OkLab", "oklab"},
+        {"Rec2100-PQ", "rec2100-pq"}, {"ACEScct", "acescct"},
+        {"AdObE-rGb-LINEAR", "adobe-rgb-linear"},
+    };
+    for (const auto& [given, canonical] : names) {
+        const std::optional<ColorSpace> s = find_color_space(given);
+        ASSERT_TRUE(s.has_value()) << given;
+        EXPECT_EQ(color_space_name(*s), canonical) << given;
+        EXPECT_EQ(*s, color_space(canonical)) << given;
+    }
+    EXPECT_EQ(find_rgb_space("ACESCG"), &acescg());
+    EXPECT_EQ(find_rgb_space("P3-D65-PQ"), &p3_d65_pq());
+    EXPECT_FALSE(find_color_space("srgb-lin").has_value());
+    EXPECT_FALSE(find_color_space("s rgb").has_value());
+    // An unknown name is refused with the canonical names listed.
+    try {
+        (void)color_space("SRGBX");
+        ADD_FAILURE() << "no error";
+    } catch (const UnknownNameError& e) {
+        EXPECT_NE(std::string(e.what()).find("'SRGBX'"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("srgb, srgb-linear"), std::string::npos);
+    }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -372,7 +373,7 @@ TEST(RgbSpace, DisplayEncodingsAreNamedSpacesButNotWorkingSpaces) {
         EXPECT_EQ(find_rgb_space(s->name()), s);
         for (const RgbSpace* w : builtin_rgb_spaces()) EXPECT_NE(w, s);
     }
-    EXPECT_EQ(display_rgb_spaces().size(), 5U);
+    EXPECT_EQ(display_rgb_spaces().size(), 6U);
 }
 
 TEST(TransferFunction, AcesCctMatchesS2016001) {
@@ -411,6 +412,71 @@ TEST(RgbSpace, AcesCctIsAP1WithTheAcesWhiteAndNamedButNoWorkingSpace) {
     for (const RgbSpace* w : builtin_rgb_spaces()) EXPECT_NE(w, &s);
     const std::vector<std::string> names = rgb_space_names();
     EXPECT_NE(std::find(names.begin(), names.end(), "acescct"), names.end());
+}
+
+
+// ITU-R BT.2100-2 Table 5: a = 0.17883277, b = 1 - 4a, c = 0.5 - a ln(4a); the OETF and its
+// inverse, written here from the table for the tests.
+constexpr double hlg_a = 0.17883277;
+double bt2100_oetf(double e) {
+    return e <= 1.0 / 12.0 ? std::sqrt(3.0 * e) : hlg_a * std::log(12.0 * e - (1.0 - 4.0 * hlg_a)) +
+                                                      0.5 - hlg_a * std::log(4.0 * hlg_a);
+}
+
+TEST(RgbSpace, Rec2100HlgIsBt2100sHlgOnAThousandNitDisplay) {
+    const RgbSpace& hlg = rec2100_hlg();
+    EXPECT_EQ(find_rgb_space("rec2100-hlg"), &hlg);
+    EXPECT_EQ(hlg.transfer().kind(), TransferFunction::Kind::hlg);
+    EXPECT_FALSE(hlg.transfer().parameters().has_value());
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) EXPECT_EQ(hlg.to_xyz_matrix()[i][j], rec2020().to_xyz_matrix()[i][j]);
+    // Signal 1 is the nominal peak, 1000 cd/m² (linear 10); signal 0.5 is scene light 1/12, shown
+    // at 1000 (1/12)^1.2 cd/m² (system gamma 1.2 at 1000 cd/m², Table 5 note 5b).
+    EXPECT_NEAR(hlg.decode({1.0, 1.0, 1.0}).g, 10.0, 1e-12);
+    // (Table 5's a, b, c, given to 8 decimals, put the OETF of E = 1 at 1 - 4.9e-9.)
+    EXPECT_NEAR(hlg.encode({10.0, 10.0, 10.0}).b, 1.0, 1e-8);
+    EXPECT_NEAR(hlg.decode({0.5, 0.5, 0.5}).r, 10.0 * std::pow(1.0 / 12.0, 1.2), 1e-12);
+    // ITU-R BT.2408-7 §2.2: the HDR reference white, 203 cd/m², is an HLG signal of 75 %.
+    EXPECT_NEAR(hlg.encode({2.03, 2.03, 2.03}).r, 0.75, 0.001);
+    EXPECT_NEAR(hlg.decode({0.75, 0.75, 0.75}).r * 100.0, 203.0, 1.0);
+    // The single-value curve is the neutral axis.
+    EXPECT_EQ(hlg.transfer().encode(2.03), hlg.encode({2.03, 2.03, 2.03}).g);
+    EXPECT_EQ(hlg.transfer().decode(0.75), hlg.decode({0.75, 0.75, 0.75}).b);
+    // The OOTF acts on luminance Y_S = 0.2627 R + 0.6780 G + 0.0593 B (Table 5), not per channel:
+    // a pure red of display light F_R is scene light E_R = F_R / (L_W Y_S^0.2) with Y_S^1.2 =
+    // 0.2627 F_R / L_W, and its signal differs from the same value of a grey.
+    for (const double red : {0.05, 0.8, 2.0}) {
+        const double f = 100.0 * red / 1000.0;              // F_D / L_W
+        const double ys = std::pow(0.2627 * f, 1.0 / 1.2);  // Y_D / L_W = Y_S^γ
+        const double e = f / std::pow(ys, 0.2);
+        const Rgb signal = hlg.encode({red, 0.0, 0.0});
+        EXPECT_NEAR(signal.r, bt2100_oetf(std::min(e, 1.0)), 1e-12) << red;
+        EXPECT_EQ(signal.g, 0.0);
+        EXPECT_GT(std::abs(signal.r - hlg.transfer().encode(red)), 0.01) << red;
+        EXPECT_NEAR(hlg.decode(signal).r, e <= 1.0 ? red : hlg.decode(signal).r, 1e-12) << red;
+    }
+    // Every signal round-trips: decode, then encode, gives it back.
+    std::mt19937 rng(2100);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int i = 0; i < 2000; ++i) {
+        const Rgb s{unit(rng), unit(rng), unit(rng)};
+        const Rgb back = hlg.encode(hlg.decode(s));
+        EXPECT_NEAR(back.r, s.r, 1e-9);
+        EXPECT_NEAR(back.g, s.g, 1e-9);
+        EXPECT_NEAR(back.b, s.b, 1e-9);
+    }
+    // Not mirrored: a negative channel is 0 cd/m² (and NaN too); beyond what the signal holds
+    // (above 1000 cd/m² of white, or scene light above 1) it is clamped; signals to [0, 1].
+    EXPECT_EQ(hlg.encode({-0.5, 1.0, 1.0}).r, 0.0);
+    EXPECT_EQ(hlg.encode({-0.5, 1.0, 1.0}).g, hlg.encode({0.0, 1.0, 1.0}).g);
+    EXPECT_EQ(hlg.encode({std::nan(""), 1.0, 1.0}).g, hlg.encode({0.0, 1.0, 1.0}).g);
+    EXPECT_EQ(hlg.encode({50.0, 50.0, 50.0}).r, hlg.encode({10.0, 10.0, 10.0}).r);
+    EXPECT_NEAR(hlg.encode({50.0, 50.0, 50.0}).r, 1.0, 1e-8);
+    EXPECT_EQ(hlg.encode({0.0, 0.0, 9.0}).b, hlg.encode({10.0, 10.0, 10.0}).b);  // blue alone is never that bright
+    EXPECT_EQ(hlg.decode({1.5, 1.5, 1.5}).r, hlg.decode({1.0, 1.0, 1.0}).r);
+    EXPECT_EQ(hlg.decode({-0.5, -0.5, -0.5}).r, 0.0);
+    // A display encoding, not a working space.
+    for (const RgbSpace* w : builtin_rgb_spaces()) EXPECT_NE(w, &hlg);
 }
 
 }  // namespace

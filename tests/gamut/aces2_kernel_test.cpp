@@ -294,13 +294,51 @@ TEST(Aces2Kernel, HostileValuesGiveTheDoublePathsFiniteResults) {
             }
         }
     }
-    // The double path takes a non-finite channel as 0 (DisplayTransform::operator()).
-    const Aces2Output out(aces2_display("sdr-100nit-rec709"));
-    const Aces2Kernel kernel(out, false);
-    const std::array<float, 6> a{nan, inf, -inf, 0.0f, 0.0f, 0.0f};
-    std::array<float, 6> got{};
-    (void)kernel.run(a, got);
-    for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(got[c], got[3 + c]);
+}
+
+TEST(Aces2Kernel, PlusInfinityIsTheBrightestAndNanAndMinusInfinityAreZero) {
+    // +Inf (a half float's overflow) is taken as 65504, beyond every forward limit: a blown-out
+    // white is the display's peak white, not black; -Inf and NaN are 0 (issue 37, item 3). The
+    // kernel, its reference, the double chain and DisplayTransform take them alike, forward and
+    // inverse.
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    for (const char* name : {"sdr-100nit-rec709", "hdr-1000nit-p3-d65", "hdr-4000nit-rec2020"}) {
+        const Aces2Output out(aces2_display(name));
+        const Xyz white = out.forward({inf, inf, inf});
+        const double peak_y = out.spec().peak_nits / 100.0 * out.output_scale();
+        EXPECT_NEAR(white.Y, peak_y, 1e-9 * peak_y) << name;
+        EXPECT_EQ(white.X, out.forward({65504.0, 65504.0, 65504.0}).X) << name;
+        const Xyz a = out.forward({nan, inf, -inf}), b = out.forward({0.0, 65504.0, 0.0});
+        EXPECT_EQ(a.X, b.X) << name;
+        EXPECT_EQ(a.Y, b.Y) << name;
+        EXPECT_EQ(a.Z, b.Z) << name;
+        const Vec3 back = out.inverse({inf, inf, inf}), clamped = out.inverse({65504.0, 65504.0, 65504.0});
+        EXPECT_EQ(back[1], clamped[1]) << name;
+        for (const bool inverse : {false, true}) {
+            const Aces2Kernel kernel(out, inverse);
+            const std::array<float, 9> in{inf, inf, inf, nan, inf, -inf, 0.18f, inf, 0.5f};
+            const std::array<float, 9> as{65504.0f, 65504.0f, 65504.0f, 0.0f, 65504.0f, 0.0f, 0.18f, 65504.0f, 0.5f};
+            std::array<float, 9> got{}, want{};
+            (void)kernel.run(in, got);
+            (void)kernel.run(as, want);
+            for (std::size_t i = 0; i < 9; ++i) EXPECT_EQ(got[i], want[i]) << name << " " << i;
+            for (std::size_t i = 0; i < 9; i += 3) {
+                const Vec3 r = kernel.reference({in[i], in[i + 1], in[i + 2]});
+                const Vec3 s = kernel.reference({as[i], as[i + 1], as[i + 2]});
+                for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(r[c], s[c]) << name << " " << i;
+            }
+            if (!inverse) {
+                EXPECT_NEAR(got[1], peak_y, tolerance * peak_y) << name;
+            }
+        }
+        // DisplayTransform, in double and in float, from another space too: +Inf in every
+        // channel of linear sRGB is peak white.
+        const DisplayTransform t(DisplayTransformOptions{.display = name, .source = "srgb-linear", .target = "xyz"});
+        EXPECT_NEAR(t({inf, inf, inf})[1], peak_y, 1e-9 * peak_y) << name;
+        std::vector<float> f{inf, inf, inf};
+        t.apply(f, f);
+        EXPECT_NEAR(f[1], peak_y, tolerance * peak_y) << name;
+    }
 }
 
 TEST(Aces2Kernel, ResultsAreTheSameBytesForAnyThreadCountSplitAndTail) {

@@ -1,5 +1,7 @@
 // The ACES 2.0 rendering against OpenColorIO's published test vectors (data/ocio-aces2), at
 // OpenColorIO's tolerance: |error| / max(|expected|, 1) <= 1e-5 forward.
+#include <irid/color/numeric_table.h>
+#include <irid/color/rgb.h>
 #include <irid/color/spaces.h>
 #include <irid/error.h>
 #include <irid/gamut/aces2.h>
@@ -210,30 +212,82 @@ TEST(Aces2Display, NamesAreShortOrOpenColorIOsAndUnknownOnesListTheKnown) {
     }
 }
 
-TEST(Aces2Display, ACustomDisplayOfABuiltInOnesPartsIsThatDisplay) {
-    const std::pair<const char*, const char*> pairs[] = {
-        {"custom:peak=1000,limiting=display-p3,encoding=display-p3", "hdr-1000nit-p3-d65"},
-        {"CUSTOM:peak=1000,limiting=display-p3", "hdr-1000nit-p3-d65"},
-        {"custom:peak=100,limiting=srgb,white=aces,encoding=rec2020", "sdr-100nit-rec709-d60-in-rec2020-d65"},
-        {"custom:encoding=rec2100-pq,white=0.32168:0.33767,peak=4000,limiting=rec2020",
-         "hdr-4000nit-rec2020-d60-in-rec2020-d65"},
+/// The custom form of a built-in display, from its parts as a user reads them in `irid display
+/// --list` (peak rendered, limiting primaries and white, encoding, linear scale, white scaling):
+/// the first named RGB space of those primaries and white, and the white given as `aces` or as
+/// x,y.
+std::string custom_name_of(const Aces2DisplaySpec& d, bool white_as_numbers) {
+    const auto same = [](const Xy& a, const Xy& b) { return a.x == b.x && a.y == b.y; };
+    const auto space_of = [&](const RgbPrimaries& p, const Xy* white) -> std::string {
+        for (const std::string& name : rgb_space_names()) {
+            const RgbSpace& s = *find_rgb_space(name);
+            const RgbPrimaries& q = s.primaries();
+            if (same(p.red, q.red) && same(p.green, q.green) && same(p.blue, q.blue) &&
+                (white == nullptr || same(*white, s.white())))
+                return name;
+        }
+        ADD_FAILURE() << d.name << ": no named space of its primaries";
+        return "?";
     };
+    std::string name = "custom:peak=" + format_shortest(d.peak_nits) + ",limiting=" + space_of(d.limiting, nullptr);
+    const RgbSpace& limiting = *find_rgb_space(space_of(d.limiting, nullptr));
+    if (!same(limiting.white(), d.limiting_white)) {
+        name += white_as_numbers ? ",white=" + format_shortest(d.limiting_white.x) + "," +
+                                       format_shortest(d.limiting_white.y)
+                                 : std::string(",white=aces");
+    }
+    name += ",encoding=" + (d.encoding_xyz ? std::string("xyz") : space_of(d.encoding, &d.encoding_white));
+    if (d.linear_scale != 1.0) name += ",linear-scale=" + format_shortest(d.linear_scale);
+    if (!d.scale_white) name += ",scale-white=no";
+    return name;
+}
+
+TEST(Aces2Display, ACustomDisplayOfABuiltInOnesPartsIsThatDisplay) {
+    // Every built-in display, both XYZ ones and the cinema presets included (issue 37, item 5):
+    // OpenColorIO's SDR-100nit-P3-D60-in-XYZ-E does not scale its white and its 300 cd/m²
+    // sibling does, so the custom form says it (scale-white), as it says the linear scale.
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> scene(-0.5, 64.0);
+    ASSERT_EQ(aces2_displays().size(), 31U);
+    for (const Aces2DisplaySpec& builtin : aces2_displays()) {
+        for (const bool numbers : {false, true}) {
+            const std::string custom = custom_name_of(builtin, numbers);
+            const Aces2Output a(aces2_display(custom)), b(builtin);
+            EXPECT_EQ(a.output_scale(), b.output_scale()) << custom;
+            for (int i = 0; i < 200; ++i) {
+                const Vec3 aces{scene(rng), scene(rng), scene(rng)};
+                const Xyz x = a.forward(aces), y = b.forward(aces);
+                ASSERT_EQ(x.X, y.X) << custom;
+                ASSERT_EQ(x.Y, y.Y) << custom;
+                ASSERT_EQ(x.Z, y.Z) << custom;
+            }
+            // The custom display's own name reads back as itself.
+            EXPECT_EQ(aces2_display(aces2_display(custom).name).name, aces2_display(custom).name) << custom;
+        }
+    }
+    const std::pair<const char*, const char*> pairs[] = {
+        {"CUSTOM:peak=1000,limiting=display-p3", "hdr-1000nit-p3-d65"},
+        {"custom:encoding=rec2100-pq,white=0.32168:0.33767,peak=4000,limiting=rec2020",
+         "hdr-4000nit-rec2020-d60-in-rec2020-d65"},
+        // The white as x,y, the form white_point_xy and the error message give (issue 37, item 4).
+        {"custom:peak=100,limiting=srgb,white=0.32168,0.33767,encoding=rec2020", "sdr-100nit-rec709-d60-in-rec2020-d65"},
+        {"custom:peak=100,limiting=srgb,encoding=rec2020,white=0.32168,0.33767", "sdr-100nit-rec709-d60-in-rec2020-d65"},
+        {"custom:peak=100,limiting=srgb,white=aces,encoding=rec2020", "sdr-100nit-rec709-d60-in-rec2020-d65"},
+    };
     for (const auto& [custom, builtin] : pairs) {
         const Aces2Output a(aces2_display(custom)), b(aces2_display(builtin));
         EXPECT_EQ(a.output_scale(), b.output_scale()) << custom;
-        for (int i = 0; i < 200; ++i) {
-            const Vec3 aces{scene(rng), scene(rng), scene(rng)};
-            const Xyz x = a.forward(aces), y = b.forward(aces);
-            ASSERT_EQ(x.X, y.X) << custom;
-            ASSERT_EQ(x.Y, y.Y) << custom;
-            ASSERT_EQ(x.Z, y.Z) << custom;
-        }
+        const Xyz x = a.forward({0.5, 0.4, 0.3}), y = b.forward({0.5, 0.4, 0.3});
+        EXPECT_EQ(x.X, y.X) << custom;
+        EXPECT_EQ(x.Z, y.Z) << custom;
     }
     // Its name is the form it reads, normalised.
     EXPECT_EQ(aces2_display("custom:limiting=srgb,peak=600").name, "custom:peak=600,limiting=srgb,encoding=srgb");
     EXPECT_EQ(aces2_display("custom:peak=600,limiting=srgb,encoding=xyz").encoding_xyz, true);
+    EXPECT_EQ(aces2_display("custom:peak=225,limiting=p3-d65,linear-scale=0.48,scale-white=yes").name,
+              "custom:peak=225,limiting=p3-d65,encoding=p3-d65,linear-scale=0.48");
+    EXPECT_EQ(aces2_display("custom:peak=100,limiting=p3-d65,white=aces,encoding=xyz,scale-white=no").name,
+              "custom:peak=100,limiting=p3-d65,white=0.32168:0.33767,encoding=xyz,scale-white=no");
 }
 
 TEST(Aces2Display, AMalformedCustomDisplaySaysWhatIsWrong) {
@@ -251,6 +305,12 @@ TEST(Aces2Display, AMalformedCustomDisplaySaysWhatIsWrong) {
         {"custom:peak=100,,limiting=srgb", "not key=value"},
         {"custom:peak=100,limiting=srgb,white=blue", "white"},
         {"custom:peak=100,limiting=srgb,white=0.9:0.9", "white"},
+        {"custom:peak=100,limiting=srgb,white=0.3127", "white=0.3127,0.329"},
+        {"custom:peak=100,limiting=srgb,white=0.3127,", "white=0.3127,0.329"},
+        {"custom:peak=100,limiting=srgb,white=0.3127,abc", "white=0.3127,0.329"},
+        {"custom:peak=100,limiting=srgb,linear-scale=0", "linear-scale"},
+        {"custom:peak=100,limiting=srgb,linear-scale=1.5", "(0, 1]"},
+        {"custom:peak=100,limiting=srgb,scale-white=maybe", "yes or no"},
     };
     for (const auto& [name, expected] : bad) {
         try {
@@ -258,6 +318,17 @@ TEST(Aces2Display, AMalformedCustomDisplaySaysWhatIsWrong) {
             ADD_FAILURE() << name << ": no error";
         } catch (const Error& e) {
             EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << name << ": " << e.what();
+        }
+    }
+    // Every form the white's message suggests is one it reads.
+    try {
+        (void)aces2_display("custom:peak=100,limiting=srgb,white=blue");
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        for (const char* form : {"white=D65", "white=aces", "white=0.3127,0.329", "white=0.3127:0.329"}) {
+            EXPECT_NE(m.find(form), std::string::npos) << m;
+            EXPECT_NO_THROW((void)aces2_display(std::string("custom:peak=100,limiting=srgb,") + form)) << form;
         }
     }
     try {

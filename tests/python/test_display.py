@@ -75,3 +75,19 @@ def test_names_and_values_are_checked():
         irid.display_transform([0.1, 0.2], display="sdr-100nit-rec709")
     with pytest.raises(ValueError):
         irid.display_transform([0.1, 0.2, 0.3], display="sdr-100nit-rec709", threads=-1)
+
+
+def test_space_names_are_taken_in_any_case():
+    # As display names are (issue 37, item 9): the library's lookup, for every function that
+    # names a space; the default target of clip is the source's space in any case too.
+    rgb = np.array([[0.5, 0.4, 0.3], [1.2, 0.1, -0.05]])
+    assert np.array_equal(irid.convert(rgb, "SRGB", "OkLab"), irid.convert(rgb, "srgb", "oklab"))
+    assert np.array_equal(irid.display_transform(rgb, display="SDR-100nit-P3-D65", target="Display-P3"),
+                          irid.display_transform(rgb, display="sdr-100nit-p3-d65", target="display-p3"))
+    assert np.array_equal(irid.display_transform(rgb, display="hdr-1000nit-rec2020", source="ACEScg",
+                                                 target="Rec2100-PQ"),
+                          irid.display_transform(rgb, display="hdr-1000nit-rec2020", source="acescg",
+                                                 target="rec2100-pq"))
+    assert np.array_equal(irid.clip(rgb, "smits", source="SRGB"), irid.clip(rgb, "smits", source="srgb"))
+    with pytest.raises(KeyError, match="srgb, srgb-linear"):
+        irid.convert(rgb, "SRGBX", "xyz")

@@ -115,7 +115,7 @@ def test_compression_is_written_and_unknown_names_refused(tmp_path):
 
 # --- write_image writes what is asked, or refuses ---------------------------------------------
 
-@pytest.mark.parametrize("name", ["display_p3", "Display-P3", "nope", "sRGB"])
+@pytest.mark.parametrize("name", ["display_p3", "Display P3", "nope", "s-RGB"])
 def test_an_unknown_space_name_is_a_key_error(tmp_path, name):
     with pytest.raises(KeyError, match="unknown.*tag=False"):
         irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space=name)
@@ -124,6 +124,14 @@ def test_an_unknown_space_name_is_a_key_error(tmp_path, name):
     irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space=name, tag=False)
     _, meta = irid.read_image(tmp_path / "a.png")
     assert meta["color_space"] == name and meta["icc_profile"] is None
+
+
+@pytest.mark.parametrize("name, canonical", [("Display-P3", "display-p3"), ("sRGB", "srgb")])
+def test_a_space_name_in_another_case_tags_the_file_with_its_canonical_name(tmp_path, name, canonical):
+    # Space names are found in any case (issue 37, item 9), and written as irid names them.
+    irid.write_image(tmp_path / "a.png", np.zeros((2, 2, 3)), color_space=name)
+    _, meta = irid.read_image(tmp_path / "a.png")
+    assert meta["color_space"] == canonical and meta["icc_profile"] == irid.icc_profile(canonical)
 
 
 def test_a_space_that_is_not_rgb_cannot_tag_a_file(tmp_path):

@@ -59,6 +59,12 @@ def test_material_csv(tmp_path):
     assert m.index([500.0])[0] == pytest.approx(1.5 + 0.05j)
     with pytest.raises(OSError):
         irid.Material.read_csv(str(tmp_path / "missing.csv"))
+    # A first line of numbers with other separators is data, and an error at line 1 (not a
+    # header over an empty table); a header names the three columns (issue 37, item 1).
+    for text in ["400;1.4;0\n", "400 1.4 0\n600 1.6 0.1\n", "n;k\n400,1.4,0\n"]:
+        p.write_text(text)
+        with pytest.raises(ValueError, match=r"m\.csv:1: field 1 .* is not a number; line 1 holds 3 numbers"):
+            irid.Material.read_csv(str(p))
 
 
 def test_material_errors():

@@ -240,7 +240,7 @@ void add_clip_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--adaptation", o->adaptation,
                     "Chromatic adaptation where whites differ: bradford, cat02, von-kries, none")
         ->capture_default_str();
-    cmd->add_option("--threads", o->threads, "Threads for images (0: all)")->capture_default_str();
+    add_threads_option(cmd, o->threads, "Threads for images (0: all)");
     o->bits_option =
         cmd->add_option("--bits", o->bits,
                         "Bits per sample of PNG and TIFF output: 8 or 16 (default: 16 for a 16-bit "

@@ -11,12 +11,14 @@
 // from irid_figures (clip_sets.h).
 #include "../cli_common.h"
 
+#include <irid/color/convert.h>
 #include <irid/color/rgb.h>
 #include <irid/error.h>
 #include <irid/figures/clip_sets.h>
 #include <irid/gamut/clip.h>
 #include <irid/gamut/report.h>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,11 +34,7 @@ struct ClipReportCommand {
 /// An RGB space by its name as `irid convert` writes it: NAME (encoded) or NAME-linear; both
 /// give the same gamut.
 const RgbSpace& parse_destination(const std::string& name) {
-    if (const RgbSpace* s = find_rgb_space(name)) return *s;
-    constexpr std::string_view suffix = "-linear";
-    if (name.size() > suffix.size() && name.ends_with(suffix)) {
-        if (const RgbSpace* s = find_rgb_space(name.substr(0, name.size() - suffix.size()))) return *s;
-    }
+    if (const std::optional<ColorSpace> s = find_color_space(name); s && s->is_rgb()) return *s->rgb;
     std::vector<std::string> names;
     for (const RgbSpace* s : builtin_rgb_spaces()) {
         names.push_back(s->name());

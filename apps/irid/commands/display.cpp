@@ -75,7 +75,7 @@ int run_display_image(const DisplayOptions& o) {
         plan = plan_display_image(o.view, o.display, o.to.empty() ? std::nullopt : std::optional(o.to), format);
         if (!o.from.empty()) from = parse_space(o.from, "--from");
     } catch (const Error& e) {
-        throw UsageError(e.what());  // an unknown name, an output format, a --to that is no RGB space
+        throw UsageError(e.what());  // an unknown name, an output format, a --to that is no RGB space or xyz
     }
     if (o.bits != 0) {
         if (!plan.encoded) throw UsageError("--bits applies to PNG and TIFF; " + o.out + " is written as 32-bit float (EXR)");
@@ -98,15 +98,9 @@ int run_display_image(const DisplayOptions& o) {
     } catch (const ImageSourceConflict& e) {
         throw UsageError(e.what());
     }
-    for (const std::string& note : report.source.notes) fmt::print(stderr, "irid display: note: {}\n", note);
-    if (report.clipped > 0) {
-        fmt::print(stderr,
-                   "irid display: note: {} pixels are brighter than {} holds (a channel above 1, 100 cd/m²) and "
-                   "are clipped; a PQ encoding (--to rec2100-pq, p3-d65-pq) or an EXR keeps them\n",
-                   report.clipped, plan.encoding->name());
-    }
+    for (const std::string& note : report.notes) fmt::print(stderr, "irid display: note: {}\n", note);
     image.description = fmt::format("irid display --view {} --display {} --from {} --to {}; colour space {} ({})",
-                                    plan.view, plan.display.name, report.source.described, plan.encoding->name(),
+                                    plan.view, plan.display.name, report.source.described, plan.encoding_name(),
                                     image.color_space, plan.encoded ? "encoded" : "linear, 1.0 = 100 cd/m2");
     io::write_image(o.out, image, io::ImageEncoding{.bits = plan.bits, .compression = {}});
     return exit_success;
@@ -163,21 +157,22 @@ void add_display_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--from", options->from,
                     "Input space (default aces2065-1; with --inverse xyz): " + join(space_names()));
     cmd->add_option("--to", options->to,
-                    "Output space: xyz (1.0 = 100 cd/m²) or an RGB space (default xyz; with --inverse aces2065-1)");
+                    "Output space: xyz (1.0 = 100 cd/m²) or an RGB space (default xyz; with --inverse aces2065-1); "
+                    "for an image a display encoding, or xyz (EXR only)");
     cmd->add_flag("--inverse", options->inverse, "Display values back to scene values");
     cmd->add_flag("--list", options->list,
                   "List the displays: peak, limiting and encoding primaries and whites, and the encoding of "
                   "their files");
     cmd->add_option("--bits", options->bits,
                     "Bits per sample of PNG and TIFF output: 8 or 16 (default 16 for PQ, else 8)");
-    cmd->add_option("--threads", options->threads, "Threads for images (0: all)")->capture_default_str();
+    add_threads_option(cmd, options->threads, "Threads for images (0: all)");
     cmd->add_option("IN", options->in,
                     "Input image (EXR, or anything OpenImageIO reads) of scene colours: its EXR chromaticities' "
                     "or ICC profile's space, else ACES2065-1; --from overrides it");
     cmd->add_option("OUT", options->out,
                     "Output image of the display's signal: .png, .tif, .tiff (encoded, with the encoding's ICC "
-                    "profile, none for PQ) or .exr (linear, 1.0 = 100 cd/m², with its chromaticities), in --to "
-                    "or the display's own encoding (irid display --list)");
+                    "profile, none for PQ and HLG) or .exr (linear, 1.0 = 100 cd/m², with its chromaticities; CIE XYZ "
+                    "for xyz), in --to or the display's own encoding (irid display --list)");
     cmd->callback([options, &runner] { runner = [options] { return run_display(*options); }; });
 }
 

@@ -57,7 +57,7 @@ void add_gallery_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--spp", o->options.spp, "Samples per pixel of the scenes")->check(whole_number_in(1, 256));
     cmd->add_option("--figure-width", o->options.figure_width, "Figure width in pixels (height 5/8 of it)")
         ->check(whole_number_in(320, 4096));
-    cmd->add_option("--threads", o->options.threads, "Worker threads (0 = all)")->check(whole_number_in(0, 1024));
+    add_threads_option(cmd, o->options.threads, "Worker threads (0: all)");
     cmd->add_option("--page", o->pages, "Link a page already in the folder: FILE=TITLE (repeatable)");
     cmd->add_flag("-q,--quiet", o->quiet, "No progress messages on stderr");
     cmd->callback([o, &runner] { runner = [o] { return run_gallery(*o); }; });

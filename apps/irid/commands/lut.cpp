@@ -217,7 +217,7 @@ void add_lut_command(CLI::App& app, Runner& runner) {
     o->adaptation_option = cmd->add_option("--adaptation", o->adaptation,
                     "Chromatic adaptation where whites differ: bradford, cat02, von-kries, none")
         ->capture_default_str();
-    cmd->add_option("--threads", o->threads, "Threads (0: all)")->capture_default_str();
+    add_threads_option(cmd, o->threads, "Threads (0: all)");
     cmd->add_option("-o,--output", o->out,
                     "The LUT file: .cube (Resolve/Adobe; ffmpeg, OCIO), .clf (Academy/ASC CLF; "
                     "OCIO), .spi3d (Sony; OCIO)");

@@ -126,7 +126,7 @@ void add_ocio_config_command(CLI::App& app, Runner& runner) {
                     "built-in display whose default encoding is --to), none, or displays "
                     "comma-separated (irid display --list)")
         ->capture_default_str();
-    cmd->add_option("--threads", a->threads, "Threads (0: all)")->capture_default_str();
+    add_threads_option(cmd, a->threads, "Threads (0: all)");
     cmd->footer("\nExample: irid ocio-config --from acescg-linear --to srgb -o irid-ocio\n"
                 "  then: ociocheck --iconfig irid-ocio/config.ocio");
     cmd->callback([a, &runner] { runner = [a] { return run_ocio_config(*a); }; });

@@ -139,9 +139,13 @@ int run_render(const RenderCliOptions& o) {
 
     io::Image image = result.display;
     const RgbSpace& space = *find_rgb_space(scene.render.space);
-    if (format == io::ImageFormat::exr) {  // the clipped values, linear
-        for (std::size_t i = 0; i < image.pixels.size(); ++i)
-            image.pixels[i] = static_cast<float>(space.transfer().decode(image.pixels[i]));
+    if (format == io::ImageFormat::exr) {  // the clipped values, linear (whole colours: HLG's curve needs them)
+        for (std::size_t i = 0; i + 2 < image.pixels.size(); i += 3) {
+            const Rgb v = space.decode({image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]});
+            image.pixels[i] = static_cast<float>(v.r);
+            image.pixels[i + 1] = static_cast<float>(v.g);
+            image.pixels[i + 2] = static_cast<float>(v.b);
+        }
     }
     // Every output says its space to other programs: an ICC profile or EXR chromaticities.
     tag_image(image, space, format);
@@ -157,8 +161,9 @@ int run_render(const RenderCliOptions& o) {
     // Both files or neither: each is written whole under a temporary name beside its target,
     // and both are renamed into place only when both are complete.
     io::OutputFile main_file(out);
-    // PQ's 8-bit steps are visible: a PQ display image is written with 16 bits.
-    const bool pq = space.transfer().kind() == TransferFunction::Kind::pq;
+    // PQ's and HLG's 8-bit steps are visible: such a display image is written with 16 bits.
+    const bool pq = space.transfer().kind() == TransferFunction::Kind::pq ||
+                    space.transfer().kind() == TransferFunction::Kind::hlg;
     io::write_image(main_file, image, io::ImageEncoding{.bits = pq ? 16 : 8, .compression = {}});
     if (o.linear) {
         io::Image linear = result.linear;
@@ -201,8 +206,7 @@ void add_render_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--height", o->height, "Image height in pixels")
         ->check(whole_number_in(1, render::max_image_side));
     cmd->add_option("--spp", o->spp, "Samples per pixel")->check(whole_number_in(1, render::max_spp));
-    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")
-        ->check(whole_number_in(0, 1024));
+    add_threads_option(cmd, o->threads, "Worker threads (0: all)");
     // CLI11 2.1 reads "-1" as 2^64 - 1 and saturates numbers beyond 2^64 - 1: check the text.
     cmd->add_option("--seed", o->seed, "Seed of the sampling and of the noise textures")
         ->check(CLI::Validator(

@@ -9,7 +9,9 @@
 //
 // Names: xyz, xyy, luv, lab, lchuv, lchab, oklab, oklch, then for each built-in RGB space NAME
 // (encoded with its transfer function) and NAME-linear (builtin_rgb_spaces(); a linear space
-// such as acescg takes both names for the same values).
+// such as acescg takes both names for the same values). They are found in any case ("sRGB",
+// "XYZ", "ACEScg-Linear": same_name, irid/color/rgb.h); color_space_name() and the lists of
+// names in messages give the canonical lower-case ones.
 
 #include <irid/color/adaptation.h>
 #include <irid/color/matrix.h>

@@ -35,6 +35,12 @@ inline constexpr double pq_peak_nits = 10000.0;
 /// gives), to scene light, clamped to [0, 1].
 [[nodiscard]] std::array<double, 3> hlg_inverse_ootf(const std::array<double, 3>& display, double peak_nits) noexcept;
 
+/// The inverse OOTF without its clamps: display light [cd/m²] to the scene light E that would
+/// show it, which lies outside [0, 1] (a channel of E below 0 or above 1) exactly when the
+/// signal cannot hold the colour; zero when the luminance Y_D is not above 0, NaN taken as 0.
+[[nodiscard]] std::array<double, 3> hlg_scene_light_unclamped(const std::array<double, 3>& display,
+                                                              double peak_nits) noexcept;
+
 /// HLG's EOTF (OOTF of the inverse OETF, black level 0) and its inverse, signal RGB ↔ display
 /// light [cd/m²] on a display of peak L_W.
 [[nodiscard]] std::array<double, 3> hlg_decode(const std::array<double, 3>& signal, double peak_nits) noexcept;

@@ -39,6 +39,17 @@ public:
         /// (a negative one encodes as 0 cd/m², whose signal is 7.3e-7, not 0) and signals to
         /// [0, 1]; NaN encodes as 0 cd/m². The round trip is exact within [0, 100] only.
         pq,
+        /// ITU-R BT.2100-2 HLG (Table 5) as a display encoding with irid's display-light scale,
+        /// linear 1.0 = 100 cd/m², for a display of nominal peak hlg_nominal_peak_nits (1000
+        /// cd/m², system gamma 1.2): display light → scene light through the inverse of the
+        /// reference OOTF, then the OETF. The OOTF acts on the luminance Y_S of all three
+        /// channels (F_D = L_W Y_S^(γ−1) E), so RgbSpace::encode and decode apply it to whole
+        /// colours (hlg_encode, hlg_decode of irid/color/hdr_transfer.h); encode() and decode()
+        /// of one value are the curve on the neutral axis (R = G = B), where Y_S = E: signal 1 is
+        /// linear 10 (1000 cd/m²), 0.75 is 2.03 (BT.2408's reference white, 203 cd/m²). As PQ,
+        /// it is not mirrored: a negative channel is 0 cd/m², display light beyond what the
+        /// signal holds (scene light above 1) is clamped, signals to [0, 1], NaN to 0.
+        hlg,
         /// ACEScct (Academy S-2016-001 §4.4): 10.5402377416545 v + 0.0729055341958355 for
         /// v <= 0.0078125 (2^-7), else (log2 v + 9.72) / 17.52; decoded as its exact inverse
         /// (the standard's clamp of decoded values at 65504, half float's largest, is left out).
@@ -102,6 +113,11 @@ private:
     std::shared_ptr<const std::vector<double>> m_samples;
 };
 
+/// The nominal peak of the HLG display encoding (TransferFunction::Kind::hlg) [cd/m²]: the
+/// reference display of ITU-R BT.2100-2 Table 5 (note 5b: system gamma 1.2 at 1000 cd/m²) and of
+/// ITU-R BT.2408.
+inline constexpr double hlg_nominal_peak_nits = 1000.0;
+
 /// Chromaticities of the three primaries.
 struct RgbPrimaries {
     Xy red, green, blue;
@@ -133,6 +149,7 @@ public:
     [[nodiscard]] Xyz to_xyz(const Rgb& linear) const noexcept;
     /// XYZ (relative to this space's white) → linear RGB, unclipped.
     [[nodiscard]] Rgb from_xyz(const Xyz& c) const noexcept;
+    /// The transfer function on each channel; for HLG on the colour's luminance (Kind::hlg).
     [[nodiscard]] Rgb encode(const Rgb& linear) const noexcept;
     [[nodiscard]] Rgb decode(const Rgb& encoded) const noexcept;
 
@@ -192,11 +209,14 @@ private:
 /// P3 primaries, D65, ST 2084: the HDR mastering display of SMPTE ST 2084 with P3-D65 (as
 /// OpenColorIO's "ST2084-P3-D65 - Display"). Named "p3-d65-pq".
 [[nodiscard]] const RgbSpace& p3_d65_pq();
+/// ITU-R BT.2100-2 HLG: BT.2020 primaries, D65, the HLG OETF with the reference OOTF of a 1000
+/// cd/m² display (TransferFunction::Kind::hlg), display light to signal. Named "rec2100-hlg".
+[[nodiscard]] const RgbSpace& rec2100_hlg();
 
 /// Every built-in working space, in a stable order (the order of the names in messages).
 [[nodiscard]] std::span<const RgbSpace* const> builtin_rgb_spaces();
 /// The display encodings, in a stable order: rec1886, rec1886-rec2020, p3-d65, rec2100-pq,
-/// p3-d65-pq.
+/// p3-d65-pq, rec2100-hlg.
 [[nodiscard]] std::span<const RgbSpace* const> display_rgb_spaces();
 /// The log (grading) encodings: acescct.
 [[nodiscard]] std::span<const RgbSpace* const> log_rgb_spaces();
@@ -204,7 +224,12 @@ private:
 /// names find_rgb_space knows), in that stable order.
 [[nodiscard]] std::vector<std::string> rgb_space_names();
 /// The built-in space with this name ("srgb", "display-p3", "rec2020", "adobe-rgb",
-/// "smpte-c", "ntsc1953", "aces2065-1", "acescg", "acescct", or a display encoding), or nullptr.
+/// "smpte-c", "ntsc1953", "aces2065-1", "acescg", "acescct", or a display encoding), in any case
+/// ("sRGB", "ACEScg"; same_name), or nullptr. The space keeps its canonical lower-case name().
 [[nodiscard]] const RgbSpace* find_rgb_space(std::string_view name) noexcept;
+/// Whether `given` names the lower-case `canonical`: equal but for the case of ASCII letters
+/// (UTF-8 and every other byte compared as they are). How every space is looked up by name, as
+/// displays are (irid/gamut/aces2_display.h).
+[[nodiscard]] bool same_name(std::string_view given, std::string_view canonical) noexcept;
 
 }  // namespace irid

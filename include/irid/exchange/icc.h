@@ -99,6 +99,11 @@ private:
                                                      const std::string& name, const std::string& what);
 /// The 8 chromaticities of a space, as EXR stores them.
 [[nodiscard]] std::array<float, 8> exr_chromaticities(const RgbSpace& space) noexcept;
+/// OpenEXR's chromaticities of CIE XYZ in the R, G and B channels (ImfChromaticities.h, and
+/// "Technical Introduction to OpenEXR", CIE XYZ color): red (1, 0), green (0, 1), blue (0, 0),
+/// white (1/3, 1/3), illuminant E.
+inline constexpr std::array<float, 8> exr_xyz_chromaticities{1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f / 3.0f,
+                                                             1.0f / 3.0f};
 
 /// The built-in space (irid/color/rgb.h) that `space` is, within `tolerance` in every
 /// chromaticity and in the decoded value of the curve (TransferFunction::max_difference), or
@@ -121,12 +126,14 @@ struct ImageSpace {
     std::shared_ptr<const IccProfile> profile;
     /// The file says nothing: an integer file is taken as sRGB, a float one as linear sRGB.
     bool assumed = false;
+    /// EXR chromaticities of CIE XYZ (exr_xyz_chromaticities): the values are X, Y and Z.
+    bool xyz = false;
     /// Where the space came from, for messages: "the ICC profile 'Adobe RGB (1998)' (version 4.4,
     /// matrix/TRC)", "its EXR chromaticities", "no ICC profile or chromaticities".
     std::string origin;
 
     /// The space a clip pipeline starts from: xyz for a profile (its values go to XYZ through
-    /// it), else rgb, encoded or linear. Points into this ImageSpace, which must outlive it and
+    /// it) and for XYZ chromaticities, else rgb, encoded or linear. Points into this ImageSpace, which must outlive it and
     /// stay where it is.
     [[nodiscard]] ColorSpace colour_space() const noexcept;
 };
@@ -144,10 +151,14 @@ void check_tags_agree(const io::Image& image, const RgbSpace& space, const std::
 
 /// Marks `image`, about to be written to a file of `format`, as holding values of `space`:
 /// color_space = the space's name (with "-linear" for EXR), and for PNG and TIFF the space's
-/// ICC profile (make_icc_profile; none for a curve icc_curve_can_hold refuses: PQ, ACEScct), for EXR its chromaticities and, when the white is not D65's
+/// ICC profile (make_icc_profile; none for a curve icc_curve_can_hold refuses: PQ, HLG, ACEScct), for EXR its chromaticities and, when the white is not D65's
 /// (0.3127, 0.3290), the adoptedNeutral that tells readers assuming D65 otherwise. EXR values
 /// are linear, PNG and TIFF values encoded with the space's curve. An image of fewer than three
 /// channels (grey) gets only the name: an RGB profile does not describe it.
 void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format);
+/// Marks `image`, about to be written to an EXR, as holding CIE XYZ (linear, in its R, G and B
+/// channels): color_space "xyz" and exr_xyz_chromaticities, which image_space() reads back as
+/// XYZ. No ICC profile or adoptedNeutral. (PNG, TIFF and JPEG have no XYZ encoding irid writes.)
+void tag_image_xyz(io::Image& image);
 
 }  // namespace irid

@@ -17,12 +17,23 @@
 #include <irid/color/types.h>
 #include <irid/gamut/aces2.h>
 
+#include <cmath>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace irid {
+
+/// What the display chain takes a non-finite input channel as (forward and inverse, the double
+/// chain, Aces2Kernel and DisplayTransform alike, before any matrix): +Inf as 65504, the largest
+/// finite IEEE 754 binary16 value (a half float's +Inf is an overflow beyond it), which lies
+/// beyond every display's forward limit (at most 7168 in AP1, at 10000 cd/m²), so a blown-out
+/// highlight is shown as the brightest the display shows of it, not as black; -Inf and NaN as 0.
+inline constexpr double aces2_positive_infinity_as = 65504.0;
+[[nodiscard]] inline double aces2_finite_input(double v) noexcept {
+    return std::isfinite(v) ? v : (v > 0.0 ? aces2_positive_infinity_as : 0.0);
+}
 
 /// One display of the ACES 2.0 Output Transform.
 struct Aces2DisplaySpec {
@@ -49,18 +60,23 @@ struct Aces2DisplaySpec {
 
 /// A display of one's own: the rendering for `peak_nits` (100 to 10000) within the limiting
 /// primaries and white, shown in the encoding's primaries and white (CIE XYZ when `encoding` is
-/// nullptr), the white scaled into the encoding gamut as the built-in displays do. Named in the
-/// form aces2_display() reads. Throws irid::Error for a peak out of range.
+/// nullptr), scaled by `linear_scale` (in (0, 1]; the cinema presets' 0.48) and, when
+/// `scale_white`, the white scaled into the encoding gamut as the built-in displays do
+/// (OpenColorIO's SDR-100nit-P3-D60-in-XYZ-E alone does not). Named in the form aces2_display()
+/// reads. Throws irid::Error for a peak or linear scale out of range.
 [[nodiscard]] Aces2DisplaySpec custom_aces2_display(double peak_nits, const RgbSpace& limiting,
-                                                    const Xy& limiting_white,
-                                                    const RgbSpace* encoding);
+                                                    const Xy& limiting_white, const RgbSpace* encoding,
+                                                    double linear_scale = 1.0, bool scale_white = true);
 
 /// The display of a name: a built-in one by its short name or the full OCIO style, in any case;
-/// or a custom one, "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz]" with the
-/// spaces named as irid/color/rgb.h names them, the limiting white W (default the limiting
-/// space's) a name of white_point_xy, "aces" (the ACES white) or "x:y", and the encoding
-/// defaulting to the limiting space. Throws irid::UnknownNameError listing the names for an
-/// unknown display or space, irid::Error for a malformed custom form or a peak out of range.
+/// or a custom one, "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz]
+/// [,linear-scale=S][,scale-white=yes|no]" (the keys in any order) with the spaces named as
+/// irid/color/rgb.h names them, the limiting white W (default the limiting space's) a name of
+/// white_point_xy, "aces" (the ACES white), or its chromaticity "x,y" or "x:y", the encoding
+/// defaulting to the limiting space, the linear scale to 1 and scale-white to yes. A custom
+/// display of a built-in one's parts (`irid display --list`) is that display bit for bit.
+/// Throws irid::UnknownNameError listing the names for an unknown display or space, irid::Error
+/// for a malformed custom form or a value out of range.
 [[nodiscard]] Aces2DisplaySpec aces2_display(std::string_view name);
 
 /// The display encoding (irid/color/rgb.h) a file of the display's signal is written in unless

@@ -42,7 +42,8 @@ public:
     /// `source` inverse).
     explicit DisplayTransform(const DisplayTransformOptions& options);
 
-    /// One colour; finite for any input (non-finite values are taken as 0). Throws irid::Error
+    /// One colour; finite for any input (a non-finite value is taken as aces2_finite_input
+    /// does: +Inf as 65504, -Inf and NaN as 0, before any conversion). Throws irid::Error
     /// for an input that has no XYZ (an xyY chromaticity y = 0 with Y ≠ 0).
     [[nodiscard]] Vec3 operator()(const Vec3& in) const;
 
