@@ -1,8 +1,8 @@
 // No NaN and no black highlight: 2²² bright colours per display, walked through the band where
 // the tonescaled J approaches the peak's J (where OpenColorIO's float code returns NaN for a few
 // and irid's float kernel once wrote black), on all 31 built-in displays and on custom displays
-// of 100, 150, 200 and 250 cd/m² (where the kernel runs in float). The double chain and the float kernel
-// must give finite, bright results; the kernel within its error bound of the double chain.
+// of 100, 150, 200 and 250 cd/m² (where the kernel runs in float). The double chain and the float
+// kernel must give finite, bright results; the kernel within its error bound of the double chain.
 // (The image paths are walked in tests/exchange/display_image_walk_test.cpp.)
 #include <irid/gamut/aces2.h>
 #include <irid/gamut/aces2_display.h>

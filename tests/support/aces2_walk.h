@@ -1,11 +1,11 @@
 #pragma once
 
 // Bright scene colours for the ACES 2.0 highlight walks (tests/gamut/aces2_highlight_walk_test.cpp
-// and the image paths' walk): ACES2065-1 float triples whose luminance lies where the
-// tonescaled J approaches the peak's J. Half are log-uniform from the grey shown at half the peak
-// to 1.2 times the grey that first reaches the peak; a quarter lie within 1 % of that grey and a
-// quarter within a millionth (where J is a float step from the peak's). Chromaticities run from
-// the AP1 white to AP1's boundary, most of them pale (saturation u², a uniform u).
+// and tests/exchange/display_image_walk_test.cpp): ACES2065-1 float triples whose luminance lies
+// where the tonescaled J approaches the peak's J. Half are log-uniform from the grey shown at half
+// the peak to 1.2 times the grey that first reaches the peak; a quarter lie within 1 % of that grey
+// and a quarter within a millionth (where J is a float step from the peak's). Chromaticities run
+// from the AP1 white to AP1's boundary, most of them pale (saturation u², a uniform u).
 
 #include <irid/color/rgb.h>
 #include <irid/gamut/aces2.h>
