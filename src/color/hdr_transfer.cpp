@@ -71,19 +71,12 @@ std::array<double, 3> hlg_ootf(const std::array<double, 3>& scene, double peak_n
 
 std::array<double, 3> hlg_inverse_ootf(const std::array<double, 3>& display, double peak_nits) noexcept {
     const double peak = clamped(peak_nits, 100.0, 10000.0);
-    const double gamma = hlg_system_gamma(peak);
+    // Below L_W the OOTF can give up to 0.0593^(γ − 1) L_W ≈ 1.86 L_W (pure blue at γ = 0.78);
+    // 2 L_W bounds every value it gives.
     std::array<double, 3> f{};
-    double yd = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        // Below L_W the OOTF can give up to 0.0593^(γ − 1) L_W ≈ 1.86 L_W (pure blue at
-        // γ = 0.78); 2 L_W bounds every value it gives.
-        f[i] = clamped(display[i], 0.0, 2.0 * peak);
-        yd += bt2100_luminance[i] * f[i];
-    }
-    // Y_D = L_W Y_S^γ, so E = F_D / (L_W Y_S^(γ−1)) = F_D (Y_D / L_W)^((1 − γ)/γ) / L_W.
-    if (!(yd > 0.0)) return {0.0, 0.0, 0.0};
-    const double scale = std::pow(yd / peak, (1.0 - gamma) / gamma) / peak;
-    return {std::min(1.0, f[0] * scale), std::min(1.0, f[1] * scale), std::min(1.0, f[2] * scale)};
+    for (int i = 0; i < 3; ++i) f[i] = clamped(display[i], 0.0, 2.0 * peak);
+    const std::array<double, 3> e = hlg_scene_light_unclamped(f, peak);
+    return {std::min(1.0, e[0]), std::min(1.0, e[1]), std::min(1.0, e[2])};
 }
 
 std::array<double, 3> hlg_scene_light_unclamped(const std::array<double, 3>& display, double peak_nits) noexcept {
