@@ -48,7 +48,7 @@ True
 
 from ._color import (blackbody, cmfs, color_spaces, convert, delta_e, illuminant,
                      primaries_transform, rgb_color_spaces, spectrum_to_xyz, white_point)
-from ._display import bake_display_lut, display_names, display_transform
+from ._display import bake_display_lut, display_has_scene_value, display_names, display_transform
 from ._gamut import (Lut, bake_lut, clip, clip_branches, clip_image, clip_methods,
                      clip_parameters, clip_report, simd_target, write_ocio_config)
 from ._io import icc_profile, image_space, read_icc_profile, read_image, write_image
@@ -84,6 +84,7 @@ __all__ = [
     "color_spaces",
     "convert",
     "delta_e",
+    "display_has_scene_value",
     "display_names",
     "display_transform",
     "film_color",

@@ -5,7 +5,7 @@ from __future__ import annotations
 from . import _irid
 from ._args import _flag, _name, _whole
 
-__all__ = ["bake_display_lut", "display_names", "display_transform"]
+__all__ = ["bake_display_lut", "display_has_scene_value", "display_names", "display_transform"]
 
 
 def display_names():
@@ -68,6 +68,37 @@ def display_transform(rgb, view="aces2", display=None, source="aces2065-1", targ
 
 
 _recent = {}
+
+
+def display_has_scene_value(rgb, view="aces2", display=None, source="xyz", threads=0):
+    """Whether each display colour has a scene value the display transform takes back to it.
+
+    rgb: array (..., 3) of display colours in ``source`` ("xyz", CIE XYZ of the D65 display with
+        1.0 = 100 cd/m², or an RGB space, linear or encoded); view, display, threads: as for
+        :func:`display_transform`.
+
+    Returns a bool array of shape (...). Where it is False the display never shows the colour:
+    above the peak's J, beyond the gamut compression's reach next to white, or with its source
+    beyond the AP1 clamp; ``display_transform(..., inverse=True)`` then gives the nearest source
+    the chain reaches, and showing that misses the colour (docs/DISPLAY.md, "The inverse").
+    Where it is True, the forward takes the inverse's result back to the colour to 1e-10 of the
+    peak.
+
+    Raises KeyError for unknown names and ValueError for bad values.
+
+    Mid grey has one; Rec.2020's blue primary at 36 cd/m² has none on a 4000 cd/m² display,
+    whose ACES source would lie beyond AP1:
+
+    >>> import irid
+    >>> irid.display_has_scene_value([[0.2, 0.2, 0.2], [0.0, 0.0, 0.36]],
+    ...                              display="hdr-4000nit-rec2020", source="rec2020-linear").tolist()
+    [True, False]
+    """
+    if display is None:
+        raise ValueError("display: give one of irid.display_names()")
+    t = _irid.DisplayTransform(_name(view, "view"), _name(display, "display"), _name(source, "source"),
+                               "aces2065-1", True)
+    return t.scene_values_exist(rgb, _whole(threads, "threads", 0, _irid.max_threads))
 
 
 def bake_display_lut(display, view="aces2", source="aces2065-1", target=None, size=33, format="clf",

@@ -220,7 +220,24 @@ void add_gamut(py::module_& m) {
                 if (is_float32(numbers)) return run_display<float>(t, numbers, threads, out);
                 return run_display<double>(t, numbers, threads, out);
             },
-            py::arg("colours"), py::arg("threads"), py::arg("out"));
+            py::arg("colours"), py::arg("threads"), py::arg("out"))
+        .def(
+            "scene_values_exist",
+            [](const DisplayTransform& t, const py::handle& a, int threads) {
+                if (threads < 0)
+                    throw py::value_error("threads: " + std::to_string(threads) + " must be >= 0 (0: all)");
+                Rows<double> in = rows_of<double>(numeric_array(a, "colours"), 3, "colours");
+                std::vector<unsigned char> flags;
+                {
+                    py::gil_scoped_release release;
+                    flags = t.scene_values_exist(in.values(), threads);
+                }
+                std::vector<py::ssize_t> shape(in.shape.begin(), in.shape.end() - 1);
+                py::array_t<bool> result(shape);
+                std::copy(flags.begin(), flags.end(), result.mutable_data());
+                return result;
+            },
+            py::arg("colours"), py::arg("threads"));
     m.def("display_names", [] {
         std::vector<std::string> names;
         for (const Aces2DisplaySpec& d : aces2_displays()) names.push_back(d.name);

@@ -71,6 +71,41 @@ Vec3 DisplayTransform::operator()(const Vec3& in) const {
     return finite((*m_scene)(m_output->inverse({x[0], x[1], x[2]})));
 }
 
+std::string no_scene_value_note(const std::vector<std::size_t>& places, std::size_t colours, std::string_view where) {
+    const std::size_t shown = std::min<std::size_t>(places.size(), 8);
+    return fmt::format("{} of {} display colours ({}{} {}{}) have no scene value: the display never shows them "
+                       "(docs/DISPLAY.md, \"The inverse\"); each is given the nearest scene value the chain "
+                       "reaches, which the display shows as another colour",
+                       places.size(), colours, where, places.size() > 1 ? "s" : "",
+                       fmt::join(places.begin(), places.begin() + static_cast<std::ptrdiff_t>(shown), ", "),
+                       places.size() > shown ? ", ..." : "");
+}
+
+bool DisplayTransform::has_scene_value(const Vec3& display) const {
+    if (!m_options.inverse)
+        throw Error("display transform: whether a scene value exists is asked of an inverse transform");
+    Vec3 in = display;
+    for (double& v : in) v = aces2_finite_input(v);
+    const Vec3 x = (*m_display)(in);
+    return m_output->has_scene_value({x[0], x[1], x[2]});
+}
+
+std::vector<unsigned char> DisplayTransform::scene_values_exist(std::span<const double> display, int threads) const {
+    if (display.size() % 3 != 0)
+        throw Error(fmt::format("display transform: {} values; give RGB triples", display.size()));
+    if (!m_options.inverse)
+        throw Error("display transform: whether a scene value exists is asked of an inverse transform");
+    std::vector<unsigned char> exists(display.size() / 3, 0);
+    parallel_ranges(
+        exists.size(), threads,
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i)
+                exists[i] = has_scene_value({display[3 * i], display[3 * i + 1], display[3 * i + 2]}) ? 1 : 0;
+        },
+        256);
+    return exists;
+}
+
 template <class T>
 void DisplayTransform::apply_batch(std::span<const T> in, std::span<T> out, int threads) const {
     if (in.size() % 3 != 0 || out.size() != in.size())

@@ -33,6 +33,16 @@ expect_close "0.5,0.4,0.3" 1e-5
 run $'0.26260215,0.25207460,0.20617345\n' display --display sdr-100nit-rec709 --inverse --to aces2065-1
 expect_close "0.5,0.4,0.3" 1e-5
 
+# --- --inverse notes the display colours without a scene value ----------------------------------
+# Rec.2020's blue at 36 cd/m² on a 4000 cd/m² display: its ACES source lies beyond AP1, which the
+# chain clamps (docs/DISPLAY.md, "The inverse"); mid grey has one.
+run $'0.2,0.2,0.2\n0,0,0.36\n' display --display hdr-4000nit-rec2020 --inverse --from rec2020-linear
+expect_status 0
+expect_stderr_has "1 of 2 display colours (stdin line 2) have no scene value"
+run $'0.2,0.2,0.2\n' display --display hdr-4000nit-rec2020 --inverse --from rec2020-linear
+expect_status 0
+expect_stderr_lacks "scene value"
+
 # --- 18 % grey: neutral at 10 cd/m² on a 100 cd/m² display (aces-docs) ------------------------
 run $'0.18,0.18,0.18\n' display --display sdr-100nit-rec709 --to srgb-linear
 expect_close "0.1,0.1,0.1" 1e-4

@@ -3,8 +3,10 @@
 // points. Where a display value has a scene value (Aces2Output::has_scene_value), the inverse
 // is exact: forward(inverse(d)) = d to 1e-10 of the peak. Where it has none, how far the round
 // trip misses is measured, per place; docs/DISPLAY.md ("The inverse") tabulates it.
+#include <irid/error.h>
 #include <irid/gamut/aces2.h>
 #include <irid/gamut/aces2_display.h>
+#include <irid/gamut/display_transform.h>
 
 #include <gtest/gtest.h>
 
@@ -136,6 +138,37 @@ TEST(Aces2Inverse, IsExactWhereverASceneValueExistsAndItsMissIsMeasuredElsewhere
                         misses[static_cast<std::size_t>(p)].worst);
         std::printf("\n");
     }
+}
+
+}  // namespace
+}  // namespace irid
+
+namespace irid {
+namespace {
+
+TEST(Aces2Inverse, ADisplayTransformSaysWhichDisplayColoursHaveASceneValue) {
+    // Rec.2020's blue at 36 cd/m² on a 4000 cd/m² display has none (its source lies beyond AP1);
+    // mid grey has one. In the display's RGB and in CIE XYZ alike.
+    const DisplayTransform rgb(
+        {"aces2", "hdr-4000nit-rec2020", "rec2020-linear", "aces2065-1", true});
+    EXPECT_TRUE(rgb.has_scene_value({0.2, 0.2, 0.2}));
+    EXPECT_FALSE(rgb.has_scene_value({0.0, 0.0, 0.36}));
+    const std::vector<unsigned char> flags =
+        rgb.scene_values_exist(std::vector<double>{0.2, 0.2, 0.2, 0, 0, 0.36});
+    EXPECT_EQ(flags, (std::vector<unsigned char>{1, 0}));
+    const Vec3 blue =
+        rgb_to_xyz_matrix(rec2020().primaries(), rec2020().white()) * Vec3{0.0, 0.0, 0.36};
+    const DisplayTransform xyz({"aces2", "hdr-4000nit-rec2020", "xyz", "aces2065-1", true});
+    EXPECT_FALSE(xyz.has_scene_value(blue));
+    // The question belongs to an inverse transform.
+    const DisplayTransform forward({"aces2", "hdr-4000nit-rec2020", "aces2065-1", "xyz", false});
+    EXPECT_THROW((void)forward.has_scene_value({0.2, 0.2, 0.2}), Error);
+    EXPECT_THROW((void)rgb.scene_values_exist(std::vector<double>{1.0, 2.0}), Error);
+    EXPECT_EQ(no_scene_value_note({2, 5, 6, 7, 8, 9, 10, 11, 12}, 20, "stdin line").substr(0, 60),
+              "9 of 20 display colours (stdin lines 2, 5, 6, 7, 8, 9, 10, 1");
+    EXPECT_NE(
+        no_scene_value_note({2, 5, 6, 7, 8, 9, 10, 11, 12}, 20, "stdin line").find("11, ...)"),
+        std::string::npos);
 }
 
 }  // namespace

@@ -91,3 +91,35 @@ def test_space_names_are_taken_in_any_case():
     assert np.array_equal(irid.clip(rgb, "smits", source="SRGB"), irid.clip(rgb, "smits", source="srgb"))
     with pytest.raises(KeyError, match="srgb, srgb-linear"):
         irid.convert(rgb, "SRGBX", "xyz")
+
+
+def test_a_scene_value_exists_exactly_where_the_round_trip_holds():
+    # The cube of a 1000 cd/m² Rec.2020 display: its ramps to the primaries, near white and
+    # random points. Where irid says a scene value exists the forward takes the inverse back to
+    # 1e-10 of the peak; where it says none exists the round trip misses.
+    rng = np.random.default_rng(37)
+    peak = 10.0
+    ramps = np.concatenate([np.outer(2.0 ** np.linspace(-12, 0, 40), c) for c in np.eye(3)])
+    near_white = peak * (1 - 1e-3 * rng.random((300, 3)))
+    rgb = np.concatenate([ramps * peak, near_white, peak * rng.random((300, 3))])
+    display = "hdr-1000nit-rec2020"
+    exists = irid.display_has_scene_value(rgb, display=display, source="rec2020-linear")
+    assert exists.shape == (len(rgb),) and exists.dtype == bool
+    assert 0 < exists.sum() < len(rgb)
+    scene = irid.display_transform(rgb, display=display, source="rec2020-linear", target="aces2065-1",
+                                   inverse=True)
+    back = irid.display_transform(scene, display=display, target="rec2020-linear")
+    miss = np.abs(back - rgb).max(axis=-1) / peak
+    assert miss[exists].max() <= 1e-10
+    assert miss[~exists].min() > 1e-10
+
+
+def test_scene_values_are_asked_of_display_colours():
+    with pytest.raises(ValueError, match="expected"):
+        irid.display_has_scene_value([1.0, 2.0], display="sdr-100nit-rec709")
+    with pytest.raises(ValueError, match="threads"):
+        irid.display_has_scene_value([1.0, 2.0, 3.0], display="sdr-100nit-rec709", threads=-1)
+    with pytest.raises(KeyError):
+        irid.display_has_scene_value([1.0, 2.0, 3.0], display="no-such-display")
+    with pytest.raises(ValueError, match="display"):
+        irid.display_has_scene_value([1.0, 2.0, 3.0])

@@ -21,8 +21,10 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace irid::cli {
 namespace {
@@ -130,17 +132,22 @@ int run_display(const DisplayOptions& o) {
     }
     const NumericTable table = read_stdin_table(3);
     std::string out = std::string(header_of(target)) + "\n";
+    std::vector<std::size_t> without;  // inverse: the lines without a scene value
     for (std::size_t r = 0; r < table.rows(); ++r) {
         const std::span<const double> row = table.row(r);
         Vec3 result{};
         try {
             result = (*transform)({row[0], row[1], row[2]});
+            if (o.inverse && !transform->has_scene_value({row[0], row[1], row[2]}))
+                without.push_back(table.line_numbers[r]);
         } catch (const Error& e) {
             throw Error("<stdin>:" + std::to_string(table.line_numbers[r]) + ": " + e.what());
         }
         append_csv_line(out, result);
     }
     write_stdout(out);
+    if (!without.empty())
+        fmt::print(stderr, "irid display: note: {}\n", no_scene_value_note(without, table.rows(), "stdin line"));
     return exit_success;
 }
 
