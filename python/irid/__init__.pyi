@@ -73,6 +73,7 @@ def clip_image(pixels: _Array, channels: Sequence[str], method: str,
 
 # --- Display rendering ---
 def display_has_scene_value(rgb: _Array, view: str = "aces2", display: str | None = None, source: str = "xyz",
+                            tolerance: float = 1e-5,
                             threads: int = 0) -> np.ndarray: ...
 def display_names() -> list[str]: ...
 def display_transform(rgb: _Array, view: str = "aces2", display: str | None = None,

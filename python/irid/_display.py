@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from . import _irid
-from ._args import _flag, _name, _whole
+from ._args import _flag, _name, _number, _whole
 
 __all__ = ["bake_display_lut", "display_has_scene_value", "display_names", "display_transform"]
 
@@ -70,19 +70,22 @@ def display_transform(rgb, view="aces2", display=None, source="aces2065-1", targ
 _recent = {}
 
 
-def display_has_scene_value(rgb, view="aces2", display=None, source="xyz", threads=0):
+def display_has_scene_value(rgb, view="aces2", display=None, source="xyz", tolerance=1e-5, threads=0):
     """Whether each display colour has a scene value the display transform takes back to it.
 
     rgb: array (..., 3) of display colours in ``source`` ("xyz", CIE XYZ of the D65 display with
         1.0 = 100 cd/m², or an RGB space, linear or encoded); view, display, threads: as for
         :func:`display_transform`.
+    tolerance: how close, of the peak in the display's RGB, a colour the display shows must come
+        to count (1e-5: a colour shown and rounded to float32 counts as shown).
 
-    Returns a bool array of shape (...). Where it is False the display never shows the colour:
-    above the peak's J, beyond the gamut compression's reach next to white, or with its source
-    beyond the AP1 clamp; ``display_transform(..., inverse=True)`` then gives the nearest source
-    the chain reaches, and showing that misses the colour (docs/DISPLAY.md, "The inverse").
-    Where it is True, the forward takes the inverse's result back to the colour to 1e-10 of the
-    peak.
+    Returns a bool array of shape (...). Where it is False the display never shows the colour to
+    ``tolerance``: above the peak's J, beyond what the gamut or chroma compression gives (next to
+    white, or for limiting gamuts much wider than AP1), or with its source beyond the AP1 clamp;
+    ``display_transform(..., inverse=True)`` then gives the nearest source the chain reaches,
+    and showing that misses the colour (docs/DISPLAY.md, "The inverse"). Where it is True the
+    forward takes the inverse's result back to the colour: to 1e-10 of the peak inside what the
+    chain gives, to ``tolerance`` next to it.
 
     Raises KeyError for unknown names and ValueError for bad values.
 
@@ -98,7 +101,7 @@ def display_has_scene_value(rgb, view="aces2", display=None, source="xyz", threa
         raise ValueError("display: give one of irid.display_names()")
     t = _irid.DisplayTransform(_name(view, "view"), _name(display, "display"), _name(source, "source"),
                                "aces2065-1", True)
-    return t.scene_values_exist(rgb, _whole(threads, "threads", 0, _irid.max_threads))
+    return t.scene_values_exist(rgb, _whole(threads, "threads", 0, _irid.max_threads), _number(tolerance, "tolerance"))
 
 
 def bake_display_lut(display, view="aces2", source="aces2065-1", target=None, size=33, format="clf",

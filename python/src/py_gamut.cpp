@@ -223,21 +223,23 @@ void add_gamut(py::module_& m) {
             py::arg("colours"), py::arg("threads"), py::arg("out"))
         .def(
             "scene_values_exist",
-            [](const DisplayTransform& t, const py::handle& a, int threads) {
+            [](const DisplayTransform& t, const py::handle& a, int threads, double tolerance) {
+                if (!(tolerance >= 0.0))
+                    throw py::value_error("tolerance: " + std::to_string(tolerance) + " must be >= 0");
                 if (threads < 0)
                     throw py::value_error("threads: " + std::to_string(threads) + " must be >= 0 (0: all)");
                 Rows<double> in = rows_of<double>(numeric_array(a, "colours"), 3, "colours");
                 std::vector<unsigned char> flags;
                 {
                     py::gil_scoped_release release;
-                    flags = t.scene_values_exist(in.values(), threads);
+                    flags = t.scene_values_exist(in.values(), threads, tolerance);
                 }
                 std::vector<py::ssize_t> shape(in.shape.begin(), in.shape.end() - 1);
                 py::array_t<bool> result(shape);
                 std::copy(flags.begin(), flags.end(), result.mutable_data());
                 return result;
             },
-            py::arg("colours"), py::arg("threads"));
+            py::arg("colours"), py::arg("threads"), py::arg("tolerance"));
     m.def("display_names", [] {
         std::vector<std::string> names;
         for (const Aces2DisplaySpec& d : aces2_displays()) names.push_back(d.name);

@@ -197,8 +197,14 @@ Aces2Jmh Aces2Rendering::tonescale_and_chroma_forward(const Aces2Jmh& jmh) const
 }
 
 Aces2Jmh Aces2Rendering::tonescale_and_chroma_inverse(const Aces2Jmh& jmh) const noexcept {
+    return solve_tonescale_and_chroma_inverse(jmh, nullptr);
+}
+
+Aces2Jmh Aces2Rendering::solve_tonescale_and_chroma_inverse(const Aces2Jmh& jmh,
+                                                            bool* exact) const noexcept {
     const double j = tonescale_inverse(jmh.J);
     double m = jmh.M;
+    bool inside = true;
     if (m != 0.0) {
         const double nj = jmh.J / m_limit_j_max;
         const double snj = std::max(0.0, 1.0 - nj);
@@ -206,11 +212,15 @@ Aces2Jmh Aces2Rendering::tonescale_and_chroma_inverse(const Aces2Jmh& jmh) const
         const double limit = std::pow(nj, m_model_gamma_inv) * reach_m(jmh.h) / norm;
         m = m / norm;
         m = toe_inverse(m, limit, nj * m_compr, snj);
-        m = limit -
-            toe_inverse(limit - m, limit - 0.001, snj * m_sat, std::sqrt(nj * nj + m_sat_thr));
+        // The expansion's toe gives values above -k2 only (it tends to -k2 as its argument
+        // falls): M beyond limit + k2 is more than the chroma compression ever gives.
+        const double k2 = std::sqrt(nj * nj + m_sat_thr);
+        inside = limit - m > -std::max(k2, 0.001) * (1.0 - 1e-9);
+        m = limit - toe_inverse(limit - m, limit - 0.001, snj * m_sat, k2);
         m *= norm;
         m *= std::pow(jmh.J / j, -m_model_gamma_inv);
     }
+    if (exact != nullptr) *exact = inside;
     return {j, m, jmh.h};
 }
 
@@ -258,7 +268,12 @@ Aces2Jmh Aces2Rendering::compress(const Aces2Jmh& jmh, double jx, const Cusp& cu
     const double gamut_m =
         aces2::gamut_boundary_m(cusp.J, cusp.M, m_limit_j_max, cusp.gamma_top_inv,
                                 m_lower_hull_gamma_inv, j_source, slope, j_cusp);
-    if (gamut_m <= 0.0) return {jmh.J, 0.0, jmh.h};
+    if (gamut_m <= 0.0) {
+        // The hull's estimate has no M at this J: the forward takes every M to 0 here, so an
+        // inverse of M > 0 has no source.
+        if (inverse && beyond != nullptr && jmh.M > 1e-9) *beyond = true;
+        return {jmh.J, 0.0, jmh.h};
+    }
     const double reach_boundary = aces2::line_boundary_m(j_source, slope, m_model_gamma_inv,
                                                          m_limit_j_max, reach, m_limit_j_max);
     const double m = remap_m(jmh.M, gamut_m, reach_boundary, inverse, beyond);
@@ -300,8 +315,10 @@ bool Aces2Rendering::reaches(const Vec3& display) const noexcept {
     const double top = m_limit_j_max * (1.0 + 1e-12);
     if (jmh.J > top) return false;
     bool exact = false;
-    const Aces2Jmh source = solve_gamut_inverse(jmh, &exact);
-    return exact && source.J <= top;
+    const Aces2Jmh toned = solve_gamut_inverse(jmh, &exact);
+    if (!exact || toned.J > top) return false;
+    (void)solve_tonescale_and_chroma_inverse(toned, &exact);
+    return exact;
 }
 
 Vec3 Aces2Rendering::forward(const Vec3& aces) const noexcept {

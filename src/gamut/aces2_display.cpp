@@ -318,23 +318,34 @@ Vec3 Aces2Output::inverse(const Xyz& xyz) const noexcept {
     return m_ap1_to_ap0 * ap1;
 }
 
-bool Aces2Output::has_scene_value(const Xyz& xyz) const noexcept {
+double Aces2Output::inverse_miss(const Xyz& xyz) const noexcept {
     const Vec3 rgb = m_xyz_to_limiting * Vec3{xyz.X / m_scale, xyz.Y / m_scale, xyz.Z / m_scale};
+    const Xyz x = forward(inverse(xyz));
+    const Vec3 back = m_xyz_to_limiting * Vec3{x.X / m_scale, x.Y / m_scale, x.Z / m_scale};
+    double miss = 0.0;
+    for (int c = 0; c < 3; ++c) miss = std::max(miss, std::abs(back[c] - rgb[c]));
+    return miss / (m_spec.peak_nits / 100.0);
+}
+
+bool Aces2Output::has_scene_value(const Xyz& xyz, double tolerance) const noexcept {
+    const Vec3 rgb = m_xyz_to_limiting * Vec3{xyz.X / m_scale, xyz.Y / m_scale, xyz.Z / m_scale};
+    const double peak = m_spec.peak_nits / 100.0;
+    bool exact = true;
     // Inside the cube, but for the rounding of the matrix (1e-12 of the peak), which the clamp
     // moves by as little.
-    const double peak = m_spec.peak_nits / 100.0;
-    for (const double v : rgb)
-        if (!(v >= -1e-12 * peak && v <= peak * (1.0 + 1e-12))) return false;
-    if (!m_rendering.reaches(rgb)) return false;
-    // Inside the AP1 clamp, but for the rounding of a source on its boundary (1e-12 of the
-    // source's largest channel), which the clamp moves by as little.
-    const Vec3 ap1 = m_ap0_to_ap1 * m_rendering.inverse(rgb);
-    const double limit = m_rendering.forward_limit();
-    const double slack =
-        1e-12 * std::max({1.0, std::abs(ap1[0]), std::abs(ap1[1]), std::abs(ap1[2])});
-    for (const double v : ap1)
-        if (!(v >= -slack && v <= limit + slack)) return false;
-    return true;
+    for (const double v : rgb) exact = exact && v >= -1e-12 * peak && v <= peak * (1.0 + 1e-12);
+    if (exact) exact = m_rendering.reaches(rgb);
+    if (exact) {
+        // Its source inside the AP1 clamp, but for the rounding of a source on its boundary
+        // (1e-12 of the source's largest channel), which the clamp moves by as little.
+        const Vec3 ap1 = m_ap0_to_ap1 * m_rendering.inverse(rgb);
+        const double limit = m_rendering.forward_limit();
+        const double slack = 1e-12 * std::max({1.0, std::abs(ap1[0]), std::abs(ap1[1]), std::abs(ap1[2])});
+        for (const double v : ap1) exact = exact && v >= -slack && v <= limit + slack;
+    }
+    if (exact) return true;
+    // Not quite a value the chain gives: within `tolerance` of one?
+    return tolerance > 0.0 && inverse_miss(xyz) <= tolerance;
 }
 
 }  // namespace irid

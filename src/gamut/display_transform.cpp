@@ -11,25 +11,30 @@
 namespace irid {
 namespace {
 
-bool display_side_ok(const ColorSpace& s) noexcept { return s.family == SpaceFamily::xyz || s.is_rgb(); }
+bool display_side_ok(const ColorSpace& s) noexcept {
+    return s.family == SpaceFamily::xyz || s.is_rgb();
+}
 
 ColorSpace space_of(const std::string& name, const char* option) {
     if (const std::optional<ColorSpace> s = find_color_space(name)) return *s;
     std::vector<std::string> names = color_space_names();
-    const std::string message =
-        fmt::format("{}: unknown space {}; known: {}", option, quote_untrusted(name), fmt::join(names, ", "));
+    const std::string message = fmt::format("{}: unknown space {}; known: {}", option,
+                                            quote_untrusted(name), fmt::join(names, ", "));
     throw UnknownNameError(message, std::move(names));
 }
 
 }  // namespace
 
-std::vector<std::string> display_views() { return {"aces2"}; }
+std::vector<std::string> display_views() {
+    return {"aces2"};
+}
 
 DisplayTransform::DisplayTransform(const DisplayTransformOptions& options) : m_options(options) {
     if (options.view != "aces2")
-        throw UnknownNameError(fmt::format("view: unknown view {}; known: {}", quote_untrusted(options.view),
-                                           fmt::join(display_views(), ", ")),
-                               display_views());
+        throw UnknownNameError(
+            fmt::format("view: unknown view {}; known: {}", quote_untrusted(options.view),
+                        fmt::join(display_views(), ", ")),
+            display_views());
     m_output = std::make_shared<const Aces2Output>(aces2_display(options.display));
     const ColorSpace source = space_of(options.source, "source");
     const ColorSpace target = space_of(options.target, "target");
@@ -41,7 +46,8 @@ DisplayTransform::DisplayTransform(const DisplayTransformOptions& options) : m_o
     const ColorSpace& display = options.inverse ? source : target;
     if (!display_side_ok(display))
         throw Error(fmt::format("{}: {} is not a display space; use xyz or an RGB space",
-                                options.inverse ? "source" : "target", options.inverse ? options.source : options.target));
+                                options.inverse ? "source" : "target",
+                                options.inverse ? options.source : options.target));
     // XYZ of the display is relative to D65 (the display's white), with Y = 1 at 100 cd/m².
     if (!options.inverse) {
         m_scene = std::make_unique<Converter>(source, aces, d65_xy);
@@ -53,8 +59,9 @@ DisplayTransform::DisplayTransform(const DisplayTransformOptions& options) : m_o
     // Both sides linear: the float kernel, with the converters' matrices folded into its own.
     const std::optional<Mat3> scene = m_scene->linear_matrix(), shown = m_display->linear_matrix();
     if (scene && shown)
-        m_kernel = options.inverse ? std::make_unique<const Aces2Kernel>(*m_output, true, *shown, *scene)
-                                   : std::make_unique<const Aces2Kernel>(*m_output, false, *scene, *shown);
+        m_kernel = options.inverse
+                       ? std::make_unique<const Aces2Kernel>(*m_output, true, *shown, *scene)
+                       : std::make_unique<const Aces2Kernel>(*m_output, false, *scene, *shown);
 }
 
 Vec3 DisplayTransform::operator()(const Vec3& in) const {
@@ -71,36 +78,45 @@ Vec3 DisplayTransform::operator()(const Vec3& in) const {
     return finite((*m_scene)(m_output->inverse({x[0], x[1], x[2]})));
 }
 
-std::string no_scene_value_note(const std::vector<std::size_t>& places, std::size_t colours, std::string_view where) {
+std::string no_scene_value_note(const std::vector<std::size_t>& places, std::size_t colours,
+                                std::string_view where) {
     const std::size_t shown = std::min<std::size_t>(places.size(), 8);
-    return fmt::format("{} of {} display colours ({}{} {}{}) have no scene value: the display never shows them "
-                       "(docs/DISPLAY.md, \"The inverse\"); each is given the nearest scene value the chain "
-                       "reaches, which the display shows as another colour",
-                       places.size(), colours, where, places.size() > 1 ? "s" : "",
-                       fmt::join(places.begin(), places.begin() + static_cast<std::ptrdiff_t>(shown), ", "),
-                       places.size() > shown ? ", ..." : "");
+    return fmt::format(
+        "{} of {} display colours ({}{} {}{}) have no scene value: the display never shows them "
+        "(docs/DISPLAY.md, \"The inverse\"); each is given the nearest scene value the chain "
+        "reaches, which the display shows as another colour",
+        places.size(), colours, where, places.size() > 1 ? "s" : "",
+        fmt::join(places.begin(), places.begin() + static_cast<std::ptrdiff_t>(shown), ", "),
+        places.size() > shown ? ", ..." : "");
 }
 
-bool DisplayTransform::has_scene_value(const Vec3& display) const {
+bool DisplayTransform::has_scene_value(const Vec3& display, double tolerance) const {
     if (!m_options.inverse)
-        throw Error("display transform: whether a scene value exists is asked of an inverse transform");
+        throw Error(
+            "display transform: whether a scene value exists is asked of an inverse transform");
     Vec3 in = display;
     for (double& v : in) v = aces2_finite_input(v);
     const Vec3 x = (*m_display)(in);
-    return m_output->has_scene_value({x[0], x[1], x[2]});
+    return m_output->has_scene_value({x[0], x[1], x[2]}, tolerance);
 }
 
-std::vector<unsigned char> DisplayTransform::scene_values_exist(std::span<const double> display, int threads) const {
+std::vector<unsigned char> DisplayTransform::scene_values_exist(std::span<const double> display,
+                                                                int threads,
+                                                                double tolerance) const {
     if (display.size() % 3 != 0)
         throw Error(fmt::format("display transform: {} values; give RGB triples", display.size()));
     if (!m_options.inverse)
-        throw Error("display transform: whether a scene value exists is asked of an inverse transform");
+        throw Error(
+            "display transform: whether a scene value exists is asked of an inverse transform");
     std::vector<unsigned char> exists(display.size() / 3, 0);
     parallel_ranges(
         exists.size(), threads,
         [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i)
-                exists[i] = has_scene_value({display[3 * i], display[3 * i + 1], display[3 * i + 2]}) ? 1 : 0;
+                exists[i] = has_scene_value(
+                                {display[3 * i], display[3 * i + 1], display[3 * i + 2]}, tolerance)
+                                ? 1
+                                : 0;
         },
         256);
     return exists;
@@ -109,16 +125,20 @@ std::vector<unsigned char> DisplayTransform::scene_values_exist(std::span<const 
 template <class T>
 void DisplayTransform::apply_batch(std::span<const T> in, std::span<T> out, int threads) const {
     if (in.size() % 3 != 0 || out.size() != in.size())
-        throw Error(fmt::format("display transform: {} values in and {} out; give RGB triples, as many out as in",
-                                in.size(), out.size()));
+        throw Error(fmt::format(
+            "display transform: {} values in and {} out; give RGB triples, as many out as in",
+            in.size(), out.size()));
     // In place is allowed: each triple is read before it is written.
     parallel_ranges(
         in.size() / 3, threads,
         [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
-                const Vec3 c = (*this)({static_cast<double>(in[3 * i]), static_cast<double>(in[3 * i + 1]),
-                                        static_cast<double>(in[3 * i + 2])});
-                for (int k = 0; k < 3; ++k) out[3 * i + static_cast<std::size_t>(k)] = static_cast<T>(c[static_cast<std::size_t>(k)]);
+                const Vec3 c =
+                    (*this)({static_cast<double>(in[3 * i]), static_cast<double>(in[3 * i + 1]),
+                             static_cast<double>(in[3 * i + 2])});
+                for (int k = 0; k < 3; ++k)
+                    out[3 * i + static_cast<std::size_t>(k)] =
+                        static_cast<T>(c[static_cast<std::size_t>(k)]);
             }
         },
         256);
@@ -130,11 +150,13 @@ void DisplayTransform::apply(std::span<const double> in, std::span<double> out, 
 
 void DisplayTransform::apply(std::span<const float> in, std::span<float> out, int threads) const {
     // apply_batch also reports sizes that do not fit.
-    if (!m_kernel || in.size() % 3 != 0 || out.size() != in.size()) return apply_batch(in, out, threads);
+    if (!m_kernel || in.size() % 3 != 0 || out.size() != in.size())
+        return apply_batch(in, out, threads);
     parallel_ranges(
         in.size() / 3, threads,
         [&](std::size_t begin, std::size_t end) {
-            (void)m_kernel->run(in.subspan(3 * begin, 3 * (end - begin)), out.subspan(3 * begin, 3 * (end - begin)));
+            (void)m_kernel->run(in.subspan(3 * begin, 3 * (end - begin)),
+                                out.subspan(3 * begin, 3 * (end - begin)));
         },
         256);
 }

@@ -73,16 +73,16 @@ std::vector<Sample> cube_samples(std::mt19937_64& rng) {
     return s;
 }
 
-/// docs/DISPLAY.md's largest round-trip miss (of the peak) where no scene value exists, by the
-/// display's limiting gamut and peak.
+/// docs/DISPLAY.md's largest round-trip miss (of the peak, in the limiting RGB) where no scene
+/// value exists, by the display's limiting gamut and peak.
 double documented_worst_miss(const Aces2DisplaySpec& spec) {
     const bool rec2020 = spec.limiting.green.y > 0.75;
     const bool d60 = spec.limiting_white.x > 0.32;
     if (rec2020 && d60) return 0.13;
-    if (rec2020) return 0.02;
+    if (rec2020) return 0.031;
     if (spec.peak_nits <= 100.0) return 0.0019;
-    if (spec.peak_nits <= 225.0) return 0.0029;
-    return 0.011;
+    if (spec.peak_nits <= 225.0) return 0.0064;
+    return 0.018;
 }
 
 struct Miss {
@@ -90,54 +90,70 @@ struct Miss {
     double worst = 0.0;  // of the peak
 };
 
+/// The walk on one display: every sample's inverse, its round trip, and has_scene_value at
+/// 1e-10 (exact inside what the chain gives, and else what the round trip says at that
+/// tolerance): true exactly where the round trip holds to 1e-10 of the peak. Returns the largest
+/// miss, printing a row of docs/DISPLAY.md's table.
+double walk(const Aces2DisplaySpec& spec, const std::vector<Sample>& samples) {
+    const Aces2Output out(spec);
+    const Mat3 to_xyz = rgb_to_xyz_matrix(spec.limiting, spec.limiting_white);
+    const double peak = spec.peak_nits / 100.0;  // the cube's side, before the output scale
+    const double scale = out.output_scale();
+    std::array<Miss, place_count> misses{};
+    double exact_worst = 0.0, worst_miss = 0.0;
+    for (const Sample& sample : samples) {
+        const Vec3 xyz_v =
+            to_xyz * Vec3{sample.rgb[0] * peak, sample.rgb[1] * peak, sample.rgb[2] * peak};
+        const Xyz xyz{xyz_v[0] * scale, xyz_v[1] * scale, xyz_v[2] * scale};
+        const Vec3 scene = out.inverse(xyz);
+        const std::string where = spec.name + " at " + std::to_string(sample.rgb[0]) + " " +
+                                  std::to_string(sample.rgb[1]) + " " +
+                                  std::to_string(sample.rgb[2]);
+        EXPECT_TRUE(std::isfinite(scene[0]) && std::isfinite(scene[1]) && std::isfinite(scene[2]))
+            << where;
+        const double miss = out.inverse_miss(xyz);  // of the peak, in the limiting RGB
+        Miss& m = misses[sample.place];
+        ++m.count;
+        if (out.has_scene_value(xyz, 0.0)) {
+            // Inside what the chain gives: exact.
+            exact_worst = std::max(exact_worst, miss);
+            EXPECT_LE(miss, 1e-10) << where;
+        }
+        EXPECT_EQ(out.has_scene_value(xyz, 1e-10), miss <= 1e-10) << where << ": miss " << miss;
+        if (miss > 1e-10) {
+            ++m.without;
+            m.worst = std::max(m.worst, miss);
+            worst_miss = std::max(worst_miss, miss);
+        }
+    }
+    std::printf("%-40s exact %.2g", spec.name.c_str(), exact_worst);
+    for (std::size_t p = 0; p < place_count; ++p)
+        std::printf(" | %s %d/%d %.2g", place_names[p], misses[p].without, misses[p].count,
+                    misses[p].worst);
+    std::printf("\n");
+    return worst_miss;
+}
+
 TEST(Aces2Inverse, IsExactWhereverASceneValueExistsAndItsMissIsMeasuredElsewhere) {
     std::mt19937_64 rng(37);
     const std::vector<Sample> samples = cube_samples(rng);
     for (const Aces2DisplaySpec& spec : aces2_displays()) {
-        const Aces2Output out(spec);
-        const Mat3 to_xyz = rgb_to_xyz_matrix(spec.limiting, spec.limiting_white);
-        const double peak = spec.peak_nits / 100.0;  // the cube's side, before the output scale
-        const double scale = out.output_scale();
-        std::array<Miss, place_count> misses{};
-        double exact_worst = 0.0, worst_miss = 0.0;
-        for (const Sample& sample : samples) {
-            const Vec3 xyz_v =
-                to_xyz * Vec3{sample.rgb[0] * peak, sample.rgb[1] * peak, sample.rgb[2] * peak};
-            const Xyz xyz{xyz_v[0] * scale, xyz_v[1] * scale, xyz_v[2] * scale};
-            const Vec3 scene = out.inverse(xyz);
-            ASSERT_TRUE(std::isfinite(scene[0]) && std::isfinite(scene[1]) &&
-                        std::isfinite(scene[2]))
-                << spec.name << " " << sample.rgb[0] << " " << sample.rgb[1] << " "
-                << sample.rgb[2];
-            const Xyz back = out.forward(scene);
-            const double miss = std::max({std::abs(back.X - xyz.X), std::abs(back.Y - xyz.Y),
-                                          std::abs(back.Z - xyz.Z)}) /
-                                (peak * scale);
-            Miss& m = misses[sample.place];
-            ++m.count;
-            if (out.has_scene_value(xyz)) {
-                exact_worst = std::max(exact_worst, miss);
-                EXPECT_LE(miss, 1e-10) << spec.name << " " << sample.rgb[0] << " " << sample.rgb[1]
-                                       << " " << sample.rgb[2];
-            } else {
-                // has_scene_value is exact both ways: a value without one misses.
-                EXPECT_GT(miss, 1e-10) << spec.name << " " << sample.rgb[0] << " " << sample.rgb[1]
-                                       << " " << sample.rgb[2];
-                ++m.without;
-                m.worst = std::max(m.worst, miss);
-                worst_miss = std::max(worst_miss, miss);
-            }
-        }
         // The largest miss docs/DISPLAY.md gives for the display's kind, with 10 % to spare.
-        EXPECT_LE(worst_miss, 1.1 * documented_worst_miss(spec)) << spec.name;
-        std::printf("%-40s exact %.2g", spec.name.c_str(), exact_worst);
-        for (int p = 0; p < place_count; ++p)
-            std::printf(" | %s %d/%d %.2g", place_names[static_cast<std::size_t>(p)],
-                        misses[static_cast<std::size_t>(p)].without,
-                        misses[static_cast<std::size_t>(p)].count,
-                        misses[static_cast<std::size_t>(p)].worst);
-        std::printf("\n");
+        EXPECT_LE(walk(spec, samples), 1.1 * documented_worst_miss(spec)) << spec.name;
     }
+}
+
+// Custom displays whose limiting gamut is far wider than the reach gamut AP1, or whose white is
+// far from the ACES white: there the chroma compression's most M, and the hull estimate's
+// failure to give any M, bound what the chain shows.
+TEST(Aces2Inverse, IsExactWhereverASceneValueExistsOnWideAndOddCustomDisplays) {
+    std::mt19937_64 rng(38);
+    const std::vector<Sample> samples = cube_samples(rng);
+    for (const char* name :
+         {"custom:peak=100,limiting=aces2065-1", "custom:peak=10000,limiting=aces2065-1",
+          "custom:peak=100,limiting=acescg", "custom:peak=100,limiting=srgb,white=A",
+          "custom:peak=1000,limiting=rec2020,white=E"})
+        (void)walk(aces2_display(name), samples);
 }
 
 }  // namespace

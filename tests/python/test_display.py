@@ -95,23 +95,35 @@ def test_space_names_are_taken_in_any_case():
 
 def test_a_scene_value_exists_exactly_where_the_round_trip_holds():
     # The cube of a 1000 cd/m² Rec.2020 display: its ramps to the primaries, near white and
-    # random points. Where irid says a scene value exists the forward takes the inverse back to
-    # 1e-10 of the peak; where it says none exists the round trip misses.
+    # random points. has_scene_value at a tolerance is true exactly where the round trip (the
+    # forward of the inverse) comes back within it, of the peak in the display's RGB.
     rng = np.random.default_rng(37)
     peak = 10.0
     ramps = np.concatenate([np.outer(2.0 ** np.linspace(-12, 0, 40), c) for c in np.eye(3)])
     near_white = peak * (1 - 1e-3 * rng.random((300, 3)))
     rgb = np.concatenate([ramps * peak, near_white, peak * rng.random((300, 3))])
     display = "hdr-1000nit-rec2020"
-    exists = irid.display_has_scene_value(rgb, display=display, source="rec2020-linear")
-    assert exists.shape == (len(rgb),) and exists.dtype == bool
-    assert 0 < exists.sum() < len(rgb)
     scene = irid.display_transform(rgb, display=display, source="rec2020-linear", target="aces2065-1",
                                    inverse=True)
     back = irid.display_transform(scene, display=display, target="rec2020-linear")
     miss = np.abs(back - rgb).max(axis=-1) / peak
-    assert miss[exists].max() <= 1e-10
-    assert miss[~exists].min() > 1e-10
+    for tolerance in (1e-10, 1e-5):
+        exists = irid.display_has_scene_value(rgb, display=display, source="rec2020-linear",
+                                              tolerance=tolerance)
+        assert exists.shape == (len(rgb),) and exists.dtype == bool
+        assert 0 < exists.sum() < len(rgb)
+        assert np.array_equal(exists, miss <= tolerance)
+
+
+def test_a_colour_the_display_shows_counts_as_shown_after_float_rounding():
+    # The display's output of scene colours, rounded to float32 (as a file or a GPU holds it):
+    # by default each counts as shown, though most lie a rounding step outside what the chain
+    # gives; at a tolerance of 0 only those inside count.
+    rng = np.random.default_rng(5)
+    scene = rng.uniform(-0.5, 64.0, (2000, 3))
+    shown = irid.display_transform(scene, display="sdr-100nit-rec709").astype(np.float32)
+    assert irid.display_has_scene_value(shown, display="sdr-100nit-rec709").all()
+    assert not irid.display_has_scene_value(shown, display="sdr-100nit-rec709", tolerance=0.0).all()
 
 
 def test_scene_values_are_asked_of_display_colours():
@@ -123,3 +135,5 @@ def test_scene_values_are_asked_of_display_colours():
         irid.display_has_scene_value([1.0, 2.0, 3.0], display="no-such-display")
     with pytest.raises(ValueError, match="display"):
         irid.display_has_scene_value([1.0, 2.0, 3.0])
+    with pytest.raises(ValueError, match="tolerance"):
+        irid.display_has_scene_value([1.0, 2.0, 3.0], display="sdr-100nit-rec709", tolerance=-1.0)

@@ -101,9 +101,10 @@ public:
     /// Academy's does.
     [[nodiscard]] Vec3 inverse(const Vec3& display) const noexcept;
     /// Whether a display value is one the forward produces, so that inverse() is its source:
-    /// false above the peak's J and beyond the gamut compression's asymptote (next to the
-    /// limiting cube's top corners, where the cube reaches beyond the hull the compression
-    /// aims at; docs/DISPLAY.md, "The inverse").
+    /// false above the peak's J, beyond the gamut compression's asymptote (next to the limiting
+    /// cube's top corners, where the cube reaches beyond the hull the compression aims at) and
+    /// beyond the most M the chroma compression gives (limiting gamuts much wider than the reach
+    /// gamut AP1); docs/DISPLAY.md, "The inverse".
     [[nodiscard]] bool reaches(const Vec3& display) const noexcept;
 
     // The stages, in the order forward() applies them.
@@ -152,6 +153,10 @@ private:
     /// The gamut compression's inverse; `exact` (when given) says whether the forward takes the
     /// result back (the focus gain's fixed point converged and M is inside the asymptote).
     [[nodiscard]] Aces2Jmh solve_gamut_inverse(const Aces2Jmh& jmh, bool* exact) const noexcept;
+    /// The tonescale and chroma compression's inverse; `exact` (when given) says whether M lies
+    /// inside what the chroma compression gives.
+    [[nodiscard]] Aces2Jmh solve_tonescale_and_chroma_inverse(const Aces2Jmh& jmh,
+                                                              bool* exact) const noexcept;
     void build_tables(const Aces2Display& display);
 
     Aces2JmhModel m_input;        // AP0

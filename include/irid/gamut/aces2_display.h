@@ -97,10 +97,16 @@ public:
     /// CIE XYZ (1.0 = 100 cd/m²) to ACES2065-1. XYZ outside what the display shows is clamped
     /// to its limiting cube first.
     [[nodiscard]] Vec3 inverse(const Xyz& xyz) const noexcept;
-    /// Whether the display value has a scene value the chain takes to it, so that
-    /// forward(inverse(xyz)) = xyz: inside the limiting cube, a value the rendering reaches
-    /// (Aces2Rendering::reaches), and its source inside the AP1 clamp of step 1.
-    [[nodiscard]] bool has_scene_value(const Xyz& xyz) const noexcept;
+    /// Whether the display value has a scene value the chain shows as it, to `tolerance` of the
+    /// peak in the limiting RGB. It has one exactly, forward(inverse(xyz)) = xyz to 1e-10 of the
+    /// peak, where it lies inside the limiting cube, is a value the rendering reaches
+    /// (Aces2Rendering::reaches) and has its source inside the AP1 clamp of step 1; elsewhere
+    /// when the round trip misses by at most `tolerance` (the default takes the float rounding
+    /// of a colour the display shows as shown). docs/DISPLAY.md, "The inverse".
+    [[nodiscard]] bool has_scene_value(const Xyz& xyz, double tolerance = 1e-5) const noexcept;
+    /// How far forward(inverse(xyz)) misses xyz: the largest channel of the difference in the
+    /// limiting RGB, of the peak (both before the white and linear scales).
+    [[nodiscard]] double inverse_miss(const Xyz& xyz) const noexcept;
 
     [[nodiscard]] const Aces2DisplaySpec& spec() const noexcept { return m_spec; }
     [[nodiscard]] const Aces2Rendering& rendering() const noexcept { return m_rendering; }

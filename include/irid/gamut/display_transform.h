@@ -35,8 +35,8 @@ struct DisplayTransformOptions {
 /// The note for display colours without a scene value (DisplayTransform::has_scene_value): how
 /// many of `colours`, where (`where` followed by the first eight of `places`, e.g. "stdin line"
 /// and line numbers), and what the inverse gave them. One sentence, without a final stop.
-[[nodiscard]] std::string no_scene_value_note(const std::vector<std::size_t>& places, std::size_t colours,
-                                              std::string_view where);
+[[nodiscard]] std::string no_scene_value_note(const std::vector<std::size_t>& places,
+                                              std::size_t colours, std::string_view where);
 
 /// The views a display transform knows.
 [[nodiscard]] std::vector<std::string> display_views();
@@ -62,13 +62,15 @@ public:
     void apply(std::span<const float> in, std::span<float> out, int threads = 0) const;
 
     /// For an inverse transform: whether a display colour (in `source`) has a scene value the
-    /// forward takes back to it (Aces2Output::has_scene_value, docs/DISPLAY.md "The inverse"):
-    /// where it has none, operator() gives the nearest source the chain reaches, and showing it
-    /// misses the colour. Throws irid::Error for a forward transform.
-    [[nodiscard]] bool has_scene_value(const Vec3& display) const;
+    /// forward shows as it, to `tolerance` of the peak (Aces2Output::has_scene_value, docs/
+    /// DISPLAY.md "The inverse"): where it has none, operator() gives the nearest source the
+    /// chain reaches, and showing it misses the colour. Throws irid::Error for a forward
+    /// transform.
+    [[nodiscard]] bool has_scene_value(const Vec3& display, double tolerance = 1e-5) const;
     /// The same for interleaved triples, on up to `threads` threads: one flag per triple.
     [[nodiscard]] std::vector<unsigned char> scene_values_exist(std::span<const double> display,
-                                                                int threads = 0) const;
+                                                                int threads = 0,
+                                                                double tolerance = 1e-5) const;
 
     [[nodiscard]] const DisplayTransformOptions& options() const noexcept { return m_options; }
     [[nodiscard]] const Aces2Output& output() const noexcept { return *m_output; }
@@ -84,7 +86,7 @@ private:
 
     DisplayTransformOptions m_options;
     std::shared_ptr<const Aces2Output> m_output;
-    std::unique_ptr<Converter> m_scene;    // source → aces2065-1-linear (forward) or aces → target
+    std::unique_ptr<Converter> m_scene;  // source → aces2065-1-linear (forward) or aces → target
     std::unique_ptr<Converter> m_display;  // xyz → target (forward) or source → xyz (inverse)
     std::unique_ptr<const Aces2Kernel> m_kernel;  // floats, when both converters are linear
 };
