@@ -81,13 +81,15 @@ Vec3 DisplayTransform::operator()(const Vec3& in) const {
 std::string no_scene_value_note(const std::vector<std::size_t>& places, std::size_t colours,
                                 std::string_view where) {
     const std::size_t shown = std::min<std::size_t>(places.size(), 8);
+    const bool one = places.size() == 1;
     return fmt::format(
-        "{} of {} display colours ({}{} {}{}) have no scene value: the display never shows them "
-        "(docs/DISPLAY.md, \"The inverse\"); each is given the nearest scene value the chain "
-        "reaches, which the display shows as another colour",
-        places.size(), colours, where, places.size() > 1 ? "s" : "",
+        "{} of {} display colour{} ({}{} {}{}) {} no scene value: the display never shows {} "
+        "(docs/DISPLAY.md, \"The inverse\"); {} given the nearest scene value the chain reaches, "
+        "which the display shows as another colour",
+        places.size(), colours, colours == 1 ? "" : "s", where, one ? "" : "s",
         fmt::join(places.begin(), places.begin() + static_cast<std::ptrdiff_t>(shown), ", "),
-        places.size() > shown ? ", ..." : "");
+        places.size() > shown ? ", ..." : "", one ? "has" : "have", one ? "it" : "them",
+        one ? "it is" : "each is");
 }
 
 bool DisplayTransform::has_scene_value(const Vec3& display, double tolerance) const {

@@ -38,7 +38,7 @@ expect_close "0.5,0.4,0.3" 1e-5
 # chain clamps (docs/DISPLAY.md, "The inverse"); mid grey has one.
 run $'0.2,0.2,0.2\n0,0,0.36\n' display --display hdr-4000nit-rec2020 --inverse --from rec2020-linear
 expect_status 0
-expect_stderr_has "1 of 2 display colours (stdin line 2) have no scene value"
+expect_stderr_has "1 of 2 display colours (stdin line 2) has no scene value"
 run $'0.2,0.2,0.2\n' display --display hdr-4000nit-rec2020 --inverse --from rec2020-linear
 expect_status 0
 expect_stderr_lacks "scene value"
