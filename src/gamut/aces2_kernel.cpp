@@ -5,6 +5,7 @@
 
 #include <irid/error.h>
 
+#include "aces2_constants.h"
 #include "aces2_kernel_data.h"
 
 #include <algorithm>
@@ -24,13 +25,31 @@ std::array<T, 9> to_array(const Mat3& m) noexcept {
 
 /// Peaks above which the float forward computes its tonescale, gamut compression and output
 /// stage in double: in float they reached 1.05e-5 of an output channel at 500 cd/m² and
-/// 1.3e-5 at 1000 (docs/KERNELS.md).
-constexpr double precise_above_nits = 250.0;
+/// 1.3e-5 at 1000, and on bright colours of custom displays 1.0e-5 to 1.4e-5 at 150 to
+/// 225 cd/m² (AP1 and Rec.2020 limiting), against 7.9e-6 at most at 100 (docs/KERNELS.md).
+constexpr double precise_above_nits = 100.0;
+
+/// Whether every limiting primary lies inside AP1's triangle (to rounding): where one does not,
+/// the chain is so ill-conditioned in places (a compression whose hull does not close, colours
+/// that reach the peak with an infinite slope) that float's rounding shows by up to 6 % (AP0's
+/// own primaries, docs/KERNELS.md), and the kernel hands every colour to the double chain.
+bool limiting_inside_ap1(const Aces2DisplaySpec& spec) {
+    const Mat3 xyz_to_ap1 = inverse(rgb_to_xyz_matrix(aces2::ap1, aces2::aces_white), "AP1");
+    for (const Xy& c : {spec.limiting.red, spec.limiting.green, spec.limiting.blue}) {
+        const Vec3 rgb = xyz_to_ap1 * Vec3{c.x / c.y, 1.0, (1.0 - c.x - c.y) / c.y};
+        const double sum = rgb[0] + rgb[1] + rgb[2];
+        for (const double v : rgb)
+            if (v / sum < -1e-9) return false;
+    }
+    return true;
+}
 
 /// Aces2Kernel::error_of_largest: 2.6 and 3.3 times the largest measured, 3.9e-5 (float) and
 /// 9.2e-7 (double back end; docs/KERNELS.md).
 constexpr double float_error_of_largest = 1e-4;
 constexpr double precise_error_of_largest = 3e-6;
+/// The double chain's result rounded to float: half a float step, with room.
+constexpr double double_error_of_largest = 1e-7;
 
 }  // namespace
 
@@ -111,6 +130,7 @@ struct Aces2Kernel::Builder {
         }
         p.hue_search = r.m_hue_search;
         p.precise = o.m_spec.peak_nits > precise_above_nits;
+        p.follows = limiting_inside_ap1(o.m_spec);
         return p;
     }
 };
@@ -127,6 +147,14 @@ Aces2Kernel::~Aces2Kernel() = default;
 
 std::size_t Aces2Kernel::run(std::span<const float> in, std::span<float> out) const noexcept {
     const std::size_t colours = std::min(in.size(), out.size()) / 3;
+    if (!m_data->f.follows) {
+        // In place is allowed: each triple is read before it is written.
+        for (std::size_t i = 0; i < colours; ++i) {
+            const Vec3 o = reference({in[3 * i], in[3 * i + 1], in[3 * i + 2]});
+            for (std::size_t c = 0; c < 3; ++c) out[3 * i + c] = static_cast<float>(o[c]);
+        }
+        return colours;
+    }
     return m_inverse ? detail::aces2_inverse_run(*this, *m_data, in.data(), out.data(), colours)
                      : detail::aces2_forward_run(*this, *m_data, in.data(), out.data(), colours);
 }
@@ -139,6 +167,7 @@ void Aces2Kernel::run_stage(Stage stage, std::span<const float> in, std::span<fl
 }
 
 double Aces2Kernel::error_of_largest() const noexcept {
+    if (!m_data->f.follows) return double_error_of_largest;
     return m_data->f.precise ? precise_error_of_largest : float_error_of_largest;
 }
 

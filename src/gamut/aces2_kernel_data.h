@@ -47,8 +47,11 @@ struct Aces2Params {
     /// The window of OpenColorIO's hue search around h's whole degree (Aces2Rendering).
     std::array<int, 2> hue_search{0, 1};
     /// The float forward's tonescale, gamut compression and output stage in double (peaks
-    /// above 250 cd/m²: docs/KERNELS.md).
+    /// above 100 cd/m²: docs/KERNELS.md).
     bool precise = false;
+    /// False where the limiting gamut reaches beyond the reach gamut AP1: every colour then
+    /// goes to the double chain (docs/KERNELS.md).
+    bool follows = true;
 };
 
 struct Aces2KernelData {

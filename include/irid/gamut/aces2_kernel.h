@@ -56,7 +56,8 @@ public:
 
     /// For a forward kernel, a bound on |run() − reference()| of any channel relative to the
     /// largest |channel| of reference()'s result, dark colours included: 1e-4 where the forward
-    /// runs in float (peaks up to 250 cd/m²), 3e-6 where its back end runs in double; 2.6 and
+    /// runs in float (peaks of 100 cd/m²), 3e-6 where its back end runs in double, 1e-7 where
+    /// every colour goes to the double chain (a limiting gamut beyond AP1); 2.6 and
     /// 3.3 times the largest measured (docs/KERNELS.md). What a caller that must round the result
     /// as the double path would (display_image's encoded files) checks against.
     [[nodiscard]] double error_of_largest() const noexcept;
