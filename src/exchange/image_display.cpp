@@ -62,9 +62,10 @@ struct SignalBounds {
         hlg = s.transfer().kind() == TransferFunction::Kind::hlg;
     }
 
-    /// The fit of `c`, and whether any colour within `e` of each channel could fit otherwise.
-    [[nodiscard]] Fit fit(const Vec3& c, double e, bool& ambiguous) const noexcept {
-        const double tol = fit_tolerance * peak;
+    /// The fit of `c`, with bounds met within `slack` more, and whether any colour within `e` of
+    /// each channel could fit otherwise.
+    [[nodiscard]] Fit fit(const Vec3& c, double e, bool& ambiguous, double slack = 0.0) const noexcept {
+        const double tol = fit_tolerance * peak + slack;
         const double y = luminance[0] * c[0] + luminance[1] * c[1] + luminance[2] * c[2];
         const double ey = e * luminance_abs;
         ambiguous = (y - ey > peak + tol) != (y + ey > peak + tol);
@@ -92,26 +93,6 @@ struct SignalBounds {
     }
 };
 
-/// Whether `encoding` holds every colour the display shows: the corners of the limiting cube
-/// [0, peak]³, through the chain's last steps (the white and linear scales, limiting RGB to
-/// XYZ, XYZ to the encoding's linear RGB), fit it. The cube maps to a parallelepiped, and the
-/// encoding's range (a cube, for every curve but HLG's) is convex: its corners decide.
-bool holds_display(const RgbSpace& encoding, const Aces2Output& output) {
-    const SignalBounds bounds(encoding);
-    if (bounds.hlg) return false;
-    const Aces2DisplaySpec& d = output.spec();
-    const Mat3 to_xyz = rgb_to_xyz_matrix(d.limiting, d.limiting_white);
-    const Converter to_encoding(color_space("xyz"), ColorSpace{SpaceFamily::rgb_linear, &encoding},
-                                d65_xy);
-    const double top = d.peak_nits / 100.0 * output.output_scale();
-    for (int k = 0; k < 8; ++k) {
-        const Vec3 xyz =
-            to_xyz * Vec3{(k & 1) ? top : 0.0, (k & 2) ? top : 0.0, (k & 4) ? top : 0.0};
-        bool ambiguous = false;
-        if (bounds.fit(to_encoding(xyz), 0.0, ambiguous) != Fit::inside) return false;
-    }
-    return true;
-}
 
 /// Counts of the report, gathered from threads.
 struct Counts {
@@ -210,6 +191,23 @@ std::string pixels(std::size_t n, const char* one, const char* many) {
 
 }  // namespace
 
+bool encoding_holds_display(const RgbSpace& encoding, const Aces2Output& output, double margin) {
+    const SignalBounds bounds(encoding);
+    if (bounds.hlg) return false;
+    const Aces2DisplaySpec& d = output.spec();
+    const Mat3 to_xyz = rgb_to_xyz_matrix(d.limiting, d.limiting_white);
+    const Converter to_encoding(color_space("xyz"), ColorSpace{SpaceFamily::rgb_linear, &encoding},
+                                d65_xy);
+    const double top = d.peak_nits / 100.0 * output.output_scale();
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 xyz =
+            to_xyz * Vec3{(k & 1) ? top : 0.0, (k & 2) ? top : 0.0, (k & 4) ? top : 0.0};
+        bool ambiguous = false;
+        if (bounds.fit(to_encoding(xyz), 0.0, ambiguous, margin * top) != Fit::inside) return false;
+    }
+    return true;
+}
+
 DisplayImagePlan plan_display_image(const std::string& view, const std::string& display,
                                     const std::optional<std::string>& to, io::ImageFormat format) {
     if (view != "aces2")
@@ -280,7 +278,7 @@ DisplayImageReport display_image(io::Image& image, const DisplayImagePlan& plan,
     const bool kernel = plan.encoded && plan.bits == 8 && linear.kernel_error_of_largest() &&
                         plan.encoding->transfer().kind() != TransferFunction::Kind::hlg;
     std::optional<SignalBounds> bounds;
-    if (plan.encoded && !holds_display(*plan.encoding, linear.output()))
+    if (plan.encoded && !encoding_holds_display(*plan.encoding, linear.output()))
         bounds.emplace(*plan.encoding);
     Counts counts;
     change_image_colours(image, channels,
@@ -326,7 +324,7 @@ DisplayImageReport display_image(io::Image& image, const DisplayImagePlan& plan,
         // shows, and always an EXR.
         const RgbSpace* own = default_display_encoding(plan.display);
         const std::string keeper =
-            own != nullptr && own != plan.encoding && holds_display(*own, linear.output())
+            own != nullptr && own != plan.encoding && encoding_holds_display(*own, linear.output())
                 ? fmt::format("the display's own encoding (--to {}) or an EXR keeps them",
                               own->name())
                 : std::string("an EXR keeps them");

@@ -2,6 +2,7 @@
 
 #include <irid/error.h>
 #include <irid/exchange/display_lut.h>
+#include <irid/exchange/image_display.h>
 #include <irid/gamut/aces2_display.h>
 #include <irid/gamut/pipeline.h>
 #include <irid/io/output_file.h>
@@ -106,6 +107,29 @@ void check_display_holds(const Aces2DisplaySpec& d, const ColorSpace& display) {
         d.name, fmt::format("{:g}", peak), color_space_name(space), fmt::format("{:g}", holds),
         own != nullptr ? own->name() : std::string("its encoding (CIE XYZ or other primaries)"),
         fmt::format("{:g}", holds)));
+}
+
+/// How far outside the config's display space a display's colours may reach, of its peak.
+/// P3's red primary lies just outside Rec.2020 (its blue channel there is −0.12 % of the peak;
+/// P3-D60's −0.13 %), and OpenColorIO's ACES configs show the P3-limited views on Rec.2100-PQ
+/// displays; the nearest mismatch beyond, a Rec.709-D60 view whose white was scaled for P3-D65
+/// shown on sRGB, reaches 0.93 %: its white clips (docs/DISPLAY.md, "OpenColorIO configs").
+constexpr double config_display_margin = 0.002;
+
+/// Refuses a display whose colours the config's display space does not hold: the view would
+/// bake codes below 0 or above 1, which the display clips channel by channel.
+void check_display_fits(const Aces2DisplaySpec& d, const ColorSpace& display) {
+    const ColorSpace space = canonical(display);
+    if (space.family != SpaceFamily::rgb_encoded) return;
+    if (encoding_holds_display(*space.rgb, Aces2Output(d), config_display_margin)) return;
+    const RgbSpace* own = default_display_encoding(d);
+    throw Error(fmt::format(
+        "the ACES 2.0 display {} shows colours outside the gamut of the config's display {}: the view "
+        "would need codes below 0 or above 1, which the display clips; make the config for {} (the "
+        "display's own encoding) or a wider display space, or name displays whose limiting gamut {} holds",
+        d.name, color_space_name(space),
+        own != nullptr ? own->name() : std::string("its encoding (CIE XYZ or other primaries)"),
+        color_space_name(space)));
 }
 
 }  // namespace
@@ -229,7 +253,10 @@ std::vector<std::string> ocio_aces2_displays(const OcioConfigOptions& o) {
         if (std::find(names.begin(), names.end(), d.name) != names.end()) {
             throw Error("the ACES 2.0 display " + d.name + " is named twice; each view is offered once");
         }
-        if (o.display.is_rgb()) check_display_holds(d, o.display);
+        if (o.display.is_rgb()) {
+            check_display_holds(d, o.display);
+            check_display_fits(d, o.display);
+        }
         names.push_back(d.name);
     }
     return names;

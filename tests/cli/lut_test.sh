@@ -242,6 +242,16 @@ expect_stderr_has "p3-d65-pq"
 [[ ! -e $TMP/cfg2 ]] && pass || fail "nothing written after the refusal" "$(ls "$TMP/cfg2")"
 run '' ocio-config --to p3-d65-pq --aces2 hdr-1000nit-p3-d65 --methods clamp --size 5 -o "$TMP/cfg-pq"
 expect_status 0
+expect_stdout_has "1 look and 1 ACES 2.0 view on"
+# A wider gamut than the display space's is refused too (review of issue 37: P3 on sRGB baked
+# codes from -0.51 to 1.09), and the P3 views fit Rec.2100-PQ as OpenColorIO's configs pair them.
+run '' ocio-config --to srgb --aces2 sdr-100nit-p3-d65 --methods clamp --size 5 -o "$TMP/cfg2"
+expect_status 2
+expect_stderr_has "gamut"
+expect_stderr_has "display-p3"
+[[ ! -e $TMP/cfg2 ]] && pass || fail "nothing written after the refusal" "$(ls "$TMP/cfg2")"
+run '' ocio-config --to rec2100-pq --aces2 hdr-1000nit-p3-d65,hdr-1000nit-rec2020 --methods clamp --size 5 -o "$TMP/cfg-2100"
+expect_status 0
 run '' ocio-config --aces2 custom:peak=100,limiting=rec709 -o "$TMP/cfg2"
 expect_status 2
 expect_stderr_has "built-in displays"
@@ -274,7 +284,7 @@ expect_stderr_has "not a folder"
 # One space as source and display: scene-linear negatives and values above 1 still need the clip.
 run '' ocio-config --from srgb-linear --to srgb-linear --methods clamp --size 5 -o "$TMP/same"
 expect_status 0
-expect_stdout_has "1 looks"
+expect_stdout_has "1 look and"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -8,6 +8,7 @@
 #include <irid/error.h>
 #include <irid/exchange/display_lut.h>
 #include <irid/exchange/ocio_config.h>
+#include <irid/gamut/aces2_display.h>
 
 #include <gtest/gtest.h>
 
@@ -207,8 +208,55 @@ TEST(OcioConfig, AnHdrDisplayIsRefusedOnADisplaySpaceThatCannotHoldItsPeak) {
     o.aces2_displays = std::vector<std::string>{"hdr-4000nit-rec2020"};
     EXPECT_EQ(ocio_aces2_displays(o).size(), 1U);
     o.display = color_space("srgb");
-    o.aces2_displays = std::vector<std::string>{"sdr-100nit-rec709", "sdr-100nit-p3-d65"};
+    o.aces2_displays = std::vector<std::string>{"sdr-100nit-rec709", "sdr-100nit-rec709-d60-in-rec709-d65"};
     EXPECT_EQ(ocio_aces2_displays(o).size(), 2U);
+}
+
+TEST(OcioConfig, ADisplayIsRefusedOnADisplaySpaceWhoseGamutCannotHoldIt) {
+    // Found by review of issue 37: --to srgb --aces2 sdr-100nit-p3-d65 baked codes from −0.51 to
+    // 1.09, silently: pure P3 green is (−0.22, 1.04, −0.08) in linear sRGB (the primaries of
+    // IEC 61966-2-1 and SMPTE EG 432-1), a red code of −0.51.
+    OcioConfigOptions o;
+    o.methods = {ClipMethod::clamp};
+    o.size = 5;
+    o.display = color_space("srgb");
+    o.aces2_displays = std::vector<std::string>{"sdr-100nit-p3-d65"};
+    try {
+        (void)ocio_aces2_displays(o);
+        ADD_FAILURE() << "a P3 display was taken on sRGB";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        for (const char* word : {"sdr-100nit-p3-d65", "gamut", "srgb", "display-p3"}) {
+            EXPECT_NE(m.find(word), std::string::npos) << word << " in: " << m;
+        }
+    }
+    EXPECT_THROW((void)make_ocio_config(o), Error);
+    // A Rec.709-D60 view whose white was scaled for P3-D65 has a white too red for sRGB (its red
+    // channel 0.9 % above 1): the Rec.709-D65 one is the view for sRGB.
+    o.aces2_displays = std::vector<std::string>{"sdr-100nit-rec709-d60-in-p3-d65"};
+    EXPECT_THROW((void)ocio_aces2_displays(o), Error);
+    // Rec.2020 views on P3 PQ: Rec.2020's primaries lie far outside P3.
+    o.display = color_space("p3-d65-pq");
+    o.aces2_displays = std::vector<std::string>{"hdr-1000nit-rec2020"};
+    EXPECT_THROW((void)ocio_aces2_displays(o), Error);
+    // P3's red lies just outside Rec.2020 (0.12 % of the peak in blue), and OpenColorIO's ACES
+    // configs show P3-limited views on Rec.2100-PQ: every built-in display fits Rec.2100-PQ.
+    o.display = color_space("rec2100-pq");
+    std::vector<std::string> all;
+    for (const Aces2DisplaySpec& d : aces2_displays()) all.push_back(d.name);
+    o.aces2_displays = all;
+    EXPECT_EQ(ocio_aces2_displays(o).size(), all.size());
+    o.display = color_space("rec2020");
+    o.aces2_displays = std::vector<std::string>{"sdr-100nit-p3-d65", "sdr-100nit-p3-d60-in-p3-d65"};
+    EXPECT_EQ(ocio_aces2_displays(o).size(), 2U);
+    // Every display fits its own encoding, and the views a config offers by default are those.
+    for (const Aces2DisplaySpec& d : aces2_displays()) {
+        const RgbSpace* own = default_display_encoding(d);
+        if (own == nullptr) continue;
+        o.display = color_space(own->name());
+        o.aces2_displays = std::vector<std::string>{d.name};
+        EXPECT_NO_THROW((void)ocio_aces2_displays(o)) << d.name;
+    }
 }
 
 }  // namespace

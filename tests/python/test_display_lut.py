@@ -85,6 +85,27 @@ def test_opencolorio_applies_the_baked_transform_within_its_measured_delta_e(
     assert mean <= mean_bound and p95 <= p95_bound and p99 <= p99_bound
 
 
+def test_a_display_wider_than_the_display_space_is_refused(tmp_path):
+    """Review of issue 37: --to srgb --aces2 sdr-100nit-p3-d65 baked codes from -0.51 to 1.09."""
+    with pytest.raises(ValueError, match="gamut"):
+        irid.write_ocio_config(tmp_path / "srgb", methods=["clamp"], size=5, aces2=["sdr-100nit-p3-d65"])
+    assert not (tmp_path / "srgb").exists()
+    # The pairing of OpenColorIO's ACES configs: P3-limited views on a Rec.2100-PQ display. Every
+    # code OpenColorIO gives through the view lies in [0, 1], the saturated reds included.
+    import PyOpenColorIO as ocio
+    path = irid.write_ocio_config(tmp_path / "pq", display="rec2100-pq", methods=["clamp"], size=5,
+                                  aces2=["hdr-1000nit-p3-d65"])
+    config = ocio.Config.CreateFromFile(path)
+    config.validate()
+    rng = np.random.default_rng(5)
+    scene = np.concatenate([rng.uniform(-0.5, 60.0, (20000, 3)),
+                            np.outer(np.geomspace(0.01, 60.0, 200), [1.0, 0.0, 0.0])]).astype(np.float32)
+    t = ocio.DisplayViewTransform(src="acescg-linear", display=config.getDefaultDisplay(),
+                                  view="ACES 2.0 hdr-1000nit-p3-d65")
+    config.getProcessor(t).getDefaultCPUProcessor().applyRGB(scene)
+    assert scene.min() >= 0.0 and scene.max() <= 1.0
+
+
 def test_the_ocio_config_offers_aces2_views_that_opencolorio_applies_as_the_transform(tmp_path, irid_cli):
     import shutil
     import PyOpenColorIO as ocio

@@ -90,9 +90,13 @@ int run_ocio_config(const OcioConfigArgs& a) {
     // The folder as given, or quoted with escapes when it holds what a terminal would act on.
     const std::string quoted = quote_untrusted(a.out, 1000);
     const std::string shown = quoted == "'" + a.out + "'" ? a.out : quoted;
-    fmt::print("{}/config.ocio: {} looks and {} ACES 2.0 views on the display '{} display' ({} LUTs in {}/luts)\n",
-               shown, config.luts.size(), config.display_luts.size(), color_space_name(o.display),
-               config.luts.size() + config.display_luts.size(), shown);
+    const auto counted = [](std::size_t n, const char* one, const char* many) {
+        return fmt::format("{} {}", n, n == 1 ? one : many);
+    };
+    fmt::print("{}/config.ocio: {} and {} on the display '{} display' ({} in {}/luts)\n", shown,
+               counted(config.luts.size(), "look", "looks"),
+               counted(config.display_luts.size(), "ACES 2.0 view", "ACES 2.0 views"), color_space_name(o.display),
+               counted(config.luts.size() + config.display_luts.size(), "LUT", "LUTs"), shown);
     return exit_success;
 }
 

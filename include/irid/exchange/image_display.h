@@ -79,6 +79,14 @@ struct DisplayImageReport {
     std::vector<std::string> notes;
 };
 
+/// Whether the encoding holds every colour the display shows: the corners of its limiting cube,
+/// through the chain's last steps into the encoding's linear RGB, lie within [0, P]³ with
+/// luminance at most P (P the linear value of signal 1, as DisplayImageReport counts), to 1e-9 P
+/// and `margin` of the display's peak more. The cube maps to a parallelepiped and the
+/// encoding's range is a cube, so the corners decide; never for HLG, whose range is not a cube
+/// in display light.
+[[nodiscard]] bool encoding_holds_display(const RgbSpace& encoding, const Aces2Output& output, double margin = 0.0);
+
 /// Converts the image's colours in place and tags it (tag_image, tag_image_xyz) for `format`.
 /// An integer file gets, for every sample, the code the double chain's value rounds to at
 /// plan.bits, stored as code / (2^bits − 1) so that the writer's rounding keeps it: for 8 bits the
