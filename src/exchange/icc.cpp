@@ -624,7 +624,17 @@ void tag_image_xyz(io::Image& image) {
     image.chromaticities.assign(exr_xyz_chromaticities.begin(), exr_xyz_chromaticities.end());
 }
 
+void check_file_holds(const RgbSpace& space, io::ImageFormat format) {
+    const TransferFunction::Kind kind = space.transfer().kind();
+    if (format != io::ImageFormat::jpeg || (kind != TransferFunction::Kind::pq && kind != TransferFunction::Kind::hlg))
+        return;
+    throw Error(fmt::format("{} in a JPEG: its 8 bits show {}'s steps, and no JPEG tag says the curve, so readers "
+                            "take the codes for sRGB; write PNG or TIFF (16 bits), or an EXR (linear)",
+                            space.name(), kind == TransferFunction::Kind::pq ? "PQ" : "HLG"));
+}
+
 void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format) {
+    check_file_holds(space, format);
     if (image.channels < 3) {  // an RGB profile or chromaticities do not describe grey
         image.color_space = format == io::ImageFormat::exr ? space.name() + "-linear" : space.name();
         image.icc_profile.clear();

@@ -245,7 +245,8 @@ DisplayImagePlan plan_display_image(const std::string& view, const std::string& 
     const TransferFunction::Kind kind = plan.encoding != nullptr ? plan.encoding->transfer().kind()
                                                                  : TransferFunction::Kind::linear;
     const bool hdr = kind == TransferFunction::Kind::pq || kind == TransferFunction::Kind::hlg;
-    plan.bits = hdr && format != io::ImageFormat::jpeg ? 16 : 8;
+    if (plan.encoding != nullptr) check_file_holds(*plan.encoding, format);
+    plan.bits = hdr ? 16 : 8;
     return plan;
 }
 

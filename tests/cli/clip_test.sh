@@ -450,6 +450,12 @@ expect_usage_error ".exr"
 run_image clip --method smits "$IMG/in.exr" "$IMG/fail3.jpg"
 expect_status 1
 expect_stderr_has "JPEG holds 1 (grey) or 3 (RGB), no alpha"
+# PQ and HLG in a JPEG: 8 lossy bits, and no tag says the curve (readers take sRGB). Refused
+# before the work, nothing written.
+run_image clip --method smits --to rec2100-pq "$IMG/green2020.exr" "$IMG/fail-pq.jpg"
+expect_usage_error "write PNG or TIFF (16 bits)"
+run_image clip --method smits --to rec2100-hlg "$IMG/green2020.exr" "$IMG/fail-hlg.jpg"
+expect_usage_error "HLG"
 run_image clip --method smits --max 2 "$IMG/in.exr" "$IMG/fail4.png"
 expect_usage_error "--max"
 run_image clip --method smits --bits 12 "$IMG/in.exr" "$IMG/fail5.png"

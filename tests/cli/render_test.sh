@@ -177,6 +177,9 @@ if [[ -z $verdict ]]; then pass; else fail "clipped EXR in [0, 1], linear EXR un
 # --linear must be an EXR (exit 2), and not the output itself.
 expect_refused 2 png ".exr" oil-slick "${SMALL[@]}" --linear "$REFUSED/linear.tif"
 expect_refused 2 png ".exr" oil-slick "${SMALL[@]}" --linear "$REFUSED/linear.jpg"
+# An HDR display's PQ in a JPEG (8 lossy bits, no tag for the curve): refused before the render.
+expect_refused 2 jpg "PNG or TIFF (16 bits)" oil-slick "${SMALL[@]}" --set render.view=aces2 \
+    --set 'render.display="hdr-1000nit-p3-d65"'
 rm -rf "$REFUSED" && mkdir -p "$REFUSED"
 printf 'the previous contents\n' >"$REFUSED/same.exr"
 run_render oil-slick "${SMALL[@]}" -o "$REFUSED/same.exr" --linear "$REFUSED/same.exr"

@@ -162,3 +162,16 @@ def test_custom_displays_other_encodings_and_refusals(irid_cli, tmp_path):
         assert not (tmp_path / "x.png").exists()
     r = run(irid_cli, "--display", "sdr-100nit-rec709", tmp_path / "missing.exr", tmp_path / "x.png", expect=1)
     assert "missing.exr" in r.stderr and not (tmp_path / "x.png").exists()
+    # PQ and HLG in a JPEG: 8 lossy bits and no tag for the curve (readers take the codes for
+    # sRGB); an SDR display's JPEG is written, with its profile.
+    for args, message in [(["--display", "hdr-1000nit-p3-d65"], "p3-d65-pq in a JPEG"),
+                          (["--display", "hdr-1000nit-rec2020", "--to", "rec2100-hlg"], "HLG's steps")]:
+        r = run(irid_cli, *args, tmp_path / "s.exr", tmp_path / "x.jpg", expect=2)
+        assert message in r.stderr and "PNG or TIFF" in r.stderr, (args, r.stderr)
+        assert not (tmp_path / "x.jpg").exists()
+    run(irid_cli, "--display", "sdr-100nit-p3-d65", tmp_path / "s.exr", tmp_path / "p3.jpg")
+    got, meta = irid.read_image(tmp_path / "p3.jpg")
+    assert irid.read_icc_profile(meta["icc_profile"])["description"] == "display-p3 (irid)"
+    with pytest.raises(ValueError, match="rec2100-pq in a JPEG"):
+        irid.write_image(tmp_path / "w.jpg", np.full((2, 2, 3), 0.5), color_space="rec2100-pq")
+    assert not (tmp_path / "w.jpg").exists()

@@ -149,6 +149,11 @@ int run_clip_image(const ClipOptions& o, const ClipPipeline& p) {
                              "write PNG or TIFF for 16");
         }
     }
+    try {
+        check_file_holds(p.destination(), format);
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
     if (encoded_out && max > 1.0) {
         throw UsageError("--max " + format_shortest(max) +
                          " is above 1, which PNG and TIFF (encoded " +

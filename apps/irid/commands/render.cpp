@@ -113,6 +113,7 @@ int run_render(const RenderCliOptions& o) {
     io::ImageFormat format;
     try {
         format = io::image_format_for(out);
+        check_file_holds(*find_rgb_space(scene.render.space), format);
     } catch (const Error& e) {
         throw UsageError(fmt::format("-o: {}", e.what()));
     }

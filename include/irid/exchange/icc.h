@@ -149,12 +149,20 @@ struct ImageSpace {
 /// and a profile or chromaticities to write (Python's write_image).
 void check_tags_agree(const io::Image& image, const RgbSpace& space, const std::string& name);
 
+/// Throws irid::Error when a file of `format` cannot hold values of `space` as its readers take
+/// them: PQ or HLG in a JPEG, whose 8 lossy bits show the curve's steps and which carries no tag
+/// for the curve (no ICC.1 curve holds it), so readers take its codes for sRGB. The message
+/// names PNG or TIFF (16 bits) and EXR. tag_image checks it too; a command checks it before
+/// its work.
+void check_file_holds(const RgbSpace& space, io::ImageFormat format);
+
 /// Marks `image`, about to be written to a file of `format`, as holding values of `space`:
 /// color_space = the space's name (with "-linear" for EXR), and for PNG and TIFF the space's
 /// ICC profile (make_icc_profile; none for a curve icc_curve_can_hold refuses: PQ, HLG, ACEScct), for EXR its chromaticities and, when the white is not D65's
 /// (0.3127, 0.3290), the adoptedNeutral that tells readers assuming D65 otherwise. EXR values
 /// are linear, PNG and TIFF values encoded with the space's curve. An image of fewer than three
-/// channels (grey) gets only the name: an RGB profile does not describe it.
+/// channels (grey) gets only the name: an RGB profile does not describe it. Throws irid::Error
+/// as check_file_holds does.
 void tag_image(io::Image& image, const RgbSpace& space, io::ImageFormat format);
 /// Marks `image`, about to be written to an EXR, as holding CIE XYZ (linear, in its R, G and B
 /// channels): color_space "xyz" and exr_xyz_chromaticities, which image_space() reads back as

@@ -28,7 +28,7 @@ struct DisplayImagePlan {
     /// Encoded with its curve (an integer file), else linear (EXR).
     bool encoded = false;
     /// Bits per sample of an integer file (the caller may change them before display_image):
-    /// 16 for PQ and HLG (whose 8-bit steps are visible), else 8; JPEG holds 8.
+    /// 16 for PQ and HLG (whose 8-bit steps are visible), else 8 (JPEG's only).
     int bits = 8;
 
     /// The encoding's name, "xyz" for CIE XYZ.
@@ -39,8 +39,9 @@ struct DisplayImagePlan {
 /// space's name, either form: the file decides encoded or linear; or "xyz"). Throws
 /// irid::UnknownNameError for an unknown view, display or space, and irid::Error for `to` that
 /// is neither an RGB space nor xyz, for CIE XYZ in an integer file (PNG, TIFF and JPEG have no
-/// tagged XYZ encoding: the message names EXR), and for a display without an RGB encoding of
-/// its own when `to` is not given and the file is not an EXR.
+/// tagged XYZ encoding: the message names EXR), for PQ or HLG in a JPEG (8 bits, and no tag
+/// for the curve), and for a display without an RGB encoding of its own when `to` is not given
+/// and the file is not an EXR.
 [[nodiscard]] DisplayImagePlan plan_display_image(const std::string& view, const std::string& display,
                                                   const std::optional<std::string>& to, io::ImageFormat format);
 
