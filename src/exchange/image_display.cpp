@@ -210,10 +210,8 @@ bool encoding_holds_display(const RgbSpace& encoding, const Aces2Output& output,
 
 DisplayImagePlan plan_display_image(const std::string& view, const std::string& display,
                                     const std::optional<std::string>& to, io::ImageFormat format) {
-    if (view != "aces2")
-        (void)DisplayTransform(DisplayTransformOptions{.view = view, .display = display});
     DisplayImagePlan plan;
-    plan.view = view;
+    plan.view = display_view(view);
     plan.display = aces2_display(display);
     plan.encoded = io::is_integer_format(format);
     bool xyz = false;

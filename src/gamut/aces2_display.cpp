@@ -72,8 +72,7 @@ std::vector<Aces2DisplaySpec> build_displays() {
 constexpr std::string_view ocio_prefix = "aces-output - aces2065-1_to_cie-xyz-d65 - ";
 constexpr std::string_view ocio_suffix = "_2.0";
 constexpr std::string_view custom_prefix = "custom:";
-constexpr std::string_view custom_form =
-    "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz][,linear-scale=S][,scale-white=yes|no]";
+constexpr std::string_view custom_form = aces2_custom_form;
 
 const RgbSpace& custom_space(std::string_view value, const char* key) {
     if (const RgbSpace* s = find_rgb_space(value)) return *s;
@@ -185,9 +184,11 @@ Aces2DisplaySpec parse_custom(std::string_view name, std::string_view body) {
                                     custom_form));
         }
     }
-    if (!peak || limiting == nullptr)
-        throw Error(fmt::format("custom display {} needs peak and limiting; the form is {}", quote_untrusted(name, 80),
+    if (!peak || limiting == nullptr) {
+        const char* missing = !peak && limiting == nullptr ? "peak= and limiting=" : !peak ? "peak=" : "limiting=";
+        throw Error(fmt::format("custom display {} has no {}; the form is {}", quote_untrusted(name, 80), missing,
                                 custom_form));
+    }
     if (encoding == nullptr && !encoding_xyz) encoding = limiting;
     return custom_aces2_display(*peak, *limiting, white.value_or(limiting->white()), encoding, linear_scale,
                                 scale_white);

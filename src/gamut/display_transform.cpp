@@ -29,12 +29,19 @@ std::vector<std::string> display_views() {
     return {"aces2"};
 }
 
+std::string display_view(std::string_view name) {
+    std::vector<std::string> views = display_views();
+    const std::string lower = ascii_lower(name);
+    for (const std::string& v : views) {
+        if (v == lower) return v;
+    }
+    const std::string message =
+        fmt::format("view: unknown view {}; known: {}", quote_untrusted(name), fmt::join(views, ", "));
+    throw UnknownNameError(message, std::move(views));
+}
+
 DisplayTransform::DisplayTransform(const DisplayTransformOptions& options) : m_options(options) {
-    if (options.view != "aces2")
-        throw UnknownNameError(
-            fmt::format("view: unknown view {}; known: {}", quote_untrusted(options.view),
-                        fmt::join(display_views(), ", ")),
-            display_views());
+    m_options.view = display_view(options.view);
     m_output = std::make_shared<const Aces2Output>(aces2_display(options.display));
     const ColorSpace source = space_of(options.source, "source");
     const ColorSpace target = space_of(options.target, "target");
@@ -45,9 +52,10 @@ DisplayTransform::DisplayTransform(const DisplayTransformOptions& options) : m_o
     const ColorSpace xyz = color_space("xyz");
     const ColorSpace& display = options.inverse ? source : target;
     if (!display_side_ok(display))
-        throw Error(fmt::format("{}: {} is not a display space; use xyz or an RGB space",
-                                options.inverse ? "source" : "target",
-                                options.inverse ? options.source : options.target));
+        throw Error(fmt::format("{} is not a display space: the display's side of the transform (the {}) "
+                                "takes xyz or an RGB space",
+                                quote_untrusted(options.inverse ? options.source : options.target),
+                                options.inverse ? "source, inverse" : "target"));
     // XYZ of the display is relative to D65 (the display's white), with Y = 1 at 100 cd/m².
     if (!options.inverse) {
         m_scene = std::make_unique<Converter>(source, aces, d65_xy);

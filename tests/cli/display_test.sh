@@ -22,6 +22,8 @@ expect_close "0.46536559,0.43852845,0.33688101" 1e-4
 expect_stdout_has "X,Y,Z"
 run $'0.5,0.4,0.3\n' display --view aces2 --display sdr-100nit-rec709 --to xyz
 expect_close "0.26260215,0.25207460,0.20617345" 1e-4
+run $'0.5,0.4,0.3\n' display --view ACES2 --display sdr-100nit-rec709 --to xyz   # a view's name in any case
+expect_close "0.26260215,0.25207460,0.20617345" 1e-4
 run $'0.5,0.4,0.3\n' display --display 'ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - SDR-100nit-REC709-D60-in-REC709-D65_2.0'
 expect_close "0.25147712,0.24029461,0.18221153" 1e-4
 run $'0.5,0.4,0.3\n' display --display hdr-108nit-p3-d65
@@ -158,7 +160,10 @@ expect_status 2
 expect_stderr_has "aces2"
 run $'1,1,1\n' display --display sdr-100nit-rec709 --to lab
 expect_status 2
-expect_stderr_has "not a display space"
+expect_stderr_has "'lab' is not a display space"
+run $'1,1,1\n' display --display custom:peak=100
+expect_status 2
+expect_stderr_has "has no limiting="
 run $'1,1,1\n' display --display sdr-100nit-rec709 --inverse --from oklab
 expect_status 2
 run $'1,1,1\n' display --display sdr-100nit-rec709 --to nonsense

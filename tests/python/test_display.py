@@ -89,6 +89,11 @@ def test_space_names_are_taken_in_any_case():
                           irid.display_transform(rgb, display="hdr-1000nit-rec2020", source="acescg",
                                                  target="rec2100-pq"))
     assert np.array_equal(irid.clip(rgb, "smits", source="SRGB"), irid.clip(rgb, "smits", source="srgb"))
+    # The view's name too (found by review).
+    assert np.array_equal(irid.display_transform(rgb, view="ACES2", display="sdr-100nit-rec709"),
+                          irid.display_transform(rgb, view="aces2", display="sdr-100nit-rec709"))
+    with pytest.raises(KeyError, match="known: aces2"):
+        irid.display_transform(rgb, view="aces2x", display="sdr-100nit-rec709")
     with pytest.raises(KeyError, match="srgb, srgb-linear"):
         irid.convert(rgb, "SRGBX", "xyz")
 

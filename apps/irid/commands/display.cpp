@@ -159,8 +159,7 @@ void add_display_command(CLI::App& app, Runner& runner) {
         "display", "Scene colours (CSV on stdin) through a display transform (ACES 2.0), or back with --inverse");
     cmd->add_option("--view", options->view, "The view: " + join(display_views()))->capture_default_str();
     cmd->add_option("--display", options->display,
-                    "The display: a name of irid display --list, or "
-                    "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz]");
+                    "The display: a name of irid display --list, or " + std::string(aces2_custom_form));
     cmd->add_option("--from", options->from,
                     "Input space (default aces2065-1; with --inverse xyz): " + join(space_names()));
     cmd->add_option("--to", options->to,

@@ -68,9 +68,12 @@ struct Aces2DisplaySpec {
                                                     const Xy& limiting_white, const RgbSpace* encoding,
                                                     double linear_scale = 1.0, bool scale_white = true);
 
+/// The form of a custom display's name (aces2_display), for messages and help.
+inline constexpr std::string_view aces2_custom_form =
+    "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz][,linear-scale=S][,scale-white=yes|no]";
+
 /// The display of a name: a built-in one by its short name or the full OCIO style, in any case;
-/// or a custom one, "custom:peak=NITS,limiting=SPACE[,white=W][,encoding=SPACE|xyz]
-/// [,linear-scale=S][,scale-white=yes|no]" (the keys in any order) with the spaces named as
+/// or a custom one, aces2_custom_form (the keys in any order) with the spaces named as
 /// irid/color/rgb.h names them, the limiting white W (default the limiting space's) a name of
 /// white_point_xy, "aces" (the ACES white), or its chromaticity "x,y" or "x:y", the encoding
 /// defaulting to the limiting space, the linear scale to 1 and scale-white to yes. A custom

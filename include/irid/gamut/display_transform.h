@@ -40,6 +40,9 @@ struct DisplayTransformOptions {
 
 /// The views a display transform knows.
 [[nodiscard]] std::vector<std::string> display_views();
+/// The view of a name, in any case, by its name in display_views(). Throws
+/// irid::UnknownNameError listing them for another name.
+[[nodiscard]] std::string display_view(std::string_view name);
 
 class DisplayTransform {
 public:
