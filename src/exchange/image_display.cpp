@@ -93,7 +93,6 @@ struct SignalBounds {
     }
 };
 
-
 /// Counts of the report, gathered from threads.
 struct Counts {
     std::atomic<std::size_t> too_bright{0}, out_of_gamut{0};

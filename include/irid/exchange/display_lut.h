@@ -14,8 +14,9 @@ namespace irid {
 
 /// The stops below the domain's top that the default log2 shaper of a display LUT spans: from
 /// ACES 2.0's forward limit (1024 at 100 cd/m², 4096 at 1000) down to its offset e = limit ·
-/// 2^-16 (2^-6 and 2^-4); log2(x + e) steps almost evenly in x below e (irid/exchange/lut.h). Of 14 to 24 stops, 16 gave the smallest p95 and p99 ΔE2000 at 33³ and 65³ on both
-/// displays measured, over random colours of the 18-stop and of the 24-stop domain alike
+/// 2^-16 (2^-6 and 2^-4); log2(x + e) steps almost evenly in x below e (irid/exchange/lut.h).
+/// Of 14 to 24 stops, 16 gave the smallest p95 and p99 ΔE2000 at 33³ and 65³ on both displays
+/// measured, over random colours of the 18-stop and of the 24-stop domain alike
 /// (scripts/display-lut-stops; docs/DISPLAY.md, "How closely the LUT stands for the transform").
 inline constexpr int display_lut_stops = 16;
 
