@@ -150,7 +150,8 @@ void main() {
 /**
  * Milliseconds per frame of a size × size full-screen quad into an RGBA32F target, for each
  * chunk of `chunks` ({name: chunk}): parameters vary across the screen (film index 1.2–2.4
- * along x, cos θ 1–0.1 along y, thickness 0–2000 nm in stripes, a dielectric base). After
+ * along x, cos θ 1–0 along y, grazing incidence included, thickness 0–2000 nm in stripes, a
+ * dielectric base, the right quarter under a clearcoat of 1.5). After
  * `warmup` frames, the chunks' frames are interleaved (so that a change of the machine's load
  * falls on all alike); each frame is synchronised by reading one pixel back. Returns
  * {name: {median, frames: [...]}}.
@@ -164,10 +165,11 @@ uniform vec2 viewSize;
 void main() {
     vec2 uv = gl_FragCoord.xy / viewSize;
     float eta2 = 1.2 + 1.2 * uv.x;
-    float cosTheta1 = 1.0 - 0.9 * uv.y;
+    float cosTheta1 = 1.0 - uv.y;
     float thickness = 2000.0 * fract(3.0 * uv.x + 7.0 * uv.y);
     vec3 baseF0 = vec3(0.02 + 0.16 * uv.y, 0.04, 0.02 + 0.16 * uv.x);
-    fragColor = vec4(evalIridescence(1.0, eta2, cosTheta1, thickness, baseF0), 1.0);
+    float outsideIOR = uv.x > 0.75 ? 1.5 : 1.0;
+    fragColor = vec4(evalIridescence(outsideIOR, eta2, cosTheta1, thickness, baseF0), 1.0);
 }
 `, name);
         programs[name] = { program, chunk, table: tableTextureOf(gl, chunk), frames: [] };

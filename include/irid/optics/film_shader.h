@@ -4,7 +4,9 @@
 // (three.js and glTF's KHR_materials_iridescence): `evalIridescence(outsideIOR, eta2, cosTheta1,
 // thinFilmThickness, baseF0)` sums the Airy reflectance's Fourier series against one small
 // table, the demodulated transform of the weighted colour-matching functions in the working
-// space's channels, as FourierFilm does on the CPU (fourier_film.h). FilmShader builds the table,
+// space's channels, as FourierFilm does on the CPU (fourier_film.h); where that series would need
+// too many terms, or the film is past its critical angle, it sums the Airy reflectance at
+// quadrature nodes instead. FilmShader builds the table,
 // the GLSL text and the table's JSON description, and evaluates the chunk's algorithm in single
 // precision on the CPU (evaluate(): the same table, interpolation and term loop as the GLSL, line
 // for line), so its accuracy can be measured without a GPU. The algorithm, the table's layout and
@@ -50,12 +52,20 @@ public:
     /// The term loop stops when the bound on the remaining terms (envelope × geometric tail of
     /// |G| |q|^m) falls below this, in units of the white (1 per channel).
     static constexpr double term_tolerance = 1e-5;
-    /// The most terms the loop sums.
-    static constexpr int max_terms = 64;
-    /// Below this cos θ inside the film (and past the film's critical angle) the chunk takes
-    /// the Airy reflectance at each channel's centre wavenumber instead of the series (whose
-    /// |q| → 1 there): a film near or past its own critical angle.
-    static constexpr double min_film_cosine = 0.1;
+    /// The most terms the series sums. A film whose series needs more (its faces both reflect
+    /// almost all and its path is short: a free film near grazing incidence) is taken by the
+    /// quadrature instead, as is a film past its own critical angle.
+    static constexpr int max_terms = 168;
+    /// The quadrature's nodes: Chebyshev points in wavenumber over 360–830 nm, the reflectance
+    /// summed against the 1 nm sums of their Lagrange polynomials.
+    static constexpr int quadrature_nodes = 24;
+    /// Indices above this are taken as this (a float's squares and products stay finite).
+    static constexpr double max_index = 1e3;
+    /// Thicknesses above this [nm] are taken as this: every term is past the table long before.
+    static constexpr double max_thickness_nm = 1e9;
+    /// (n1 cos θ1)² is kept this many n1² from 0, where the film's faces are 0/0 (their limit
+    /// is continuous there): within it the film is taken as just short of its critical angle.
+    static constexpr double min_film_q_sq = 1e-12;
     /// The name of the table's sampler uniform.
     static constexpr std::string_view uniform_name = "iridFilmTable";
 
@@ -92,12 +102,25 @@ public:
     [[nodiscard]] const std::array<double, envelope_count>& envelope() const noexcept {
         return m_envelope;
     }
+    /// The quadrature's wavenumbers [1/nm] and weights per channel: Σ_j weight_c,j R(ν_j) is the
+    /// 1 nm sum of the polynomial through R at the nodes (exact for degree < quadrature_nodes).
+    [[nodiscard]] const std::array<double, quadrature_nodes>& node_wavenumber() const noexcept {
+        return m_node_nu;
+    }
+    [[nodiscard]] const std::array<std::array<double, 3>, quadrature_nodes>& node_weight()
+        const noexcept {
+        return m_node_weight;
+    }
 
+    /// The chunk's branches: the bare interface (no film), the series, the quadrature of a film
+    /// whose phase is real, that of a film past its critical angle.
+    enum class Path { bare, series, fringes, tunnelling };
     /// What one evaluation did (for measuring the cost).
     struct Evaluation {
         Rgb rgb;
-        /// Terms of the series summed (0 for the closed forms).
+        /// Terms of the series summed (0 for the other paths).
         int terms = 0;
+        Path path = Path::series;
     };
     /// The chunk's evalIridescence in single precision, step for step as the GLSL does it.
     [[nodiscard]] Evaluation evaluate(float outside_ior, float eta2, float cos_theta1,
@@ -120,6 +143,8 @@ private:
     std::vector<double> m_wavenumber;
     std::array<double, 3> m_centre{}, m_white{};
     std::array<double, envelope_count> m_envelope{};
+    std::array<double, quadrature_nodes> m_node_nu{};
+    std::array<std::array<double, 3>, quadrature_nodes> m_node_weight{};
     int m_width = default_table_width;
     std::vector<float> m_table;
     std::string m_illuminant, m_space;
