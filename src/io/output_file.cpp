@@ -268,8 +268,34 @@ void write_output_file(const fs::path& path, std::string_view bytes) {
     file.commit();
 }
 
+namespace {
+
+/// An existing destination kept aside while a set of files replaces it.
+struct KeptAside {
+    fs::path destination, saved;
+};
+
+/// Keeps `destination` aside under a fresh name beside it: a hard link, or a copy where the file
+/// system makes none. Throws irid::Error naming the file.
+KeptAside keep_aside(const fs::path& destination) {
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const fs::path saved = destination.parent_path() / temporary_name();
+        if (::link(destination.c_str(), saved.c_str()) == 0) return {destination, saved};
+        if (errno == EEXIST) continue;
+        std::error_code ec;
+        if (fs::copy_file(destination, saved, fs::copy_options::none, ec)) return {destination, saved};
+        if (ec == std::errc::file_exists) continue;
+        throw Error(destination.string() + ": cannot keep the old file aside while the set is replaced: " +
+                    ec.message());
+    }
+    throw Error(destination.string() + ": cannot keep the old file aside (100 names taken)");
+}
+
+}  // namespace
+
 std::vector<fs::path> write_output_files(const fs::path& folder,
-                                         const std::vector<std::pair<std::string, std::string>>& files) {
+                                         const std::vector<std::pair<std::string, std::string>>& files,
+                                         const std::function<void(std::size_t)>& before_rename) {
     std::error_code ec;
     fs::create_directories(folder, ec);
     if (ec) throw Error("cannot make the folder " + folder.string() + ": " + ec.message());
@@ -280,7 +306,47 @@ std::vector<fs::path> write_output_files(const fs::path& folder,
         outputs.push_back(std::make_unique<OutputFile>(paths.back()));
         outputs.back()->write(bytes);
     }
-    for (const auto& out : outputs) out->commit();
+    std::vector<std::optional<KeptAside>> kept(outputs.size());
+    const auto drop_kept = [&kept] {
+        for (auto& k : kept) {
+            if (k) (void)::unlink(k->saved.c_str());
+        }
+    };
+    try {
+        for (std::size_t i = 0; i < outputs.size(); ++i) {
+            if (outputs[i]->replaces()) kept[i] = keep_aside(outputs[i]->destination());
+        }
+    } catch (...) {
+        drop_kept();
+        throw;
+    }
+    std::size_t renamed = 0;
+    try {
+        for (; renamed < outputs.size(); ++renamed) {
+            if (before_rename) before_rename(renamed);
+            outputs[renamed]->commit();
+        }
+    } catch (const std::exception& e) {
+        // Put the old set back: the files already renamed are restored from what was kept
+        // aside (a rename, atomic), or removed where there was none.
+        std::string unrestored;
+        for (std::size_t j = 0; j < renamed; ++j) {
+            if (kept[j]) {
+                if (::rename(kept[j]->saved.c_str(), kept[j]->destination.c_str()) != 0) {
+                    // The old file stays under its saved name: never removed.
+                    unrestored += "; the old " + kept[j]->destination.string() + " is kept as " +
+                                  kept[j]->saved.string();
+                }
+                kept[j].reset();
+            } else if (outputs[j]->kind() == OutputKind::file) {
+                (void)::unlink(outputs[j]->destination().c_str());
+            }
+        }
+        drop_kept();
+        throw Error(std::string(e.what()) +
+                    (unrestored.empty() ? "; the folder's files were left as they were" : unrestored));
+    }
+    drop_kept();
     return paths;
 }
 

@@ -185,6 +185,38 @@ TEST_F(OutputFiles, SeveralFilesAreRenamedOnlyOnceAllAreWritten) {
     EXPECT_EQ(slurp(paths[1]), "22");
 }
 
+TEST_F(OutputFiles, ASetIsReplacedWholeOrNotAtAll) {
+    // The old set of three; the third rename fails (injected), after the first two are in place:
+    // the old set comes back whole, with nothing left beside it. A set whose second file is new
+    // loses that file again.
+    spit(m_dir / "a.txt", "old a");
+    spit(m_dir / "c.txt", "old c");
+    spit(m_dir / "d.txt", "old d");
+    const auto fail_at = [](std::size_t k) {
+        return [k](std::size_t i) {
+            if (i == k) throw Error("injected rename failure");
+        };
+    };
+    EXPECT_THROW((void)write_output_files(m_dir, {{"a.txt", "new a"}, {"c.txt", "new c"}, {"d.txt", "new d"}},
+                                          fail_at(2)),
+                 Error);
+    EXPECT_EQ(slurp(m_dir / "a.txt"), "old a");
+    EXPECT_EQ(slurp(m_dir / "c.txt"), "old c");
+    EXPECT_EQ(slurp(m_dir / "d.txt"), "old d");
+    EXPECT_EQ(files(), (std::vector<std::string>{"a.txt", "c.txt", "d.txt"}));
+    EXPECT_THROW((void)write_output_files(m_dir, {{"a.txt", "new a"}, {"b.txt", "new b"}, {"d.txt", "new d"}},
+                                          fail_at(2)),
+                 Error);
+    EXPECT_EQ(slurp(m_dir / "a.txt"), "old a");
+    EXPECT_EQ(files(), (std::vector<std::string>{"a.txt", "c.txt", "d.txt"}));
+    // Without a failure the new set is in place, and nothing kept aside is left.
+    (void)write_output_files(m_dir, {{"a.txt", "new a"}, {"b.txt", "new b"}, {"d.txt", "new d"}});
+    EXPECT_EQ(slurp(m_dir / "a.txt"), "new a");
+    EXPECT_EQ(slurp(m_dir / "b.txt"), "new b");
+    EXPECT_EQ(slurp(m_dir / "d.txt"), "new d");
+    EXPECT_EQ(files(), (std::vector<std::string>{"a.txt", "b.txt", "c.txt", "d.txt"}));
+}
+
 TEST_F(OutputFiles, AnExistingFileKeepsItsPermissions) {
     spit(m_dir / "secret.csv", "old");
     ::chmod((m_dir / "secret.csv").c_str(), 0600);

@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -74,6 +75,10 @@ public:
     /// The path as given (every message names it).
     [[nodiscard]] const std::filesystem::path& target() const noexcept { return m_target; }
     [[nodiscard]] OutputKind kind() const noexcept { return m_kind; }
+    /// The file renamed over at commit (links followed), and whether it existed (for a stream:
+    /// the path opened, and false).
+    [[nodiscard]] const std::filesystem::path& destination() const noexcept { return m_final; }
+    [[nodiscard]] bool replaces() const noexcept { return m_replaces; }
     /// True when bytes can be written at any offset (write_at): a regular temporary file.
     [[nodiscard]] bool seekable() const noexcept { return m_kind == OutputKind::file; }
 
@@ -117,10 +122,15 @@ private:
 void write_output_file(const std::filesystem::path& path, std::string_view bytes);
 
 /// Writes files, each a name inside the folder and its bytes, into a folder (created if
-/// missing) as OutputFiles: every file is written to
-/// its temporary name before any is renamed into place, so a failure while writing (a full
-/// disk, a refused path) leaves every destination as it was. Returns the paths written.
+/// missing) as a set: every file is written to its temporary name before any is renamed into
+/// place, and the existing files are kept aside (a hard link, or a copy where the file system
+/// has none) until the last rename, so a failure at any point (a full disk, a refused path, a
+/// failed rename) leaves the old set or, once all are in place, the new one, never a mix:
+/// files already renamed are put back or removed. (A crash in between is not covered: nothing is
+/// fsync'd.) `before_rename(i)` runs before file i is renamed into place; tests inject a failure
+/// there. Returns the paths written.
 std::vector<std::filesystem::path> write_output_files(
-    const std::filesystem::path& folder, const std::vector<std::pair<std::string, std::string>>& files);
+    const std::filesystem::path& folder, const std::vector<std::pair<std::string, std::string>>& files,
+    const std::function<void(std::size_t)>& before_rename = {});
 
 }  // namespace irid::io
