@@ -67,7 +67,7 @@ const table = {
     glsl: read(path.join(shaderDir, 'irid_iridescence.glsl')),
     data: fs.readFileSync(path.join(shaderDir, 'irid_film_table.f32')).toString('base64'),
     width: meta.width, height: meta.height, filter: meta.filter, uniform: meta.uniform,
-    illuminant: meta.illuminant, space: meta.space,
+    illuminant: meta.illuminant, space: meta.space, primaries: meta.primaries, white: meta.white,
 };
 
 // The modules, each a data: URL in the import map.

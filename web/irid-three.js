@@ -5,24 +5,28 @@
 //   import { loadIridTable, applyIridescence } from './irid-three.js';
 //   const table = await loadIridTable('irid-shader/');      // the folder `irid shader` wrote
 //   const material = new THREE.MeshPhysicalMaterial({ iridescence: 1, iridescenceIOR: 1.33,
-//                                                     iridescenceThicknessRange: [100, 800] });
+//       iridescenceThicknessMinimum: 100, iridescenceThicknessMaximum: 800 });
 //   applyIridescence(material, { table });
 //
 // Only the definition of evalIridescence changes (three.js's `iridescence_fragment` chunk);
 // where and how three.js calls it (lights_fragment_begin: the film over the dielectric
 // specular colour and over the metallic base colour, mixed by metalness) and every iridescence
-// parameter of the material (iridescence, iridescenceMap, iridescenceIOR,
-// iridescenceThicknessRange, iridescenceThicknessMap) stay three.js's.
+// parameter of the material (iridescence, iridescenceMap, iridescenceIOR, the thickness minimum,
+// maximum and map) stay three.js's. The patch composes with the material's own onBeforeCompile
+// and customProgramCacheKey, is replaced by a second applyIridescence (another table), and is
+// kept by clone() and copy() (docs/OPTICS.md, "In the browser").
 import * as THREE from 'three';
 
 /**
- * The table object: {glsl, data, width, height, filter, uniform, illuminant, space}.
+ * The table object: {glsl, data, width, height, filter, uniform, illuminant, space, primaries,
+ * white}. primaries: [rx, ry, gx, gy, bx, by] and white: [x, y] of the working space the chunk's
+ * linear RGB is in (irid_film_table.json records them).
  * glsl: the chunk's text (defines evalIridescence and declares `uniform highp sampler2D
  * <uniform>;`); data: Float32Array of width × height RGBA texels, row-major; filter: 'linear'
  * (sampled with texture(), linear filtering) or 'nearest' (texelFetch).
  */
 export function makeIridTable({ glsl, data, width, height, filter, uniform = 'iridFilmTable',
-                                illuminant, space }) {
+                                illuminant, space, primaries, white }) {
     if (typeof glsl !== 'string' || !glsl.includes('evalIridescence')) {
         throw new Error('irid table: glsl must be the chunk text that defines evalIridescence');
     }
@@ -37,7 +41,16 @@ export function makeIridTable({ glsl, data, width, height, filter, uniform = 'ir
         throw new Error(`irid table: filter '${filter}' is neither 'linear' nor 'nearest'`);
     }
     if (!glsl.includes(uniform)) throw new Error(`irid table: the chunk does not declare '${uniform}'`);
-    return { glsl, data, width, height, filter, uniform, illuminant, space };
+    const numbers = (v, n) => Array.isArray(v) && v.length === n && v.every(Number.isFinite);
+    if (!numbers(primaries, 6) || !numbers(white, 2)) {
+        throw new Error('irid table: primaries must be 6 numbers and white 2 (irid_film_table.json records them; '
+                        + 'a table from before they were recorded must be written again with irid shader)');
+    }
+    if (typeof illuminant !== 'string' || typeof space !== 'string') {
+        throw new Error('irid table: illuminant and space must be the names irid_film_table.json records');
+    }
+    return { glsl, data, width, height, filter, uniform, illuminant, space, primaries: [...primaries],
+             white: [...white] };
 }
 
 /**
@@ -62,7 +75,8 @@ export async function loadIridTable(baseUrl) {
     const data = new Float32Array(bytes.byteLength / 4);
     for (let i = 0; i < data.length; ++i) data[i] = view.getFloat32(4 * i, true);
     return makeIridTable({ glsl, data, width: meta.width, height: meta.height, filter: meta.filter,
-                           uniform: meta.uniform, illuminant: meta.illuminant, space: meta.space });
+                           uniform: meta.uniform, illuminant: meta.illuminant, space: meta.space,
+                           primaries: meta.primaries, white: meta.white });
 }
 
 /** The table as a THREE.DataTexture: RGBA float, the table's filter, no mipmaps, no colour
@@ -90,29 +104,122 @@ function hashOf(text) {
 }
 
 /**
- * Patches a MeshPhysicalMaterial (or any material whose fragment shader includes
- * <iridescence_fragment>) to evaluate irid's chunk. Keeps a previous onBeforeCompile and
- * customProgramCacheKey (runs and extends them). Returns the DataTexture bound to the table's
- * uniform (dispose it with the material).
+ * Throws unless the table's colours are what the renderer takes them for: linear RGB in the
+ * primaries and white of three.js's working colour space, under the illuminant the scene's
+ * white lights stand for.
  */
-export function applyIridescence(material, { table }) {
-    const t = makeIridTable(table);
-    const texture = iridTableTexture(t);
-    const chunk = `#ifdef USE_IRIDESCENCE\n${t.glsl}\n#endif\n`;
-    const key = `irid-iridescence-${hashOf(`${t.filter}\n${t.glsl}`)}`;
-    const previousCompile = material.onBeforeCompile;
-    const previousKey = material.customProgramCacheKey;
-    material.onBeforeCompile = function (shader, renderer) {
-        previousCompile.call(this, shader, renderer);
-        if (!shader.fragmentShader.includes('#include <iridescence_fragment>')) {
-            throw new Error('applyIridescence: the fragment shader has no #include <iridescence_fragment>');
-        }
-        shader.fragmentShader = shader.fragmentShader.replace('#include <iridescence_fragment>', chunk);
-        shader.uniforms[t.uniform] = { value: texture };
+export function checkIridTable(table, { workingColorSpace = THREE.ColorManagement.workingColorSpace,
+                                        illuminant = 'D65' } = {}) {
+    const space = THREE.ColorManagement.spaces[workingColorSpace];
+    if (!space) throw new Error(`applyIridescence: three.js knows no colour space '${workingColorSpace}'`);
+    const close = (a, b) => a.length === b.length && a.every((v, i) => Math.abs(v - b[i]) < 5e-4);
+    if (!close(table.primaries, space.primaries) || !close(table.white, space.whitePoint)) {
+        throw new Error(`applyIridescence: the table is in ${table.space} (primaries ${table.primaries.join(', ')}; `
+                        + `white ${table.white.join(', ')}), but three.js's working colour space `
+                        + `'${workingColorSpace}' has primaries ${space.primaries.join(', ')} and white `
+                        + `${space.whitePoint.join(', ')}: write the table with irid shader --space for that `
+                        + 'space, or pass the workingColorSpace the renderer uses');
+    }
+    if (table.illuminant.toLowerCase() !== String(illuminant).toLowerCase()) {
+        throw new Error(`applyIridescence: the table's colours are under illuminant ${table.illuminant}, but `
+                        + `the scene's white light is taken as ${illuminant}: write the table with irid shader `
+                        + `--illuminant ${illuminant}, or pass illuminant: '${table.illuminant}' if that is `
+                        + 'what the lights stand for');
+    }
+}
+
+// The patched materials: material → {table, key, texture, own: {compile, key}, wrapper}. `own`
+// is the material's own onBeforeCompile and customProgramCacheKey (null: three's default), kept
+// so that a second applyIridescence replaces the patch rather than stacking a second one.
+const patches = new WeakMap();
+
+function install(material, table, key) {
+    const previous = patches.get(material);
+    let own;
+    if (previous && material.onBeforeCompile === previous.wrapper.compile
+        && material.customProgramCacheKey === previous.wrapper.key) {
+        own = previous.own;
+    } else {
+        // The material's own functions (three's defaults where it has none of its own).
+        const ownKey = Object.prototype.hasOwnProperty.call(material, 'customProgramCacheKey')
+            ? material.customProgramCacheKey : null;
+        own = { compile: material.onBeforeCompile, key: ownKey };
+    }
+    if (previous) {
+        material.removeEventListener('dispose', previous.dispose);
+        previous.texture.dispose();
+    }
+    const texture = iridTableTexture(table);
+    const chunk = `#ifdef USE_IRIDESCENCE\n${table.glsl}\n#endif\n`;
+    const wrapper = {
+        compile(shader, renderer) {
+            own.compile.call(this, shader, renderer);
+            if (!shader.fragmentShader.includes('#include <iridescence_fragment>')) {
+                throw new Error('applyIridescence: the fragment shader has no #include <iridescence_fragment>');
+            }
+            shader.fragmentShader = shader.fragmentShader.replace('#include <iridescence_fragment>', chunk);
+            shader.uniforms[table.uniform] = { value: texture };
+        },
+        // three's default key is the text of onBeforeCompile, which is now this wrapper for every
+        // patched material: the material's own function's text stands in for it.
+        key() {
+            const base = own.key ? own.key.call(this) : own.compile.toString();
+            return `${base}|${key}`;
+        },
     };
-    material.customProgramCacheKey = function () {
-        return `${previousKey.call(this)}|${key}`;
-    };
+    const dispose = () => texture.dispose();
+    material.addEventListener('dispose', dispose);
+    material.onBeforeCompile = wrapper.compile;
+    material.customProgramCacheKey = wrapper.key;
     material.needsUpdate = true;
+    patches.set(material, { table, key, texture, own, wrapper, dispose });
     return texture;
+}
+
+function uninstall(material) {
+    const patch = patches.get(material);
+    if (!patch) return;
+    material.removeEventListener('dispose', patch.dispose);
+    patch.texture.dispose();
+    if (material.onBeforeCompile === patch.wrapper.compile) material.onBeforeCompile = patch.own.compile;
+    if (material.customProgramCacheKey === patch.wrapper.key) {
+        if (patch.own.key) material.customProgramCacheKey = patch.own.key;
+        else delete material.customProgramCacheKey;
+    }
+    patches.delete(material);
+    material.needsUpdate = true;
+}
+
+// clone() and copy() carry the patch: Material.prototype.copy (which every material's copy
+// reaches through super.copy) is wrapped once, so that a copy of a patched material is patched
+// with the same table, and a copy of an unpatched one is not.
+let copyWrapped = false;
+function keepPatchOnCopy() {
+    if (copyWrapped) return;
+    copyWrapped = true;
+    const copy = THREE.Material.prototype.copy;
+    THREE.Material.prototype.copy = function (source) {
+        const out = copy.call(this, source);
+        const patch = patches.get(source);
+        if (patch) install(this, patch.table, patch.key);
+        else uninstall(this);
+        return out;
+    };
+}
+
+/**
+ * Patches a MeshPhysicalMaterial (or any material whose fragment shader includes
+ * <iridescence_fragment>) to evaluate irid's chunk, after checking the table against the
+ * renderer (checkIridTable: workingColorSpace, default three's working colour space;
+ * illuminant, default 'D65'). The material's own onBeforeCompile runs first and its
+ * customProgramCacheKey (or three's default, the text of its onBeforeCompile) is extended, so
+ * materials that patch their shaders differently keep programs of their own. Applying again
+ * replaces the patch (a new table). The table's DataTexture is the material's: it is disposed
+ * with the material (its 'dispose' event) or when the patch is replaced; it is returned.
+ */
+export function applyIridescence(material, { table, workingColorSpace, illuminant } = {}) {
+    const t = makeIridTable(table);
+    checkIridTable(t, { workingColorSpace, illuminant });
+    keepPatchOnCopy();
+    return install(material, t, `irid-iridescence-${hashOf(`${t.filter}\n${t.glsl}`)}`);
 }

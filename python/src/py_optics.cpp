@@ -274,10 +274,10 @@ void add_optics(py::module_& m) {
         [](const std::filesystem::path& dir, const std::string& lang, const std::string& illuminant,
            const std::string& space) {
             const ShaderLanguage language = parse_shader_language(lang);
-            const Colorimeter colorimeter = film_shader_colorimeter(illuminant, space);
+            const FilmShaderSetup setup = film_shader_setup(illuminant, space);
             std::vector<std::string> paths;
             py::gil_scoped_release release;
-            const FilmShader shader(colorimeter, illuminant, space);
+            const FilmShader shader(setup.colorimeter, setup.illuminant, setup.space);
             try {
                 for (const auto& p : io::write_output_files(dir, shader.files(language))) paths.push_back(p.string());
             } catch (const Error& e) {

@@ -176,6 +176,25 @@ DenseSpectrum illuminant_by_name(std::string_view name) {
                            {"D50", "D55", "D65", "D75", "A", "E", "D<CCT>", "blackbody:<T>"});
 }
 
+std::string canonical_illuminant_name(std::string_view name) {
+    (void)illuminant_by_name(name);  // throws for a name it does not know
+    const std::string n = ascii_lower(name);
+    double value = 0.0;
+    // The shortest digits that read back to the value (std::to_chars without a precision).
+    const auto shortest = [](std::string prefix, double v) {
+        char text[32];
+        const auto result = std::to_chars(text, text + sizeof text, v);
+        prefix.append(text, result.ptr);
+        return prefix;
+    };
+    if (n.size() > 1 && n[0] == 'd' && parse_double(std::string_view(n).substr(1), value))
+        return shortest("D", value);
+    constexpr std::string_view bb = "blackbody:";
+    if (n.rfind(bb, 0) == 0 && parse_double(std::string_view(n).substr(bb.size()), value))
+        return shortest("blackbody:", value);
+    return n == "a" ? "A" : "E";
+}
+
 std::vector<std::string> white_point_names() { return {"D65", "D50", "D55", "D75", "A", "C", "E"}; }
 
 Xy white_point_xy(std::string_view name) {

@@ -29,14 +29,58 @@ ShaderLanguage parse_shader_language(std::string_view name) {
                            {"glsl"});
 }
 
-Colorimeter film_shader_colorimeter(std::string_view illuminant, std::string_view space) {
-    const RgbSpace* rgb = find_rgb_space(space);
-    if (rgb == nullptr) {
-        throw UnknownNameError(fmt::format("space {} is unknown; valid: {}", quote_untrusted(space),
-                                           fmt::join(rgb_space_names(), ", ")),
-                               rgb_space_names());
+namespace {
+
+/// The working space whose primaries and white an encoding has, or nullptr.
+const RgbSpace* working_space_of(const RgbSpace& encoding) {
+    const auto near = [](const Xy& a, const Xy& b) {
+        return std::fabs(a.x - b.x) < 1e-4 && std::fabs(a.y - b.y) < 1e-4;
+    };
+    for (const RgbSpace* w : builtin_rgb_spaces()) {
+        const RgbPrimaries& p = w->primaries();
+        const RgbPrimaries& q = encoding.primaries();
+        if (near(p.red, q.red) && near(p.green, q.green) && near(p.blue, q.blue) &&
+            near(w->white(), encoding.white()))
+            return w;
     }
-    return Colorimeter(illuminant_by_name(illuminant), Observer::cie1931_2deg, *rgb);
+    return nullptr;
+}
+
+std::string linear_name(const RgbSpace& space) {
+    return space.transfer().kind() == TransferFunction::Kind::linear ? space.name()
+                                                                      : space.name() + "-linear";
+}
+
+}  // namespace
+
+FilmShaderSetup film_shader_setup(std::string_view illuminant, std::string_view space) {
+    const std::string illuminant_name = canonical_illuminant_name(illuminant);
+    std::vector<std::string> names;
+    for (const RgbSpace* w : builtin_rgb_spaces()) {
+        names.push_back(w->name());
+        if (w->transfer().kind() != TransferFunction::Kind::linear) names.push_back(linear_name(*w));
+    }
+    const RgbSpace* rgb = nullptr;
+    for (const RgbSpace* w : builtin_rgb_spaces()) {
+        if (same_name(space, w->name()) || same_name(space, linear_name(*w))) rgb = w;
+    }
+    if (rgb == nullptr) {
+        if (const RgbSpace* encoding = find_rgb_space(space)) {
+            const RgbSpace* working = working_space_of(*encoding);
+            throw Error(fmt::format(
+                "space {} is an encoding, not linear light, and the chunk returns linear light in "
+                "a working space's primaries{}; valid: {}",
+                quote_untrusted(space),
+                working != nullptr ? fmt::format(" (for its primaries: {})", linear_name(*working))
+                                   : std::string(),
+                fmt::join(names, ", ")));
+        }
+        throw UnknownNameError(fmt::format("space {} is unknown; valid: {}", quote_untrusted(space),
+                                           fmt::join(names, ", ")),
+                               names);
+    }
+    return {Colorimeter(illuminant_by_name(illuminant), Observer::cie1931_2deg, *rgb),
+            illuminant_name, linear_name(*rgb)};
 }
 
 namespace {
@@ -64,7 +108,9 @@ FilmShader::FilmShader(const Colorimeter& colorimeter, std::string illuminant_na
                        std::string space_name, int table_width)
     : m_width(table_width),
       m_illuminant(std::move(illuminant_name)),
-      m_space(std::move(space_name)) {
+      m_space(std::move(space_name)),
+      m_primaries(colorimeter.rgb_space().primaries()),
+      m_white_xy(colorimeter.rgb_space().white()) {
     if (table_width < min_table_width || table_width > max_table_width) {
         throw Error(fmt::format("table width {} is out of range; valid: {} to {}", table_width,
                                 min_table_width, max_table_width));
@@ -186,6 +232,9 @@ std::string FilmShader::table_json() const {
     j["uniform"] = uniform_name;
     j["illuminant"] = m_illuminant;
     j["space"] = m_space;
+    const RgbPrimaries& p = m_primaries;
+    j["primaries"] = {p.red.x, p.red.y, p.green.x, p.green.y, p.blue.x, p.blue.y};
+    j["white"] = {m_white_xy.x, m_white_xy.y};
     j["filter"] = "nearest";
     return j.dump(2) + "\n";
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The contract of `irid shader`: --lang glsl writes DIR/irid_iridescence.glsl (a GLSL ES 3.00
 # chunk defining three.js's evalIridescence, one uniform), DIR/irid_film_table.f32 (width ×
-# height RGBA float32 texels) and DIR/irid_film_table.json (exactly six keys); bad usage exits 2
+# height RGBA float32 texels) and DIR/irid_film_table.json (exactly eight keys); bad usage exits 2
 # naming the option and writes nothing; a folder that cannot be made exits 1. The chunk is
 # compiled by glslangValidator as GLSL ES 3.00, alone and after stand-ins for the helpers
 # three.js's own chunks define (a clash of names would fail). Its numbers are
@@ -37,10 +37,12 @@ for f in irid_iridescence.glsl irid_film_table.f32 irid_film_table.json; do
     expect_stdout_has "$out/$f"
 done
 keys=$(python3 -c 'import json, sys; print(",".join(sorted(json.load(open(sys.argv[1])))))' "$out/irid_film_table.json")
-check '[[ $keys == "filter,height,illuminant,space,uniform,width" ]]' "the JSON's keys are exactly the six (got $keys)"
+check '[[ $keys == "filter,height,illuminant,primaries,space,uniform,white,width" ]]' "the JSON's keys are exactly the eight (got $keys)"
 check '[[ $(json_field "$out/irid_film_table.json" uniform) == iridFilmTable ]]' "uniform iridFilmTable"
 check '[[ $(json_field "$out/irid_film_table.json" illuminant) == D65 ]]' "illuminant D65 by default"
-check '[[ $(json_field "$out/irid_film_table.json" space) == srgb ]]' "space srgb by default"
+check '[[ $(json_field "$out/irid_film_table.json" space) == srgb-linear ]]' "space srgb-linear by default (the chunk's values are linear)"
+check '[[ $(json_field "$out/irid_film_table.json" primaries) == "[0.64, 0.33, 0.3, 0.6, 0.15, 0.06]" ]]' "sRGB's primaries recorded"
+check '[[ $(json_field "$out/irid_film_table.json" white) == "[0.3127, 0.329]" ]]' "D65's white recorded"
 check '[[ $(json_field "$out/irid_film_table.json" filter) == nearest ]]' "filter nearest (texelFetch)"
 width=$(json_field "$out/irid_film_table.json" width)
 height=$(json_field "$out/irid_film_table.json" height)
@@ -87,7 +89,15 @@ expect_status 0
 run '' shader --lang glsl --illuminant D50 --space display-p3 -o "$TMP/p3"
 expect_status 0
 check '[[ $(json_field "$TMP/p3/irid_film_table.json" illuminant) == D50 ]]' "illuminant D50 recorded"
-check '[[ $(json_field "$TMP/p3/irid_film_table.json" space) == display-p3 ]]' "space display-p3 recorded"
+check '[[ $(json_field "$TMP/p3/irid_film_table.json" space) == display-p3-linear ]]' "space display-p3-linear recorded"
+# Names in any case, written one way: the same files as the canonical names give.
+run '' shader --lang glsl --illuminant d50 --space Display-P3-Linear -o "$TMP/p3b"
+expect_status 0
+check 'cmp -s "$TMP/p3/irid_film_table.json" "$TMP/p3b/irid_film_table.json"' "d50 / Display-P3-Linear recorded as D50 / display-p3-linear"
+check 'cmp -s "$TMP/p3/irid_iridescence.glsl" "$TMP/p3b/irid_iridescence.glsl"' "and the same chunk"
+run '' shader --lang glsl --illuminant "D6500 " -o "$TMP/d6500"
+expect_status 0
+check '[[ $(json_field "$TMP/d6500/irid_film_table.json" illuminant) == D6500 ]]' "'D6500 ' recorded as D6500, with no space"
 check '! cmp -s "$TMP/p3/irid_film_table.f32" "$out/irid_film_table.f32"' "another table for another colorimeter"
 # Written again over itself: the same bytes.
 cp "$out/irid_film_table.f32" "$TMP/before.f32"
@@ -115,6 +125,16 @@ expect_status 2
 expect_stderr_has "--space"
 expect_stderr_has "srgb"
 check '[[ ! -e $TMP/no4 ]]' "nothing written for an unknown space"
+# Encodings are refused, naming the working space of their primaries: the chunk returns linear
+# light (their tables would be the linear ones under another name).
+for encoding in rec2100-pq acescct p3-d65-pq rec1886; do
+    run '' shader --lang glsl --space "$encoding" -o "$TMP/no-$encoding"
+    expect_status 2
+    expect_stderr_has "encoding"
+    check '[[ ! -e $TMP/no-$encoding ]]' "nothing written for the encoding $encoding"
+done
+run '' shader --lang glsl --space rec2100-pq -o "$TMP/no5"
+expect_stderr_has "rec2020-linear"
 printf 'x' >"$TMP/a-file"
 run '' shader --lang glsl -o "$TMP/a-file"
 expect_status 2

@@ -258,6 +258,39 @@ TEST(FilmShader, FilmPastItsCriticalAngleTunnelsAsTheExactFilm) {
     EXPECT_NEAR(thick.g, 1.0, 1e-6);
 }
 
+TEST(FilmShader, GrazingFreeFilmsAndThickFilmsUnderAClearcoat) {
+    // Where the chunk once broke (issue 38): a free film of 1.33, 0.1 nm, at 89.9° was grey 0.5
+    // (the film: 0.029, 0.040, 0.059, its 64-term series cut short); 2.4 at 0.001 nm and 89°
+    // gave 0.063 where the film reflects about 1e-6; water in glass, 20 µm, at 62° was a
+    // saturated orange where the film is grey (0.586, 0.629, 0.628; its Airy reflectance at one
+    // wavenumber per channel taken for the band).
+    const Rgb a = shader().evaluate(1.0f, 1.33f, static_cast<float>(std::cos(89.9 * pi / 180.0)),
+                                    0.1f, {0.0f, 0.0f, 0.0f})
+                      .rgb;
+    EXPECT_NEAR(a.r, 0.029, 1e-3);
+    EXPECT_NEAR(a.g, 0.040, 1e-3);
+    EXPECT_NEAR(a.b, 0.059, 1e-3);
+    const Rgb b = shader().evaluate(1.0f, 2.4f, static_cast<float>(std::cos(89.0 * pi / 180.0)),
+                                    0.001f, {0.0f, 0.0f, 0.0f})
+                      .rgb;
+    EXPECT_LT(std::max({b.r, b.g, b.b}), 1e-5);
+    const float glass = f0_of(1.5);
+    for (const double deg : {61.8, 62.0}) {
+        const Rgb c = shader().evaluate(1.5f, 1.33f, static_cast<float>(std::cos(deg * pi / 180.0)),
+                                        20000.0f, {glass, glass, glass})
+                          .rgb;
+        if (deg == 62.0) {
+            EXPECT_NEAR(c.r, 0.586, 1e-3);
+            EXPECT_NEAR(c.g, 0.629, 1e-3);
+            EXPECT_NEAR(c.b, 0.628, 1e-3);
+        }
+        // Grey on both sides of where the chunk once switched method: no channel far from the mean.
+        const double mean = (c.r + c.g + c.b) / 3.0;
+        EXPECT_LT(std::max({std::fabs(c.r - mean), std::fabs(c.g - mean), std::fabs(c.b - mean)}), 0.05)
+            << deg;
+    }
+}
+
 TEST(FilmShader, HostileInputsGiveFiniteColours) {
     const float inf = std::numeric_limits<float>::max();
     int checked = 0;
@@ -346,7 +379,7 @@ TEST(FilmShader, JsonDescribesTheTable) {
     std::set<std::string> keys;
     for (const auto& item : j.items()) keys.insert(item.key());
     EXPECT_EQ(keys, (std::set<std::string>{"width", "height", "uniform", "illuminant", "space",
-                                           "filter"}));
+                                           "primaries", "white", "filter"}));
     EXPECT_EQ(j["width"], 300);
     EXPECT_EQ(j["height"], 2);
     EXPECT_EQ(j["uniform"], "iridFilmTable");
@@ -405,12 +438,29 @@ TEST(FilmShader, ChunkHasOneUniformNoVersionAndPrefixedHelpers) {
 TEST(FilmShader, ColorimeterAndLanguageByName) {
     EXPECT_EQ(parse_shader_language("glsl"), ShaderLanguage::glsl);
     EXPECT_THROW((void)parse_shader_language("hlsl"), UnknownNameError);
-    EXPECT_THROW((void)film_shader_colorimeter("D65", "no-such-space"), UnknownNameError);
-    EXPECT_THROW((void)film_shader_colorimeter("D12", "srgb"), Error);
+    EXPECT_THROW((void)film_shader_setup("D65", "no-such-space"), UnknownNameError);
+    EXPECT_THROW((void)film_shader_setup("D12", "srgb"), Error);
     EXPECT_THROW(FilmShader(d65_srgb(), "D65", "srgb", 8), Error);
-    const Colorimeter d50 = film_shader_colorimeter("D50", "display-p3");
-    const FilmShader s(d50, "D50", "display-p3");
-    EXPECT_NE(s.glsl().find("illuminant D50, space display-p3"), std::string::npos);
+    // Names in any case, written one way; the space as its linear form.
+    const FilmShaderSetup p3 = film_shader_setup("d50", "DISPLAY-P3");
+    EXPECT_EQ(p3.illuminant, "D50");
+    EXPECT_EQ(p3.space, "display-p3-linear");
+    EXPECT_EQ(film_shader_setup("D65", "srgb-linear").space, "srgb-linear");
+    EXPECT_EQ(film_shader_setup("D65", "ACEScg").space, "acescg");
+    EXPECT_EQ(film_shader_setup("d9300 ", "srgb").illuminant, "D9300");
+    // An encoding is refused, naming the working space of its primaries.
+    try {
+        (void)film_shader_setup("D65", "rec2100-pq");
+        ADD_FAILURE() << "rec2100-pq accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("rec2020-linear"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW((void)film_shader_setup("D65", "acescct"), Error);
+    const FilmShader s(p3.colorimeter, p3.illuminant, p3.space);
+    EXPECT_NE(s.glsl().find("illuminant D50, space display-p3-linear"), std::string::npos);
+    const nlohmann::json j = nlohmann::json::parse(s.table_json());
+    EXPECT_EQ(j["primaries"], nlohmann::json::array({0.68, 0.32, 0.265, 0.69, 0.15, 0.06}));
+    EXPECT_EQ(j["white"], nlohmann::json::array({0.3127, 0.329}));
 }
 
 }  // namespace

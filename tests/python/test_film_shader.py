@@ -26,9 +26,11 @@ def test_writes_the_three_files(tmp_path):
     assert [os.path.basename(p) for p in paths] == [
         "irid_iridescence.glsl", "irid_film_table.f32", "irid_film_table.json"]
     meta, table = read_table(paths)
-    assert set(meta) == {"width", "height", "uniform", "illuminant", "space", "filter"}
+    assert set(meta) == {"width", "height", "uniform", "illuminant", "space", "primaries", "white",
+                         "filter"}
     assert (meta["uniform"], meta["illuminant"], meta["space"], meta["filter"]) == (
-        "iridFilmTable", "D65", "srgb", "nearest")
+        "iridFilmTable", "D65", "srgb-linear", "nearest")
+    assert (meta["primaries"], meta["white"]) == ([0.64, 0.33, 0.3, 0.6, 0.15, 0.06], [0.3127, 0.329])
     assert os.path.getsize(paths[1]) == meta["width"] * meta["height"] * 16
     chunk = open(paths[0]).read()
     assert "vec3 evalIridescence(float outsideIOR, float eta2, float cosTheta1, " \
@@ -63,9 +65,14 @@ def test_table_is_the_transform_of_the_weights(tmp_path):
 
 
 def test_other_colorimeters_and_refusals(tmp_path):
-    paths = irid.write_film_shader(tmp_path, illuminant="D50", space="display-p3")
+    paths = irid.write_film_shader(tmp_path, illuminant="d50", space="Display-P3")
     meta, _ = read_table(paths)
-    assert (meta["illuminant"], meta["space"]) == ("D50", "display-p3")
+    # Recorded one way whatever the case; the space as the linear form the values are in.
+    assert (meta["illuminant"], meta["space"]) == ("D50", "display-p3-linear")
+    assert meta["primaries"] == [0.68, 0.32, 0.265, 0.69, 0.15, 0.06]
+    with pytest.raises(ValueError, match="rec2020-linear"):
+        irid.write_film_shader(tmp_path / "pq", space="rec2100-pq")
+    assert not (tmp_path / "pq").exists()
     with pytest.raises(KeyError, match="glsl"):
         irid.write_film_shader(tmp_path / "a", lang="hlsl")
     with pytest.raises(KeyError, match="srgb"):

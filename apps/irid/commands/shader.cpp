@@ -7,6 +7,7 @@
 // this file parses and writes.
 #include "../cli_common.h"
 
+#include <irid/color/illuminant.h>
 #include <irid/error.h>
 #include <irid/io/output_file.h>
 #include <irid/optics/film_shader.h>
@@ -46,13 +47,13 @@ int run_shader(const ShaderArgs& a) {
         }
     };
     // Checked one at a time, so that the message names the option at fault.
-    (void)usage("--illuminant", [&] { return film_shader_colorimeter(a.illuminant, "srgb"); });
-    const Colorimeter colorimeter =
-        usage("--space", [&] { return film_shader_colorimeter(a.illuminant, a.space); });
+    (void)usage("--illuminant", [&] { return canonical_illuminant_name(a.illuminant); });
+    const FilmShaderSetup setup =
+        usage("--space", [&] { return film_shader_setup(a.illuminant, a.space); });
     if (std::filesystem::exists(a.out) && !std::filesystem::is_directory(a.out)) {
         throw UsageError("-o " + quote_untrusted(a.out, 200) + " exists and is not a folder");
     }
-    const FilmShader shader(colorimeter, a.illuminant, a.space);
+    const FilmShader shader(setup.colorimeter, setup.illuminant, setup.space);
     for (const std::filesystem::path& p : io::write_output_files(a.out, shader.files(language))) {
         fmt::print("{}\n", p.string());
     }
@@ -73,8 +74,9 @@ void add_shader_command(CLI::App& app, Runner& runner) {
         ->capture_default_str();
     cmd->add_option(
            "--space", a->space,
-           "The working space of the chunk's linear RGB: srgb, display-p3, rec2020, adobe-rgb, "
-           "smpte-c, ntsc1953, acescg, ...")
+           "The working space of the chunk's linear RGB, by name or NAME-linear: srgb, "
+           "display-p3, rec2020, adobe-rgb, smpte-c, ntsc1953, aces2065-1, acescg (an encoding "
+           "such as rec2100-pq is refused: the chunk returns linear light)")
         ->capture_default_str();
     cmd->add_option("-o,--output", a->out, "The folder (created if missing)");
     cmd->footer(

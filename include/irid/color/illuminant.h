@@ -65,6 +65,11 @@ struct DaylightWeights {
 /// Names accepted by white_point_xy, for messages.
 [[nodiscard]] std::vector<std::string> white_point_names();
 
+/// The name illuminant_by_name reads `name` as, written one way: "D65", "D50", "D55", "D75", "A",
+/// "E", "D<CCT>" (the number as it reads back, "D9300"), "blackbody:<T>". Throws as
+/// illuminant_by_name does for a name it does not know.
+[[nodiscard]] std::string canonical_illuminant_name(std::string_view name);
+
 /// The chromaticity of a named white (CIE 1931 2°). D65 is (0.31270, 0.32900), the value of
 /// ITU-R BT.709 and IEC 61966-2-1; D50 (0.34567, 0.35850), D55 (0.33242, 0.34743), D75
 /// (0.29902, 0.31485), A (0.44757, 0.40745), C (0.31006, 0.31616) from CIE 015:2004 Table T.3;

@@ -13,6 +13,7 @@
 // the measured errors are in docs/OPTICS.md ("In a renderer").
 
 #include <irid/color/colorimeter.h>
+#include <irid/color/rgb.h>
 #include <irid/color/types.h>
 
 #include <array>
@@ -131,7 +132,9 @@ public:
     [[nodiscard]] std::string glsl() const;
     /// The table as little-endian float32 RGBA texels, row-major.
     [[nodiscard]] std::string table_bytes() const;
-    /// {"width", "height", "uniform", "illuminant", "space", "filter": "nearest"}.
+    /// {"width", "height", "uniform", "illuminant", "space", "primaries": [rx, ry, gx, gy, bx,
+    /// by], "white": [x, y], "filter": "nearest"}: the primaries and white are the working
+    /// space's, for a renderer to check against its own (irid-three.js does).
     [[nodiscard]] std::string table_json() const;
     /// The three files, each its name and bytes: irid_iridescence.glsl, irid_film_table.f32,
     /// irid_film_table.json.
@@ -148,11 +151,21 @@ private:
     int m_width = default_table_width;
     std::vector<float> m_table;
     std::string m_illuminant, m_space;
+    RgbPrimaries m_primaries{};
+    Xy m_white_xy{};
 };
 
-/// The colorimeter a shader is built for: an illuminant by name (illuminant_by_name), CIE 1931,
-/// and a working space by name (find_rgb_space). Throws irid::Error naming what is unknown.
-[[nodiscard]] Colorimeter film_shader_colorimeter(std::string_view illuminant,
-                                                  std::string_view space);
+/// What a shader is built for, from the names a user gives (irid shader --illuminant, --space):
+/// the colorimeter (the illuminant, CIE 1931, the working space) and the names the files record,
+/// written one way whatever the case of the input: the illuminant as canonical_illuminant_name
+/// writes it, the space as the linear form three.js names ("srgb-linear", "display-p3-linear",
+/// "rec2020-linear", "acescg"). The chunk returns linear light, so a working space is taken by
+/// its name or NAME-linear; an encoding (acescct, rec1886, rec2100-pq, ...) is refused, naming the
+/// working space of its primaries. Throws UnknownNameError (unknown) or irid::Error (refused).
+struct FilmShaderSetup {
+    Colorimeter colorimeter;
+    std::string illuminant, space;
+};
+[[nodiscard]] FilmShaderSetup film_shader_setup(std::string_view illuminant, std::string_view space);
 
 }  // namespace irid
