@@ -565,14 +565,18 @@ def write_film_shader(directory, lang="glsl", illuminant="D65", space="srgb"):
 
     directory: the folder (created if missing). lang: "glsl", a GLSL ES 3.00 chunk defining
     three.js's ``vec3 evalIridescence(float outsideIOR, float eta2, float cosTheta1, float
-    thinFilmThickness, vec3 baseF0)`` with one uniform, ``iridFilmTable``. illuminant and space:
-    as :func:`film_color` takes them (CIE 1931 observer); the chunk returns linear RGB of that
-    space, a perfect mirror (1, 1, 1).
+    thinFilmThickness, vec3 baseF0)`` with one uniform, ``iridFilmTable``; or "wgsl", the same in
+    WGSL (``irid_eval`` taking the table as a ``texture_2d<f32>``, and ``evalIridescence`` reading
+    it from ``@group(0) @binding(0)``). illuminant: as :func:`film_color` takes it; space: a
+    working space by its name or NAME-linear (CIE 1931 observer). The chunk returns linear RGB
+    of that space, a perfect mirror (1, 1, 1); names are recorded one way (``D50``,
+    ``display-p3-linear``), whatever their case.
 
-    Returns the paths written: irid_iridescence.glsl, irid_film_table.f32 (little-endian float32
-    RGBA texels, row-major) and irid_film_table.json (width, height, uniform, illuminant, space,
-    filter). Raises KeyError for an unknown language, illuminant or space, OSError when a file
-    cannot be written.
+    Returns the paths written: irid_iridescence.glsl (or .wgsl), irid_film_table.f32
+    (little-endian float32 RGBA texels, row-major) and irid_film_table.json (width, height,
+    uniform, illuminant, space, primaries, white, filter), replaced as a set. Raises KeyError for
+    an unknown language, illuminant or space, ValueError for an encoding (rec2100-pq, acescct:
+    the chunk's values are linear), OSError when a file cannot be written.
 
     >>> import json, os, tempfile, irid
     >>> with tempfile.TemporaryDirectory() as folder:

@@ -25,8 +25,10 @@ namespace irid {
 
 ShaderLanguage parse_shader_language(std::string_view name) {
     if (name == "glsl") return ShaderLanguage::glsl;
-    throw UnknownNameError("shader language " + quote_untrusted(name) + " is unknown; valid: glsl",
-                           {"glsl"});
+    if (name == "wgsl") return ShaderLanguage::wgsl;
+    throw UnknownNameError(
+        "shader language " + quote_untrusted(name) + " is unknown; valid: glsl, wgsl",
+        {"glsl", "wgsl"});
 }
 
 namespace {
@@ -240,12 +242,12 @@ std::string FilmShader::table_json() const {
 }
 
 std::vector<std::pair<std::string, std::string>> FilmShader::files(ShaderLanguage language) const {
+    std::pair<std::string, std::string> chunk;
     switch (language) {
-        case ShaderLanguage::glsl: break;
+        case ShaderLanguage::glsl: chunk = {"irid_iridescence.glsl", glsl()}; break;
+        case ShaderLanguage::wgsl: chunk = {"irid_iridescence.wgsl", wgsl()}; break;
     }
-    return {{"irid_iridescence.glsl", glsl()},
-            {"irid_film_table.f32", table_bytes()},
-            {"irid_film_table.json", table_json()}};
+    return {chunk, {"irid_film_table.f32", table_bytes()}, {"irid_film_table.json", table_json()}};
 }
 
 }  // namespace irid

@@ -16,7 +16,10 @@ render target read back: three.js's stock chunk and irid's chunk against irid's 
    bases 1-3, 0-89.99 deg with grazing views and the band about a film's critical angle dense,
    0-30 um) against the alias-free exact film (the Fourier colour): mean <= 0.01, max <= 0.5
    (issue 38's goal).
-3. The cost of a full-screen quad at N² (default 1024) of each chunk: reported, not asserted.
+3. The WGSL chunk (`irid shader --lang wgsl`) in Chromium's WebGPU (SwiftShader's Vulkan adapter),
+   in a compute shader, on the same grids: the same goals, and the GLSL chunk's colours within
+   WGSL_GLSL_MAX_RGB.
+4. The cost of a full-screen quad at N² (default 1024) of each chunk: reported, not asserted.
 
 Needs the Python module on PYTHONPATH (ctest sets it), node + web/node_modules and chromium
 (scripts/install-deps installs them). Prints what it measured; exits 1 when a check fails, 2
@@ -56,6 +59,9 @@ HARNESS_MAX_RGB = 5e-3
 ATLAS_MEAN_TOLERANCE = 0.02
 GOAL_MEAN, GOAL_MAX = 0.05, 0.5
 DOMAIN_MEAN, DOMAIN_MAX = 0.01, 0.5
+# The two chunks are one algorithm line for line; only the two compilers' float arithmetic may
+# differ (measured on SwiftShader: 0, the same code generator behind WebGL 2 and WebGPU).
+WGSL_GLSL_MAX_RGB = 1e-4
 
 check = Checks()
 
@@ -137,14 +143,16 @@ def cli_spot_checks(cli, params, exact):
           f"max |RGB| {worst_rgb:.2g}, max |Lab| {worst_lab:.2g}")
 
 
-def run_browser(work, grids, table, size):
-    """Runs tests/browser/film_grid_page.js in Chromium on the grids; returns its result."""
+def run_browser(work, grids, table, size, wgsl=None):
+    """Runs tests/browser/film_grid_page.js in Chromium on the grids; returns its result. With
+    wgsl (the folder `irid shader --lang wgsl` wrote), the WGSL chunk is evaluated too."""
     for name, params in grids.items():
         params.astype("<f4").tofile(os.path.join(work, f"{name}.f32"))
     page_input = {"grids": {name: f"/grids/{name}.f32" for name in grids},
                   "table": "/table/" if table else None,
+                  "wgsl": "/wgsl/" if wgsl else None,
                   "timing": {"size": size, "frames": 5, "warmup": 1}}
-    serve = {"grids": work, **({"table": table} if table else {})}
+    serve = {"grids": work, **({"table": table} if table else {}), **({"wgsl": wgsl} if wgsl else {})}
     return run_page(work, "/tests/film_grid_page.js", page_input, serve)
 
 
@@ -212,9 +220,15 @@ def main():
 
         params, exact, gltf, labels, belcour = issue_grid()
         atlas_params, atlas_exact, atlas_gltf, atlas_labels = atlas_grid()
+        wgsl = os.path.join(work, "wgsl")
+        run = subprocess.run([cli, "shader", "--lang", "wgsl", "-o", wgsl], capture_output=True, text=True,
+                             timeout=300)
+        check(run.returncode == 0, "irid shader --lang wgsl -o DIR writes the WGSL chunk and the table",
+              f"exit {run.returncode} {run.stderr.strip()}")
         domain, domain_exact, domain_labels = domain_grid()
         cli_spot_checks(cli, params, exact)
-        out = run_browser(work, {"issue": params, "atlas": atlas_params, "domain": domain}, table, args.size)
+        out = run_browser(work, {"issue": params, "atlas": atlas_params, "domain": domain}, table, args.size,
+                          wgsl if run.returncode == 0 else None)
 
     print(f"browser: three.js r{out['three']}, {out['renderer']}, {', '.join(out['extensions'])}")
     grid_name = (f"issue 28's grid: film n {FILM_INDICES}, base n {BASE_INDICES}, outside 1, "
@@ -281,7 +295,22 @@ def main():
               f"(worst at {domain_labels[w]}, {domain[w, 3]:g} nm, "
               f"{np.degrees(np.arccos(min(domain[w, 2], 1.0))):.3f} deg); max |RGB| {np.abs(got - domain_exact).max():.2g}")
 
-    # 3. The cost.
+    # 3. The WGSL chunk in WebGPU.
+    if "wgsl" in out["grids"]["domain"]:
+        print(f"WebGPU adapter: {out['webgpu']}")
+        for grid, want, goal in (("issue", np.maximum(exact, 0.0), (GOAL_MEAN, GOAL_MAX)),
+                                 ("domain", domain_exact, (DOMAIN_MEAN, DOMAIN_MAX))):
+            got = np.array(out["grids"][grid]["wgsl"]).reshape(-1, 3)
+            de = delta_e(got, want)
+            check(de.mean() <= goal[0] and de.max() <= goal[1],
+                  f"the WGSL chunk in WebGPU on the {grid} grid vs the exact film (mean ΔE2000 <= {goal[0]}, "
+                  f"max <= {goal[1]})", stats(de))
+            glsl = np.array(out["grids"][grid]["irid"]).reshape(-1, 3)
+            gap = float(np.abs(got - glsl).max())
+            check(gap <= WGSL_GLSL_MAX_RGB,
+                  f"WGSL in WebGPU = GLSL in WebGL 2 on the {grid} grid (max |RGB| <= {WGSL_GLSL_MAX_RGB})", f"{gap:.2g}")
+
+    # 4. The cost.
     timing = out["timing"]
     line = ", ".join(f"{name} {t['median']:.1f} ms (frames {', '.join(f'{x:.0f}' for x in t['frames'])})"
                      for name, t in timing.items())

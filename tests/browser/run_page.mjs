@@ -1,5 +1,5 @@
 // Runs one page module in headless Chromium (WebGL2 through SwiftShader) and writes what it
-// returns as JSON. The page is served from local folders only, under http://irid.test/ (no
+// returns as JSON. The page is served from local folders only, under https://irid.test/ (no
 // network: every request is answered from disk or refused).
 //
 //   node tests/browser/run_page.mjs --serve NAME=DIR ... --module /NAME/file.js
@@ -20,7 +20,7 @@ import { fileURLToPath, pathToFileURL } from 'node:url';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const webDir = path.resolve(here, '../../web');
-const origin = 'http://irid.test';
+const origin = 'https://irid.test';
 
 function usage(message) {
     console.error(`run_page.mjs: ${message}`);
@@ -98,8 +98,10 @@ const problems = [];
 const browser = await chromium.launch({
     executablePath: chromiumPath,
     headless: true,
+    // WebGL 2 through SwiftShader, and WebGPU on SwiftShader's Vulkan adapter.
     args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-           '--ignore-gpu-blocklist', '--disable-gpu-watchdog'],
+           '--ignore-gpu-blocklist', '--disable-gpu-watchdog', '--enable-unsafe-webgpu',
+           '--use-webgpu-adapter=swiftshader'],
 });
 let status = 0;
 try {

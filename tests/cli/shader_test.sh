@@ -85,6 +85,16 @@ glslangValidator "$TMP/three.frag" >"$TMP/out" 2>"$TMP/err"
 STATUS=$?
 expect_status 0
 
+# --- WGSL: the same table, the chunk in WebGPU's language ---------------------------------
+run '' shader --lang wgsl -o "$TMP/wgsl"
+expect_status 0
+check '[[ -s $TMP/wgsl/irid_iridescence.wgsl && ! -e $TMP/wgsl/irid_iridescence.glsl ]]' "irid_iridescence.wgsl written"
+check 'cmp -s "$TMP/wgsl/irid_film_table.f32" "$out/irid_film_table.f32"' "the same table as for GLSL"
+check 'cmp -s "$TMP/wgsl/irid_film_table.json" "$out/irid_film_table.json"' "the same table description"
+check 'grep -q "^fn evalIridescence(outsideIOR: f32, eta2: f32, cosTheta1: f32, thinFilmThickness: f32, baseF0: vec3f) -> vec3f {" "$TMP/wgsl/irid_iridescence.wgsl"' "evalIridescence of the GLSL signature"
+check 'grep -q "^fn irid_eval(table: texture_2d<f32>, " "$TMP/wgsl/irid_iridescence.wgsl"' "irid_eval taking the table"
+check '[[ $(grep -c "@binding" "$TMP/wgsl/irid_iridescence.wgsl") == 1 ]]' "one binding, the table's"
+
 # --- another colorimeter ------------------------------------------------------------------
 run '' shader --lang glsl --illuminant D50 --space display-p3 -o "$TMP/p3"
 expect_status 0

@@ -73,8 +73,11 @@ def test_other_colorimeters_and_refusals(tmp_path):
     with pytest.raises(ValueError, match="rec2020-linear"):
         irid.write_film_shader(tmp_path / "pq", space="rec2100-pq")
     assert not (tmp_path / "pq").exists()
-    with pytest.raises(KeyError, match="glsl"):
+    with pytest.raises(KeyError, match="wgsl"):
         irid.write_film_shader(tmp_path / "a", lang="hlsl")
+    wgsl = irid.write_film_shader(tmp_path / "wgsl", lang="wgsl")
+    assert os.path.basename(wgsl[0]) == "irid_iridescence.wgsl"
+    assert "fn irid_eval(table: texture_2d<f32>," in open(wgsl[0]).read()
     with pytest.raises(KeyError, match="srgb"):
         irid.write_film_shader(tmp_path / "b", space="no-such-space")
     with pytest.raises((KeyError, ValueError)):

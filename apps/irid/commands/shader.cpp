@@ -1,7 +1,7 @@
 // irid shader: the exact film colour as a shader chunk and its table, for real-time renderers.
 //
-//   irid shader --lang glsl [--illuminant D65] [--space srgb] -o DIR
-//     → DIR/irid_iridescence.glsl, DIR/irid_film_table.f32, DIR/irid_film_table.json
+//   irid shader --lang glsl|wgsl [--illuminant D65] [--space srgb] -o DIR
+//     → DIR/irid_iridescence.glsl (.wgsl), DIR/irid_film_table.f32, DIR/irid_film_table.json
 //
 // The chunk, the table and their description are the library's (irid/optics/film_shader.h);
 // this file parses and writes.
@@ -30,7 +30,7 @@ struct ShaderArgs {
 };
 
 int run_shader(const ShaderArgs& a) {
-    if (a.lang.empty()) throw UsageError("--lang is required; valid: glsl");
+    if (a.lang.empty()) throw UsageError("--lang is required; valid: glsl, wgsl");
     if (a.out.empty())
         throw UsageError("-o DIR is required (the folder of the chunk and its table)");
     ShaderLanguage language{};
@@ -68,8 +68,9 @@ void add_shader_command(CLI::App& app, Runner& runner) {
         "shader",
         "Write the exact thin-film colour as a shader chunk for real-time renderers "
         "(evalIridescence, as three.js and glTF's KHR_materials_iridescence call it) with its "
-        "table: DIR/irid_iridescence.glsl, DIR/irid_film_table.f32, DIR/irid_film_table.json");
-    cmd->add_option("--lang", a->lang, "The shading language: glsl (GLSL ES 3.00)");
+        "table: DIR/irid_iridescence.glsl (or .wgsl), DIR/irid_film_table.f32, "
+        "DIR/irid_film_table.json");
+    cmd->add_option("--lang", a->lang, "The shading language: glsl (GLSL ES 3.00) or wgsl (WebGPU)");
     cmd->add_option("--illuminant", a->illuminant, "D65, D50, A, E, D<CCT>, blackbody:<T>")
         ->capture_default_str();
     cmd->add_option(

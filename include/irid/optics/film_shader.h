@@ -25,9 +25,10 @@
 
 namespace irid {
 
-/// The languages FilmShader writes: "glsl" (GLSL ES 3.00) only.
-enum class ShaderLanguage { glsl };
-/// The language of a name ("glsl"); throws UnknownNameError listing the names.
+/// The languages FilmShader writes: "glsl" (GLSL ES 3.00, WebGL 2 and three.js's WebGLRenderer)
+/// and "wgsl" (WebGPU's shading language).
+enum class ShaderLanguage { glsl, wgsl };
+/// The language of a name ("glsl", "wgsl"); throws UnknownNameError listing the names.
 [[nodiscard]] ShaderLanguage parse_shader_language(std::string_view name);
 
 class FilmShader {
@@ -130,14 +131,23 @@ public:
 
     /// The GLSL ES 3.00 chunk (no #version line, one uniform, helpers prefixed irid_).
     [[nodiscard]] std::string glsl() const;
+    /// The WGSL chunk: irid_eval(table: texture_2d<f32>, outsideIOR, eta2, cosTheta1,
+    /// thinFilmThickness, baseF0) -> vec3f and its helpers (prefixed irid_ / Irid), then, after
+    /// wgsl_binding_marker, the table's binding (@group(0) @binding(0)) and evalIridescence of
+    /// the GLSL signature, which reads it. The same algorithm as glsl(), line for line.
+    [[nodiscard]] std::string wgsl() const;
+    /// The line before the WGSL's module-scope binding: a node system that binds the table itself
+    /// (three.js's TSL) takes the text before it.
+    static constexpr std::string_view wgsl_binding_marker =
+        "\n// --- evalIridescence with the table bound at module scope ---\n";
     /// The table as little-endian float32 RGBA texels, row-major.
     [[nodiscard]] std::string table_bytes() const;
     /// {"width", "height", "uniform", "illuminant", "space", "primaries": [rx, ry, gx, gy, bx,
     /// by], "white": [x, y], "filter": "nearest"}: the primaries and white are the working
     /// space's, for a renderer to check against its own (irid-three.js does).
     [[nodiscard]] std::string table_json() const;
-    /// The three files, each its name and bytes: irid_iridescence.glsl, irid_film_table.f32,
-    /// irid_film_table.json.
+    /// The three files, each its name and bytes: irid_iridescence.glsl (or .wgsl),
+    /// irid_film_table.f32, irid_film_table.json (the same table for both languages).
     [[nodiscard]] std::vector<std::pair<std::string, std::string>> files(
         ShaderLanguage language = ShaderLanguage::glsl) const;
 
