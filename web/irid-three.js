@@ -25,10 +25,11 @@ import * as THREE from 'three';
  * <uniform>;`); data: Float32Array of width × height RGBA texels, row-major; filter: 'linear'
  * (sampled with texture(), linear filtering) or 'nearest' (texelFetch).
  */
-export function makeIridTable({ glsl, data, width, height, filter, uniform = 'iridFilmTable',
+export function makeIridTable({ glsl, wgsl, data, width, height, filter, uniform = 'iridFilmTable',
                                 illuminant, space, primaries, white }) {
-    if (typeof glsl !== 'string' || !glsl.includes('evalIridescence')) {
-        throw new Error('irid table: glsl must be the chunk text that defines evalIridescence');
+    const defines = (text) => typeof text === 'string' && text.includes('evalIridescence');
+    if (!defines(glsl) && !defines(wgsl)) {
+        throw new Error('irid table: glsl (or wgsl) must be the chunk text that defines evalIridescence');
     }
     if (!(data instanceof Float32Array)) throw new Error('irid table: data must be a Float32Array');
     if (!Number.isInteger(width) || !Number.isInteger(height) || width < 1 || height < 1) {
@@ -40,7 +41,7 @@ export function makeIridTable({ glsl, data, width, height, filter, uniform = 'ir
     if (filter !== 'linear' && filter !== 'nearest') {
         throw new Error(`irid table: filter '${filter}' is neither 'linear' nor 'nearest'`);
     }
-    if (!glsl.includes(uniform)) throw new Error(`irid table: the chunk does not declare '${uniform}'`);
+    if (!(glsl ?? wgsl).includes(uniform)) throw new Error(`irid table: the chunk does not declare '${uniform}'`);
     const numbers = (v, n) => Array.isArray(v) && v.length === n && v.every(Number.isFinite);
     if (!numbers(primaries, 6) || !numbers(white, 2)) {
         throw new Error('irid table: primaries must be 6 numbers and white 2 (irid_film_table.json records them; '
@@ -49,24 +50,26 @@ export function makeIridTable({ glsl, data, width, height, filter, uniform = 'ir
     if (typeof illuminant !== 'string' || typeof space !== 'string') {
         throw new Error('irid table: illuminant and space must be the names irid_film_table.json records');
     }
-    return { glsl, data, width, height, filter, uniform, illuminant, space, primaries: [...primaries],
+    return { glsl, wgsl, data, width, height, filter, uniform, illuminant, space, primaries: [...primaries],
              white: [...white] };
 }
 
 /**
  * Fetches the three files `irid shader --lang glsl -o DIR` writes (irid_iridescence.glsl,
  * irid_film_table.f32, irid_film_table.json) from baseUrl (the folder's URL) and returns the
- * table object. The .f32 file is little-endian float32.
+ * table object. The .f32 file is little-endian float32. With lang 'wgsl', the folder
+ * `irid shader --lang wgsl` wrote (irid_iridescence.wgsl; the table object's `wgsl`).
  */
-export async function loadIridTable(baseUrl) {
+export async function loadIridTable(baseUrl, { lang = 'glsl' } = {}) {
+    if (lang !== 'glsl' && lang !== 'wgsl') throw new Error(`irid table: lang '${lang}' is neither 'glsl' nor 'wgsl'`);
     const base = baseUrl.endsWith('/') ? baseUrl : `${baseUrl}/`;
     const get = async (name) => {
         const response = await fetch(`${base}${name}`);
         if (!response.ok) throw new Error(`irid table: ${base}${name}: HTTP ${response.status}`);
         return response;
     };
-    const [glsl, bytes, meta] = await Promise.all([
-        get('irid_iridescence.glsl').then((r) => r.text()),
+    const [text, bytes, meta] = await Promise.all([
+        get(`irid_iridescence.${lang}`).then((r) => r.text()),
         get('irid_film_table.f32').then((r) => r.arrayBuffer()),
         get('irid_film_table.json').then((r) => r.json()),
     ]);
@@ -74,7 +77,7 @@ export async function loadIridTable(baseUrl) {
     const view = new DataView(bytes);
     const data = new Float32Array(bytes.byteLength / 4);
     for (let i = 0; i < data.length; ++i) data[i] = view.getFloat32(4 * i, true);
-    return makeIridTable({ glsl, data, width: meta.width, height: meta.height, filter: meta.filter,
+    return makeIridTable({ [lang]: text, data, width: meta.width, height: meta.height, filter: meta.filter,
                            uniform: meta.uniform, illuminant: meta.illuminant, space: meta.space,
                            primaries: meta.primaries, white: meta.white });
 }
@@ -128,15 +131,29 @@ export function checkIridTable(table, { workingColorSpace = THREE.ColorManagemen
     }
 }
 
-// The patched materials: material → {table, key, texture, own: {compile, key}, wrapper}. `own`
-// is the material's own onBeforeCompile and customProgramCacheKey (null: three's default), kept
-// so that a second applyIridescence replaces the patch rather than stacking a second one.
+// The patched materials: material → {table, key, texture, own: {compile, key}, wrapper, dispose,
+// reapply(target), remove(target)}. `own` is the material's own onBeforeCompile and
+// customProgramCacheKey (null: three's default), kept so that a second applyIridescence replaces
+// the patch rather than stacking a second one. irid-three-webgpu.js records its node materials'
+// patches here too (trackIridPatch), so that one copy() hook serves both.
 const patches = new WeakMap();
+
+/** Records a patch of `material` that copy() and clone() carry: reapply(target) patches a copy
+ * alike, remove(target) takes the patch off a material copied from an unpatched one. */
+export function trackIridPatch(material, record) {
+    keepPatchOnCopy();
+    patches.set(material, record);
+}
+
+/** The patch recorded for `material`, or undefined. */
+export function iridPatchOf(material) {
+    return patches.get(material);
+}
 
 function install(material, table, key) {
     const previous = patches.get(material);
     let own;
-    if (previous && material.onBeforeCompile === previous.wrapper.compile
+    if (previous && previous.wrapper && material.onBeforeCompile === previous.wrapper.compile
         && material.customProgramCacheKey === previous.wrapper.key) {
         own = previous.own;
     } else {
@@ -145,10 +162,7 @@ function install(material, table, key) {
             ? material.customProgramCacheKey : null;
         own = { compile: material.onBeforeCompile, key: ownKey };
     }
-    if (previous) {
-        material.removeEventListener('dispose', previous.dispose);
-        previous.texture.dispose();
-    }
+    if (previous) previous.remove(material, { keepOwn: true });
     const texture = iridTableTexture(table);
     const chunk = `#ifdef USE_IRIDESCENCE\n${table.glsl}\n#endif\n`;
     const wrapper = {
@@ -172,22 +186,23 @@ function install(material, table, key) {
     material.onBeforeCompile = wrapper.compile;
     material.customProgramCacheKey = wrapper.key;
     material.needsUpdate = true;
-    patches.set(material, { table, key, texture, own, wrapper, dispose });
+    trackIridPatch(material, {
+        table, key, texture, own, wrapper, dispose,
+        reapply: (target) => install(target, table, key),
+        remove: (target, { keepOwn = false } = {}) => {
+            target.removeEventListener('dispose', dispose);
+            texture.dispose();
+            patches.delete(target);
+            if (keepOwn) return;
+            if (target.onBeforeCompile === wrapper.compile) target.onBeforeCompile = own.compile;
+            if (target.customProgramCacheKey === wrapper.key) {
+                if (own.key) target.customProgramCacheKey = own.key;
+                else delete target.customProgramCacheKey;
+            }
+            target.needsUpdate = true;
+        },
+    });
     return texture;
-}
-
-function uninstall(material) {
-    const patch = patches.get(material);
-    if (!patch) return;
-    material.removeEventListener('dispose', patch.dispose);
-    patch.texture.dispose();
-    if (material.onBeforeCompile === patch.wrapper.compile) material.onBeforeCompile = patch.own.compile;
-    if (material.customProgramCacheKey === patch.wrapper.key) {
-        if (patch.own.key) material.customProgramCacheKey = patch.own.key;
-        else delete material.customProgramCacheKey;
-    }
-    patches.delete(material);
-    material.needsUpdate = true;
 }
 
 // clone() and copy() carry the patch: Material.prototype.copy (which every material's copy
@@ -197,12 +212,23 @@ let copyWrapped = false;
 function keepPatchOnCopy() {
     if (copyWrapped) return;
     copyWrapped = true;
-    const copy = THREE.Material.prototype.copy;
-    THREE.Material.prototype.copy = function (source) {
+    wrapCopy(THREE.Material.prototype);
+}
+
+/** Wraps `prototype.copy` so that a copy takes the source's patch (or loses its own when the
+ * source has none). Node materials' copy does not reach Material's: irid-three-webgpu.js wraps
+ * NodeMaterial's too. */
+export function wrapCopy(prototype) {
+    const copy = prototype.copy;
+    prototype.copy = function (source) {
         const out = copy.call(this, source);
         const patch = patches.get(source);
-        if (patch) install(this, patch.table, patch.key);
-        else uninstall(this);
+        if (patch) {
+            patch.reapply(this);
+        } else if (patches.has(this)) {
+            patches.get(this).remove(this);
+            patches.delete(this);
+        }
         return out;
     };
 }
@@ -219,7 +245,7 @@ function keepPatchOnCopy() {
  */
 export function applyIridescence(material, { table, workingColorSpace, illuminant } = {}) {
     const t = makeIridTable(table);
+    if (typeof t.glsl !== 'string') throw new Error('applyIridescence: the table has no GLSL chunk (irid shader --lang glsl)');
     checkIridTable(t, { workingColorSpace, illuminant });
-    keepPatchOnCopy();
     return install(material, t, `irid-iridescence-${hashOf(`${t.filter}\n${t.glsl}`)}`);
 }

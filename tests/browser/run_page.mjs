@@ -6,7 +6,7 @@
 //        --input in.json --output out.json [--timeout SECONDS] [--page FILE] [--screenshot PNG]
 //
 // /NAME/... is DIR/...; /web/... is the repository's web/ folder and the import map resolves
-// 'three' (and 'three/addons/') to web/node_modules. The module's `run(input)` is awaited in
+// 'three', 'three/webgpu', 'three/tsl' and 'three/addons/' to web/node_modules. The module's `run(input)` is awaited in
 // the page; its value is written to out.json. Exits 1 when the module throws, a request fails,
 // or the page logs an error; 2 on bad arguments or when Chromium or web/node_modules is
 // missing (scripts/install-deps installs both).
@@ -80,6 +80,8 @@ const { chromium } = await import(pathToFileURL(playwrightEntry).href);
 const importMap = {
     imports: {
         three: '/web/node_modules/three/build/three.module.js',
+        'three/webgpu': '/web/node_modules/three/build/three.webgpu.js',
+        'three/tsl': '/web/node_modules/three/build/three.tsl.js',
         'three/addons/': '/web/node_modules/three/examples/jsm/',
     },
 };
