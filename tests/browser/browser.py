@@ -50,11 +50,12 @@ def node_env(work):
     return env
 
 
-def run_page(work, module, page_input, serve, timeout=600, page=None, screenshot=None):
+def run_page(work, module, page_input, serve, timeout=600, page=None, screenshot=None, viewport=None):
     """Runs the page module (a URL under /tests/) with page_input in Chromium, the folders of
     serve ({name: dir}) under /name/; returns what its run() returned. With page (an HTML file),
     the module runs in that page opened from file:// (run_page.mjs --page); with screenshot (a
-    PNG path), the page is saved there after run(). Exits the test (2) when node is missing and
+    PNG path), the page is saved there after run(); viewport (width, height) sets the page's size
+    in CSS pixels. Exits the test (2) when node is missing and
     (1 or 2) when the run fails, with run_page.mjs's message."""
     if shutil.which("node") is None:
         print("FAIL: node is not on PATH: run scripts/install-deps (it installs nodejs and web/node_modules)")
@@ -70,6 +71,8 @@ def run_page(work, module, page_input, serve, timeout=600, page=None, screenshot
         cmd += ["--page", os.path.abspath(page)]
     if screenshot:
         cmd += ["--screenshot", os.path.abspath(screenshot)]
+    if viewport:
+        cmd += ["--viewport", f"{viewport[0]}x{viewport[1]}"]
     run = subprocess.run(cmd, env=node_env(work), timeout=timeout + 120)
     if run.returncode != 0:
         print(f"FAIL: the browser run ({' '.join(cmd)}) exited {run.returncode}")

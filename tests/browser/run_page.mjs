@@ -4,6 +4,7 @@
 //
 //   node tests/browser/run_page.mjs --serve NAME=DIR ... --module /NAME/file.js
 //        --input in.json --output out.json [--timeout SECONDS] [--page FILE] [--screenshot PNG]
+//        [--viewport WxH]
 //
 // /NAME/... is DIR/...; /web/... is the repository's web/ folder and the import map resolves
 // 'three', 'three/webgpu', 'three/tsl' and 'three/addons/' to web/node_modules. The module's `run(input)` is awaited in
@@ -13,7 +14,8 @@
 // --page FILE opens FILE itself from file:// instead (a page that must work without a server):
 // any request it makes is refused and counted as a failure, and the module (read from its
 // --serve folder) is imported as a data: URL, since file:// pages load no module from a server.
-// --screenshot PNG saves the page as it is after run() returned.
+// --screenshot PNG saves the page as it is after run() returned. --viewport sets the page's size
+// in CSS pixels (default 1280x720).
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -42,7 +44,11 @@ function parseArgs(argv) {
         else if (key === '--timeout') args.timeout = Number(value);
         else if (key === '--page') args.page = path.resolve(value);
         else if (key === '--screenshot') args.screenshot = value;
-        else usage(`unknown option '${key}' (valid: --serve, --module, --input, --output, --timeout, --page, --screenshot)`);
+        else if (key === '--viewport') {
+            const m = /^(\d+)x(\d+)$/.exec(value);
+            if (!m) usage(`--viewport '${value}' is not WIDTHxHEIGHT`);
+            args.viewport = { width: Number(m[1]), height: Number(m[2]) };
+        } else usage(`unknown option '${key}' (valid: --serve, --module, --input, --output, --timeout, --page, --screenshot, --viewport)`);
     }
     for (const k of ['module', 'input', 'output']) if (!args[k]) usage(`--${k} is required`);
     return args;
@@ -107,7 +113,7 @@ const browser = await chromium.launch({
 });
 let status = 0;
 try {
-    const page = await browser.newPage();
+    const page = await browser.newPage(args.viewport ? { viewport: args.viewport } : {});
     page.on('console', (m) => {
         if (m.type() === 'error') problems.push(`console error: ${m.text()}`);
         else console.log(`page ${m.type()}: ${m.text()}`);
