@@ -66,9 +66,15 @@ std::vector<double> angles(const Film& f) {
 }
 
 const std::vector<double>& thicknesses() {
+#ifdef IRID_SANITIZED
+    // The sanitizers' build: every other thickness (the reference runs ten times slower there).
+    static const std::vector<double> t{0.0, 1.0, 20.0, 100.0, 250.0, 600.0, 1300.0, 3000.0, 8000.0,
+                                       20000.0, 30000.0};
+#else
     static const std::vector<double> t{0.0,    0.1,    1.0,    5.0,    20.0,   50.0,   100.0,
                                        170.0,  250.0,  400.0,  600.0,  900.0,  1300.0, 2000.0,
                                        3000.0, 5000.0, 8000.0, 12000.0, 20000.0, 30000.0};
+#endif
     return t;
 }
 
@@ -214,7 +220,12 @@ TEST(FilmShaderDomain, ClearcoatOverABaseThatReflectsTotally) {
     std::string where;
     for (const double n0 : {1.5, 2.0}) {
         for (const double n2 : {1.0, 1.2, 1.4}) {
-            for (double n1 = 1.0; n1 <= 3.0; n1 += 0.2) {
+#ifdef IRID_SANITIZED
+            constexpr double film_step = 1.0;
+#else
+            constexpr double film_step = 0.2;
+#endif
+            for (double n1 = 1.0; n1 <= 3.0; n1 += film_step) {
                 const float f0 = test::f0_of(n2);
                 const FourierFilm exact = exact_film(n0, n1, f0);
                 for (const double deg : {60.0, 75.0, 85.0, 88.0, 89.0, 89.5, 89.8, 89.9, 89.95, 89.99,
@@ -258,7 +269,7 @@ struct Walk {
 
 /// Steps per walk (fewer under the sanitizers, whose build runs the reference ten times slower).
 #ifdef IRID_SANITIZED
-constexpr int walk_steps = 300;
+constexpr int walk_steps = 200;
 #else
 constexpr int walk_steps = 1200;
 #endif
