@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <complex>
 #include <cstdint>
 #include <numbers>
 
@@ -99,8 +98,8 @@ std::string float_literal(double v) {
     return s;
 }
 
-std::string vec3_literal(const std::array<double, 3>& v) {
-    return "vec3(" + float_literal(v[0]) + ", " + float_literal(v[1]) + ", " + float_literal(v[2]) +
+std::string vec3_literal(const std::array<double, 3>& v, std::string_view type) {
+    return std::string(type) + "(" + float_literal(v[0]) + ", " + float_literal(v[1]) + ", " + float_literal(v[2]) +
            ")";
 }
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 
 namespace irid::film_shader_text {
 
@@ -12,7 +13,7 @@ namespace irid::film_shader_text {
 /// or an exponent, as GLSL ES 3.00 §4.1.5 and WGSL's abstract floats both accept).
 [[nodiscard]] std::string float_literal(double v);
 
-/// "vec3(r, g, b)" of three float literals.
-[[nodiscard]] std::string vec3_literal(const std::array<double, 3>& v);
+/// "vec3(r, g, b)" of three float literals (`type` "vec3f" for WGSL).
+[[nodiscard]] std::string vec3_literal(const std::array<double, 3>& v, std::string_view type = "vec3");
 
 }  // namespace irid::film_shader_text

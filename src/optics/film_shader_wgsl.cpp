@@ -337,11 +337,6 @@ fn evalIridescence(outsideIOR: f32, eta2: f32, cosTheta1: f32, thinFilmThickness
 }
 )wgsl";
 
-std::string wgsl_vec3(const std::array<double, 3>& v) {
-    using film_shader_text::float_literal;
-    return "vec3f(" + float_literal(v[0]) + ", " + float_literal(v[1]) + ", " + float_literal(v[2]) +
-           ")";
-}
 
 }  // namespace
 
@@ -355,7 +350,7 @@ std::string FilmShader::wgsl() const {
     out += "// irid_film_table.json, as an rgba32float texture); evalIridescence, at the end, reads it\n";
     out += "// from a module-scope binding. The algorithm: irid's docs/OPTICS.md, \"In a renderer\".\n";
     out += "\n// Each channel's centre wavenumber [1/nm], about which the table is demodulated.\n";
-    out += "const IRID_CENTRE = " + wgsl_vec3(m_centre) + ";\n";
+    out += "const IRID_CENTRE = " + film_shader_text::vec3_literal(m_centre, "vec3f") + ";\n";
     out += "// 1 / the table's tau step [1/nm]; where its tau ends [nm] (terms past it are dropped).\n";
     out += "const IRID_INV_STEP: f32 = " + float_literal(1.0 / table_step_nm()) + ";\n";
     out += "const IRID_TABLE_END: f32 = " + float_literal(table_end_nm) + ";\n";
@@ -386,7 +381,7 @@ std::string FilmShader::wgsl() const {
     out += ");\n";
     out += fmt::format("const irid_node_weight = array<vec3f, {}>(\n", quadrature_nodes);
     for (std::size_t j = 0; j < m_node_weight.size(); ++j)
-        out += "    " + wgsl_vec3(m_node_weight[j]) + (j + 1 < m_node_weight.size() ? ",\n" : ");\n");
+        out += "    " + film_shader_text::vec3_literal(m_node_weight[j], "vec3f") + (j + 1 < m_node_weight.size() ? ",\n" : ");\n");
     out += wgsl_body;
     out += wgsl_binding_marker;
     out += wgsl_binding;
