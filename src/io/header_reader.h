@@ -78,6 +78,18 @@ void check_icc(const std::string& shown, const std::vector<unsigned char>& profi
 /// to facts.icc_damage (header_jpeg.cpp).
 void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts);
 
+/// A strip or tile of coded data: where it is, its bytes, and the bytes it decodes to.
+struct CodedUnit {
+    std::uint64_t offset = 0;
+    std::uint64_t count = 0;
+    std::uint64_t expected = 0;
+};
+
+/// Inflates each deflate-coded unit as libtiff does (tif_zip.c): throws irid::Error naming the
+/// file and the unit ("strip" or "tile") when its data are damaged or end before the bytes it
+/// holds (header_deflate.cpp). Units whose `expected` is 0 are skipped.
+void check_deflate_units(const std::string& shown, int fd, const std::vector<CodedUnit>& units, const char* unit);
+
 /// TIFF (TIFF 6.0, and BigTIFF): the first directory's size against `limits`, its strips or tiles
 /// against the file and what they can expand to, and its ICC profile tag (header_tiff.cpp).
 void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts);

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace irid::io::header {
 namespace {
@@ -93,6 +94,8 @@ public:
     [[nodiscard]] bool integers() const { return is_integer_type(m_type) && m_size != 0; }
     [[nodiscard]] std::uint64_t count() const { return m_count; }
     [[nodiscard]] std::uint64_t at() const { return m_at; }
+    /// The bytes the values take (count × size).
+    [[nodiscard]] std::uint64_t bytes() const { return m_count * m_size; }
     /// The values lie inside the file (count × size bytes from at()).
     [[nodiscard]] bool inside() const {
         return m_count <= m_reader.size() && m_at <= m_reader.size() && m_count * m_size <= m_reader.size() - m_at;
@@ -114,6 +117,84 @@ private:
     Reader& m_reader;
     std::uint64_t m_at = 0;
 };
+
+/// Bytes of the file that are not image data: its header, its directory, arrays the directory
+/// points at.
+struct Reserved {
+    std::uint64_t offset;
+    std::uint64_t count;
+    const char* what;
+};
+
+std::string byte_range(std::uint64_t offset, std::uint64_t count) {
+    return "bytes " + std::to_string(offset) + " to " + std::to_string(offset + count - 1);
+}
+
+/// Throws when two strips (tiles) share bytes, or a strip lies on the header or the directory:
+/// libtiff decodes whatever an offset points at, so a small file whose strips all point at one
+/// stream could declare gigabytes of pixels past the bound on the coded bytes.
+void check_no_overlap(const std::string& shown, const std::vector<CodedUnit>& units, const char* unit,
+                      const std::vector<Reserved>& reserved) {
+    std::vector<std::size_t> order;
+    order.reserve(units.size());
+    for (std::size_t i = 0; i < units.size(); ++i) {
+        if (units[i].count > 0) order.push_back(i);
+    }
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return units[a].offset < units[b].offset || (units[a].offset == units[b].offset && a < b);
+    });
+    for (std::size_t k = 1; k < order.size(); ++k) {
+        const CodedUnit& before = units[order[k - 1]];
+        const CodedUnit& after = units[order[k]];
+        if (before.offset + before.count > after.offset) {
+            corrupt(shown, std::string("its ") + unit + " " + std::to_string(order[k]) + " (" +
+                               byte_range(after.offset, after.count) + ") overlaps its " + unit + " " +
+                               std::to_string(order[k - 1]) + " (" + byte_range(before.offset, before.count) + ")");
+        }
+    }
+    for (const Reserved& r : reserved) {
+        if (r.count == 0) continue;
+        // The first unit that ends past r's start; sorted by offset, and disjoint, units also end in order.
+        const auto it = std::partition_point(order.begin(), order.end(), [&](std::size_t i) {
+            return units[i].offset + units[i].count <= r.offset;
+        });
+        if (it != order.end() && units[*it].offset < r.offset + r.count) {
+            corrupt(shown, std::string("its ") + unit + " " + std::to_string(*it) + " (" +
+                               byte_range(units[*it].offset, units[*it].count) + ") lies on " + r.what + " (" +
+                               byte_range(r.offset, r.count) + ")");
+        }
+    }
+}
+
+/// The bytes each strip (tile) decodes to, as libtiff counts them (tif_strip.c, TIFFVStripSize
+/// and TIFFVTileSize): whole rows of the unit, the last strip of a plane holding what rows
+/// remain; subsampled YCbCr (TIFF 6.0 §21) stores each block of h × v pixels as h v luma and 2
+/// chroma samples. Units past those the image needs, and layouts irid cannot size, stay 0.
+void set_decoded_sizes(std::vector<CodedUnit>& units, std::uint64_t width, std::uint64_t height,
+                       std::uint64_t samples, std::uint64_t bits, std::uint64_t planar, std::uint64_t sub_h,
+                       std::uint64_t sub_v, std::uint64_t unit_width, std::uint64_t unit_rows, bool tiled) {
+    if (bits == 0 || bits > 64 || samples == 0 || samples > 64 || unit_width == 0 || unit_rows == 0) return;
+    const bool separate = planar == 2;
+    const std::uint64_t per_unit = separate ? 1 : samples;
+    const bool subsampled = !separate && samples == 3 && (sub_h > 1 || sub_v > 1);
+    const auto ceil_div = [](std::uint64_t a, std::uint64_t b) { return (a + b - 1) / b; };
+    const auto size = [&](std::uint64_t rows) -> std::uint64_t {
+        if (subsampled) {
+            const std::uint64_t row_samples = ceil_div(unit_width, sub_h) * (sub_h * sub_v + 2);
+            return ceil_div(rows, sub_v) * ceil_div(row_samples * bits, 8);
+        }
+        return rows * ceil_div(unit_width * per_unit * bits, 8);
+    };
+    const std::uint64_t down = ceil_div(height, std::min(unit_rows, height));
+    const std::uint64_t across = tiled ? ceil_div(width, unit_width) : 1;
+    const std::uint64_t per_plane = down * across;
+    const std::uint64_t needed = per_plane * (separate ? samples : 1);
+    for (std::uint64_t i = 0; i < units.size() && i < needed; ++i) {
+        const std::uint64_t row = (i % per_plane) / across;
+        const std::uint64_t rows = tiled ? unit_rows : std::min(unit_rows, height - row * std::min(unit_rows, height));
+        units[i].expected = size(rows);
+    }
+}
 
 }  // namespace
 
@@ -138,6 +219,7 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
 
     std::uint64_t width = 0, height = 0, samples = 1, bits = 1, compression = 1, photometric = 2;
     std::uint64_t sub_h = 2, sub_v = 2;  // YCbCrSubsampling's default (TIFF 6.0 §21)
+    std::uint64_t rows_per_strip = UINT32_MAX, planar = 1, tile_width = 0, tile_length = 0;
     std::optional<std::uint64_t> offsets_entry, counts_entry;
     const char* unit = "strip";
     unsigned char e[20];
@@ -160,7 +242,8 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
             continue;
         }
         const bool array = tag == 273 || tag == 279 || tag == 324 || tag == 325;
-        const bool scalar = tag == 256 || tag == 257 || tag == 258 || tag == 259 || tag == 262 || tag == 277 || tag == 530;
+        const bool scalar = tag == 256 || tag == 257 || tag == 258 || tag == 259 || tag == 262 || tag == 277 ||
+                            tag == 278 || tag == 284 || tag == 322 || tag == 323 || tag == 530;
         if (!array && !scalar) continue;
         if (!values.integers() || values.count() == 0) continue;  // libtiff names a wrong type
         if (!values.inside()) {
@@ -182,6 +265,10 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
             case 259: compression = *v; break;
             case 262: photometric = *v; break;
             case 277: samples = *v; break;
+            case 278: rows_per_strip = *v; break;
+            case 284: planar = *v; break;
+            case 322: tile_width = *v; break;
+            case 323: tile_length = *v; break;
             case 530:
                 sub_h = std::max<std::uint64_t>(*v, 1);
                 if (const auto w = values.count() > 1 ? values.get(1) : std::nullopt) sub_v = std::max<std::uint64_t>(*w, 1);
@@ -204,6 +291,8 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
     Values counts(layout, counts_file, counts_bytes, *counts_entry);
     std::uint64_t coded = 0;
     const std::uint64_t n = std::min(offsets.count(), counts.count());
+    std::vector<CodedUnit> units;  // at most one per 2 bytes of the file (inside() above)
+    units.reserve(static_cast<std::size_t>(n));
     for (std::uint64_t i = 0; i < n; ++i) {
         const std::optional<std::uint64_t> offset = offsets.get(i), count = counts.get(i);
         if (!offset || !count) {
@@ -215,6 +304,22 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
                                ", and the file holds " + std::to_string(file.size()));
         }
         coded += *count;
+        units.push_back(CodedUnit{*offset, *count, 0});
+    }
+    // The file's header and directory, and the arrays outside it, are no image data.
+    const std::uint64_t directory_end = first + static_cast<std::uint64_t>(layout.entry_size()) * entries +
+                                        static_cast<std::uint64_t>(layout.field_size());
+    check_no_overlap(shown, units, unit,
+                     {{0, layout.big ? 16u : 8u, "the file's header"},
+                      {ifd, directory_end - ifd, "its directory"},
+                      {offsets.at(), offsets.bytes(), "its offsets array"},
+                      {counts.at(), counts.bytes(), "its byte-count array"}});
+    if (compression == 8 || compression == 32946) {
+        const bool tiled = tile_width > 0 && tile_length > 0;
+        set_decoded_sizes(units, width, height, samples, bits, planar, photometric == 6 ? sub_h : 1,
+                          photometric == 6 ? sub_v : 1, tiled ? tile_width : width,
+                          tiled ? tile_length : rows_per_strip, tiled);
+        check_deflate_units(shown, file.fd(), units, unit);
     }
     const std::optional<Expansion> expansion = max_expansion(compression);
     if (!expansion || n == 0) return;

@@ -1,0 +1,159 @@
+"""libtiff's own tools judge the TIFFs irid reads (docs/RELIABILITY.md, "A second decoder").
+
+OpenImageIO 2.4 inflates a deflate TIFF's strips itself and fills a strip that fails with black
+without a word, and libtiff decodes whatever bytes a strip offset points at. Here every damaged
+file that libtiff's ``tiffinfo -D`` refuses is refused by irid too, with the strip and the reason,
+and strips that share bytes with each other or with the file's header are refused before a
+decoder runs.
+"""
+
+import shutil
+import struct
+import subprocess
+import zlib
+
+import numpy as np
+import pytest
+
+import irid
+from test_damaged_images import run_limited
+from tiff_edit import Tiff
+
+TIFFCP = shutil.which("tiffcp")      # libtiff-tools (scripts/install-deps)
+TIFFINFO = shutil.which("tiffinfo")
+
+
+def libtiff_refuses(path):
+    """libtiff's verdict: ``tiffinfo -D`` decodes every strip of contiguous samples and exits 1
+    on a decoding error; ``tiffcp`` (which decodes separate planes too, where ``tiffinfo -D``
+    reads past a damaged strip) copies every sample and exits 1 on one."""
+    info = subprocess.run([TIFFINFO, "-D", str(path)], capture_output=True, text=True)
+    copy = subprocess.run([TIFFCP, "-c", "none", str(path), str(path) + ".copy.tif"],
+                          capture_output=True, text=True)
+    return info.returncode != 0 or copy.returncode != 0
+
+
+def plain_tiff(tmp_path):
+    from PIL import Image
+    px = (np.random.default_rng(5).random((32, 40, 3)) * 255).astype(np.uint8)
+    px[:, :20] = 128   # a part deflate compresses, a part it stores
+    path = tmp_path / "plain.tif"
+    Image.fromarray(px).save(path)
+    return path
+
+
+# tiffcp's options for each layout: strips of 4 rows, predictor 2, one strip, BigTIFF, tiles,
+# separate planes.
+LAYOUTS = {
+    "strips": ["-c", "zip", "-r", "4"],
+    "predictor": ["-c", "zip:2", "-r", "8"],
+    "one-strip": ["-c", "zip", "-r", "32"],
+    "bigtiff": ["-c", "zip", "-r", "4", "-8"],
+    "tiles": ["-c", "zip", "-t", "-w", "16", "-l", "16"],
+    "planar": ["-c", "zip", "-r", "4", "-p", "separate"],
+}
+
+
+def layout(tmp_path, name):
+    assert TIFFCP and TIFFINFO, "libtiff-tools is missing (scripts/install-deps installs it)"
+    out = tmp_path / f"{name}.tif"
+    subprocess.run([TIFFCP, *LAYOUTS[name], str(plain_tiff(tmp_path)), str(out)], check=True)
+    return out
+
+
+@pytest.mark.parametrize("name", sorted(LAYOUTS))
+@pytest.mark.parametrize("damage", ["cut", "flip", "zero"])
+def test_damaged_deflate_data_are_judged_as_libtiff_judges(irid_cli, tmp_path, name, damage):
+    whole = layout(tmp_path, name)
+    assert not libtiff_refuses(whole)
+    irid.read_image(whole)
+    data = bytearray(whole.read_bytes())
+    t = Tiff(data)
+    offsets_tag, counts_tag = (324, 325) if 324 in t.entries else (273, 279)
+    offsets, counts = t.values(offsets_tag), t.values(counts_tag)
+    k = min(1, len(offsets) - 1)
+    if damage == "cut":        # the unit's data cut in half, its byte count matching
+        counts[k] //= 2
+        t.set_values(counts_tag, counts)
+    elif damage == "flip":     # one byte in the middle of its data
+        data[offsets[k] + counts[k] // 2] ^= 0x55
+    else:                      # its last 8 bytes (the end of the stream and its checksum) zeroed
+        data[offsets[k] + counts[k] - 8:offsets[k] + counts[k]] = bytes(8)
+    bad = tmp_path / f"bad-{name}.tif"
+    bad.write_bytes(data)
+    if not libtiff_refuses(bad):
+        # The damage left a stream libtiff decodes whole (a flipped byte that still inflates and
+        # whose checksum libtiff never reaches): irid reads it too.
+        irid.read_image(bad)
+        return
+    unit = "tile" if offsets_tag == 324 else "strip"
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", "--from", "srgb", str(bad),
+                        str(tmp_path / "out.png")], capture_output=True, text=True)
+    assert r.returncode == 1, r.stderr
+    assert f"its {unit} {k}'s deflate data" in r.stderr, r.stderr
+    assert not (tmp_path / "out.png").exists()
+    with pytest.raises(OSError, match=f"its {unit} {k}'s deflate data"):
+        irid.read_image(bad)
+
+
+def strips_tiff(width, height, rows_per_strip, streams, offsets_of=None):
+    """A little-endian float TIFF of one sample: deflate strips of `rows_per_strip` rows, the
+    data `streams` (one per strip, or one for all) placed after the directory; `offsets_of`
+    maps the natural offsets to others (to make strips share bytes)."""
+    strips = -(-height // rows_per_strip)
+    if len(streams) == 1:
+        streams = streams * strips
+    entries = 11
+    directory = 8 + 2 + 12 * entries + 4
+    arrays = directory
+    data_at = arrays + 8 * strips
+    offsets, counts, body, seen = [], [], b"", {}
+    for s in streams:
+        if s not in seen:
+            seen[s] = data_at + len(body)
+            body += s
+        offsets.append(seen[s])
+        counts.append(len(s))
+    if offsets_of is not None:
+        offsets = offsets_of(offsets)
+    fields = [(256, 4, 1, width), (257, 4, 1, height), (258, 3, 1, 32), (259, 3, 1, 8),
+              (262, 3, 1, 1), (273, 4, strips, arrays if strips > 1 else offsets[0]),
+              (277, 3, 1, 1), (278, 4, 1, rows_per_strip),
+              (279, 4, strips, arrays + 4 * strips if strips > 1 else counts[0]),
+              (284, 3, 1, 1), (339, 3, 1, 3)]
+    out = b"II*\0" + struct.pack("<IH", 8, entries)
+    for tag, typ, n, value in fields:
+        out += struct.pack("<HHIHH", tag, typ, n, value, 0) if typ == 3 else struct.pack("<HHII", tag, typ, n, value)
+    out += b"\0\0\0\0"
+    if strips > 1:
+        out += struct.pack(f"<{strips}I", *offsets) + struct.pack(f"<{strips}I", *counts)
+    return out + body
+
+
+def test_a_small_file_whose_strips_share_one_stream_is_refused_cheaply(irid_cli, tmp_path):
+    """8192 x 8192 floats in 1024 strips, all pointing at one stream of a few hundred bytes: each
+    strip decodes, and libtiff reads the file, 256 MB of zeros from 9 KB. irid refuses it from
+    its directory, within the data limit of the huge-declaration tests."""
+    stream = zlib.compress(bytes(8192 * 8 * 4), 9)
+    data = strips_tiff(8192, 8192, 8, [stream])
+    assert len(data) < 10000
+    path = tmp_path / "shared.tif"
+    path.write_bytes(data)
+    status, err = run_limited(irid_cli, "clip", "--method", "clamp", "--from", "srgb-linear", path,
+                              tmp_path / "out.exr", data_mb=384)
+    assert status == 1 and "its strip 1 (bytes" in err and "overlaps its strip 0" in err, err
+    with pytest.raises(OSError, match="overlaps its strip 0"):
+        irid.read_image(path)
+
+
+@pytest.mark.parametrize("where,what", [(0, "the file's header"), (8, "its directory"),
+                                        (150, "its offsets array")])
+def test_a_strip_on_the_header_directory_or_arrays_is_refused(tmp_path, where, what):
+    streams = [zlib.compress(bytes([i]) * (64 * 4 * 4), 9) for i in range(4)]
+    good = strips_tiff(64, 16, 4, streams)
+    (tmp_path / "good.tif").write_bytes(good)
+    assert irid.read_image(tmp_path / "good.tif")[0].shape == (16, 64, 1)
+    bad = strips_tiff(64, 16, 4, streams, lambda o: [where] + o[1:])
+    (tmp_path / "bad.tif").write_bytes(bad)
+    with pytest.raises(OSError, match=f"its strip 0 \\(bytes {where} to .*\\) lies on {what}"):
+        irid.read_image(tmp_path / "bad.tif")
