@@ -44,6 +44,7 @@ def _file_facts(metadata):
         "icc_profile_damage": _text(metadata.get("icc_profile_damage") or "",
                                     "source: 'icc_profile_damage'"),
         "cmyk": _flag(metadata.get("cmyk", False), "source: 'cmyk'"),
+        "model": _text(metadata.get("model") or "", "source: 'model'") or None,
     }
 
 
@@ -116,8 +117,11 @@ def read_image(path):
     "channels" (names), "color_space" (irid's or OpenImageIO's name, may be empty),
     "description", "bits" (per sample as stored), "integer" (stored as integers),
     "icc_profile" (the embedded ICC profile's bytes, or None; "icc_profile_rejected" is True when
-    the file had one that is damaged, and "icc_profile_damage" says how, else None), "chromaticities" (an EXR's 8 values, or None) and
-    "adopted_neutral" (an EXR's x, y, or None). :func:`image_space` says what space they name.
+    the file had one that is damaged, and "icc_profile_damage" says how, else None),
+    "chromaticities" (an EXR's 8 values, or None), "adopted_neutral" (an EXR's x, y, or None),
+    "cmyk" (the file stores CMYK or YCCK) and "model" (the colour model OpenImageIO converted to
+    RGB without a profile: "CMYK", "YCCK", "CIELab", "ICCLab", "ITULab"; None for the file's own
+    RGB or grey, which are then as stored). :func:`image_space` says what space they name.
     Raises OSError for a file that cannot be read whole (missing, not an image, truncated or
     corrupt pixel data, a header declaring more than the file holds, larger than 64 Mpixel).
 

@@ -45,6 +45,7 @@ io::Image image_facts(const py::dict& m) {
     if (const py::object v = get("icc_profile_rejected"); !v.is_none()) image.icc_profile_rejected = v.cast<bool>();
     if (const py::object v = get("icc_profile_damage"); !v.is_none()) image.icc_profile_damage = v.cast<std::string>();
     if (const py::object v = get("cmyk"); !v.is_none()) image.stored_cmyk = v.cast<bool>();
+    if (const py::object v = get("model"); !v.is_none()) image.stored_model = v.cast<std::string>();
     return image;
 }
 

@@ -60,6 +60,7 @@ void add_io(py::module_& m) {
                                                              image.icc_profile.size()));
             meta["icc_profile_rejected"] = image.icc_profile_rejected;
             meta["cmyk"] = image.stored_cmyk;
+            meta["model"] = image.stored_model.empty() ? py::object(py::none()) : py::object(py::str(image.stored_model));
             meta["icc_profile_damage"] = image.icc_profile_damage.empty() ? py::object(py::none())
                                                                           : py::object(py::str(image.icc_profile_damage));
             meta["chromaticities"] = image.chromaticities.empty() ? py::object(py::none())

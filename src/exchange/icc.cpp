@@ -560,6 +560,12 @@ void check_tags_agree(const io::Image& image, const RgbSpace& space, const std::
 
 ImageSpace image_space(const io::Image& image, const std::string& what) {
     ImageSpace s;
+    // L*a*b* samples reach irid as libtiff's RGB rendering of them, which no profile describes.
+    if (image.stored_model.ends_with("Lab")) {
+        throw Error(what + ": holds " + image.stored_model + " samples (L*, a*, b*), which OpenImageIO converts "
+                           "to RGB through libtiff's own display model, no colour space: convert the file "
+                           "to RGB with a profile, or name a space to take that RGB as");
+    }
     if (image.icc_profile_rejected) {
         throw Error(what + ": ICC profile: damaged: " +
                     (image.icc_profile_damage.empty() ? std::string("the file's decoder rejected it")
@@ -577,8 +583,9 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
         }
         return s;
     }
-    if (image.stored_cmyk) {
-        throw Error(what + ": holds CMYK samples without an ICC profile; OpenImageIO converted them to "
+    if (image.stored_cmyk || !image.stored_model.empty()) {
+        const std::string model = image.stored_model.empty() ? std::string("CMYK") : image.stored_model;
+        throw Error(what + ": holds " + model + " samples without an ICC profile; OpenImageIO converted them to "
                            "RGB without one (R = (1 - C)(1 - K), ...), which is no colour space: convert "
                            "the file to RGB with its press profile, or name a space to take that RGB as");
     }

@@ -253,9 +253,7 @@ DisplayImageReport display_image(io::Image& image, const DisplayImagePlan& plan,
     const ImageColourChannels channels = image_colour_channels(image, what, "display");
     // A file that says nothing about its space holds ACES2065-1, the scene space of the view.
     std::optional<ColorSpace> given = options.from;
-    const bool says_nothing = image.icc_profile.empty() && !image.icc_profile_rejected &&
-                              image.chromaticities.empty() && !image.stored_cmyk;
-    if (!given && says_nothing && !channels.xyz) given = color_space("aces2065-1-linear");
+    if (!given && !image_says_its_space(image) && !channels.xyz) given = color_space("aces2065-1-linear");
     DisplayImageReport report;
     report.source = decide_image_source(image, channels.xyz, given, what, "--from");
     const IccProfile* profile = report.source.file ? report.source.file->profile.get() : nullptr;

@@ -8,10 +8,7 @@ namespace {
 /// What the file itself says about its space, in words, for a note that a given space
 /// overrides it; empty when it says nothing.
 std::string what_the_file_says(const io::Image& image, const std::string& what) {
-    if (image.icc_profile.empty() && !image.icc_profile_rejected && image.chromaticities.empty() &&
-        !image.stored_cmyk) {
-        return "";
-    }
+    if (!image_says_its_space(image)) return "";
     try {
         return image_space(image, what).origin;
     } catch (const Error& e) {
@@ -26,6 +23,11 @@ std::string naming(const std::string& option, const std::string& name) {
 }
 
 }  // namespace
+
+bool image_says_its_space(const io::Image& image) noexcept {
+    return !image.icc_profile.empty() || image.icc_profile_rejected || !image.chromaticities.empty() ||
+           image.stored_cmyk || !image.stored_model.empty();
+}
 
 ImageSource decide_image_source(const io::Image& image, bool xyz_channels, const std::optional<ColorSpace>& given,
                                 const std::string& what, const std::string& option) {

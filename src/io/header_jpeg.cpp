@@ -152,7 +152,7 @@ void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limit
         profile.insert(profile.end(), chunk_data[i].begin(), chunk_data[i].end());
     }
     check_icc(shown, profile);
-    facts.jpeg_icc_profile = std::move(profile);
+    facts.container_icc_profile = std::move(profile);
 }
 
 }  // namespace irid::io::header

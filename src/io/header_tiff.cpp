@@ -196,6 +196,39 @@ void set_decoded_sizes(std::vector<CodedUnit>& units, std::uint64_t width, std::
     }
 }
 
+/// The ICC profile tag: its bytes as stored, whatever their integer type (a writer may type them
+/// UNDEFINED, BYTE or LONG; libtiff keeps only the first two). A tag past the file, of a
+/// non-integer type, or a second tag holding another profile is damage (facts.icc_damage).
+void read_icc_tag(const std::string& shown, Reader& file, const Values& values, std::uint32_t type,
+                  HeaderFacts& facts) {
+    if (!facts.icc_damage.empty()) return;
+    const std::uint64_t size = type_size(type) * values.count();
+    if (size == 0 || values.count() > file.size() || !values.inside()) {
+        facts.icc_damage = "its ICC profile tag (34675) declares " +
+                           (values.count() > file.size() ? std::to_string(values.count()) + " values"
+                                                         : std::to_string(size) + " bytes") +
+                           " at byte " + std::to_string(values.at()) + ", and the file holds " +
+                           std::to_string(file.size());
+        return;
+    }
+    if (!is_integer_type(type) && type != 7) {
+        facts.icc_damage = "its ICC profile tag (34675) is of TIFF type " + std::to_string(type) +
+                           ", not bytes or integers";
+        facts.container_icc_profile.clear();
+        return;
+    }
+    std::vector<unsigned char> profile = read_bytes(file, values.at(), size);
+    check_icc(shown, profile);
+    if (!facts.container_icc_profile.empty() && facts.container_icc_profile != profile) {
+        facts.icc_damage = "its directory holds two ICC profile tags (34675) with different profiles (" +
+                           std::to_string(facts.container_icc_profile.size()) + " and " +
+                           std::to_string(profile.size()) + " bytes)";
+        facts.container_icc_profile.clear();
+        return;
+    }
+    facts.container_icc_profile = std::move(profile);
+}
+
 }  // namespace
 
 void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts) {
@@ -229,16 +262,7 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
         const auto tag = static_cast<std::uint32_t>(layout.uint(e, 2));
         Values values(layout, file, e, at);
         if (tag == 34675) {  // the ICC profile (TIFF/EP, ICC.1 Annex B.3)
-            const std::uint64_t size = type_size(static_cast<std::uint32_t>(layout.uint(e + 2, 2))) * values.count();
-            if (size == 0 || values.count() > file.size() || !values.inside()) {
-                facts.icc_damage = "its ICC profile tag (34675) declares " +
-                                   (values.count() > file.size() ? std::to_string(values.count()) + " values"
-                                                                 : std::to_string(size) + " bytes") +
-                                   " at byte " + std::to_string(values.at()) + ", and the file holds " +
-                                   std::to_string(file.size());
-            } else {
-                check_icc(shown, read_bytes(file, values.at(), size));
-            }
+            read_icc_tag(shown, file, values, static_cast<std::uint32_t>(layout.uint(e + 2, 2)), facts);
             continue;
         }
         const bool array = tag == 273 || tag == 279 || tag == 324 || tag == 325;
@@ -314,13 +338,6 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
                       {ifd, directory_end - ifd, "its directory"},
                       {offsets.at(), offsets.bytes(), "its offsets array"},
                       {counts.at(), counts.bytes(), "its byte-count array"}});
-    if (compression == 8 || compression == 32946) {
-        const bool tiled = tile_width > 0 && tile_length > 0;
-        set_decoded_sizes(units, width, height, samples, bits, planar, photometric == 6 ? sub_h : 1,
-                          photometric == 6 ? sub_v : 1, tiled ? tile_width : width,
-                          tiled ? tile_length : rows_per_strip, tiled);
-        check_deflate_units(shown, file.fd(), units, unit);
-    }
     const std::optional<Expansion> expansion = max_expansion(compression);
     if (!expansion || n == 0) return;
     // Bytes the pixels take uncompressed; subsampled YCbCr (photometric 6) stores each block of
@@ -340,6 +357,14 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
                            " cannot hold them" +
                            (compression == 1 ? std::string()
                                              : " (they expand at most " + std::to_string(static_cast<int>(expansion->factor)) + "-fold)"));
+    }
+    // The bound above is cheap; inflating every strip is not.
+    if (compression == 8 || compression == 32946) {
+        const bool tiled = tile_width > 0 && tile_length > 0;
+        set_decoded_sizes(units, width, height, samples, bits, planar, photometric == 6 ? sub_h : 1,
+                          photometric == 6 ? sub_v : 1, tiled ? tile_width : width,
+                          tiled ? tile_length : rows_per_strip, tiled);
+        check_deflate_units(shown, file.fd(), units, unit);
     }
 }
 

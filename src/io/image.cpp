@@ -134,8 +134,10 @@ Image read_image(const fs::path& path, const ImageLimits& limits) {
         image.icc_profile.clear();
         image.icc_profile_rejected = true;
         image.icc_profile_damage = facts.icc_damage;
-    } else if (!facts.jpeg_icc_profile.empty()) {
-        image.icc_profile = facts.jpeg_icc_profile;
+    } else if (!facts.container_icc_profile.empty()) {
+        // OpenImageIO joins JPEG segments in file order, and libtiff drops a TIFF profile tag
+        // typed other than UNDEFINED or BYTE.
+        image.icc_profile = facts.container_icc_profile;
     } else if (facts.png_icc_chunk && image.icc_profile.empty()) {
         image.icc_profile_rejected = true;
         image.icc_profile_damage = "libpng rejected it (it drops, with only a warning, a profile that is damaged "

@@ -19,9 +19,11 @@ struct HeaderFacts {
     /// Why the file's embedded ICC profile is damaged in its container (JPEG APP2 segments not
     /// numbered 1..N, a TIFF profile tag past the file); empty when it is whole or absent.
     std::string icc_damage;
-    /// A JPEG's profile joined from its APP2 segments by their sequence numbers (ICC.1 Annex
-    /// B.4), which is what the file holds whatever order OpenImageIO joins them in.
-    std::vector<unsigned char> jpeg_icc_profile;
+    /// The profile as its container holds it, which read_image passes on instead of OpenImageIO's:
+    /// a JPEG's APP2 segments joined by their sequence numbers (ICC.1 Annex B.4), whatever order
+    /// OpenImageIO joins them in; a TIFF's tag 34675 of any integer type (libtiff drops one not
+    /// typed UNDEFINED or BYTE). Empty when the file has none, or when icc_damage is set.
+    std::vector<unsigned char> container_icc_profile;
 };
 
 /// For PNG, OpenEXR, TIFF and JPEG files: throws irid::Error naming the file when the declared

@@ -200,8 +200,19 @@ Image oiio_read(const fs::path& path, const ImageLimits& limits) {
     image.chromaticities = floats("chromaticities");
     image.adopted_neutral = floats("adoptedNeutral");
     image.stored_integer = !spec.format.is_floating_point();
-    image.stored_cmyk = spec.get_string_attribute("jpeg:ColorSpace") == "CMYK" ||
-                        spec.get_string_attribute("tiff:ColorSpace") == "CMYK";
+    // OpenImageIO names a JPEG's CMYK "CMYK" and its YCCK (Adobe transform 2) "YCbCrK"; a TIFF's
+    // photometric interpretation 5 is CMYK, 8-10 the L*a*b* encodings (TIFF 6.0 §23, TIFF-F).
+    const std::string jpeg_model = spec.get_string_attribute("jpeg:ColorSpace");
+    const int photometric = spec.get_int_attribute("tiff:PhotometricInterpretation", -1);
+    if (jpeg_model == "CMYK" || spec.get_string_attribute("tiff:ColorSpace") == "CMYK") {
+        image.stored_model = "CMYK";
+    } else if (jpeg_model == "YCbCrK") {
+        image.stored_model = "YCCK";
+    } else if (photometric == 8 || photometric == 9 || photometric == 10) {
+        static constexpr const char* lab[] = {"CIELab", "ICCLab", "ITULab"};
+        image.stored_model = lab[photometric - 8];
+    }
+    image.stored_cmyk = image.stored_model == "CMYK" || image.stored_model == "YCCK";
     image.stored_bits =
         spec.get_int_attribute("oiio:BitsPerSample", static_cast<int>(spec.format.size() * 8));
 

@@ -55,3 +55,27 @@ class Tiff:
         e = self.entries[tag]
         self.data[e.entry_at + 2:e.entry_at + 4] = struct.pack(self.order + "H", type_)
         e.type = type_
+
+
+def with_entry(data, tag, type_, count, payload):
+    """A classic TIFF whose first directory, rewritten at the end of the file, has one more entry
+    (after those of lower or equal tags), its value `payload` (the raw bytes) stored after it."""
+    t = Tiff(bytearray(data))
+    assert not t.big
+    o = t.order
+    n = struct.unpack(o + "H", data[t.ifd:t.ifd + 2])[0]
+    raw = [bytes(data[t.ifd + 2 + 12 * i:t.ifd + 14 + 12 * i]) for i in range(n)]
+    next_ifd = data[t.ifd + 2 + 12 * n:t.ifd + 6 + 12 * n]
+    out = bytearray(data)
+    out += bytes(len(out) % 2)
+    payload_at = len(out)
+    out += payload + bytes(len(payload) % 2)
+    new_ifd = len(out)
+    value = payload_at if len(payload) > 4 else struct.unpack(o + "I", payload.ljust(4, b"\0"))[0]
+    entry = struct.pack(o + "HHII", tag, type_, count, value)
+    tags = [struct.unpack(o + "H", e[:2])[0] for e in raw]
+    at = sum(1 for x in tags if x <= tag)
+    entries = raw[:at] + [entry] + raw[at:]
+    out += struct.pack(o + "H", n + 1) + b"".join(entries) + next_ifd
+    out[4:8] = struct.pack(o + "I", new_ifd)
+    return out

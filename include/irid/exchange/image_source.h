@@ -38,6 +38,10 @@ public:
     using Error::Error;
 };
 
+/// The file says something about its space: an ICC profile (even a rejected one), EXR
+/// chromaticities, or samples OpenImageIO converted from another model (CMYK, YCCK, L*a*b*).
+[[nodiscard]] bool image_says_its_space(const io::Image& image) noexcept;
+
 /// Decides where the colours of `image` (named `what` in messages) come from.
 /// - X, Y and Z channels: CIE XYZ; a `given` space other than xyz throws ImageSourceConflict.
 /// - A `given` space: it, with a note when the file said something else (its profile, a

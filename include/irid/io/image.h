@@ -65,6 +65,11 @@ struct Image {
     /// The file holds CMYK (a JPEG or TIFF), which OpenImageIO converted to RGB without a profile
     /// (R = (1 - C)(1 - K) and so on): its RGB is no colour space. Set by read_image.
     bool stored_cmyk = false;
+    /// The colour model of the stored samples when OpenImageIO converted them to RGB without a
+    /// profile: "CMYK", "YCCK" (a JPEG's Adobe transform 2), "CIELab", "ICCLab" or "ITULab" (TIFF
+    /// photometric 8, 9, 10, converted through libtiff's own display model); empty when the
+    /// samples are the file's own RGB or grey. Set by read_image.
+    std::string stored_model;
 
     /// An image of this size with every sample 0. Channel names default to R, G, B, A for up to
     /// four channels and to "channel<i>" beyond. Throws irid::Error when a dimension is < 1.
