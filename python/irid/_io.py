@@ -45,7 +45,35 @@ def _file_facts(metadata):
                                     "source: 'icc_profile_damage'"),
         "cmyk": _flag(metadata.get("cmyk", False), "source: 'cmyk'"),
         "model": _text(metadata.get("model") or "", "source: 'model'") or None,
+        "png": _png_facts(metadata.get("png")),
     }
+
+
+def _png_facts(png):
+    """read_image's "png" entry checked: None, or a dict of "srgb" (bool), "gamma" (> 0),
+    "chromaticities" (8 numbers) and "cicp" (4 codes of 0 to 255)."""
+    if png is None:
+        return None
+    if not isinstance(png, dict) or not set(png) <= {"srgb", "gamma", "chromaticities", "cicp"}:
+        raise ValueError("source: 'png' is None or a dict of 'srgb', 'gamma', 'chromaticities', 'cicp'")
+    out = {}
+    if "srgb" in png:
+        out["srgb"] = _flag(png["srgb"], "source: png 'srgb'")
+    if "gamma" in png:
+        g = png["gamma"]
+        if isinstance(g, bool) or not isinstance(g, numbers.Real) or not g > 0:
+            raise ValueError(f"source: png 'gamma' {g!r} is not a number above 0")
+        out["gamma"] = float(g)
+    if "chromaticities" in png:
+        out["chromaticities"] = _floats(png["chromaticities"], "source: png 'chromaticities'")
+    if "cicp" in png:
+        codes = png["cicp"]
+        if (not isinstance(codes, (list, tuple)) or len(codes) != 4 or
+                any(isinstance(c, bool) or not isinstance(c, numbers.Integral) or not 0 <= c <= 255
+                    for c in codes)):
+            raise ValueError("source: png 'cicp' is 4 codes of 0 to 255")
+        out["cicp"] = [int(c) for c in codes]
+    return out
 
 
 def image_space(metadata):
@@ -119,7 +147,9 @@ def read_image(path):
     "icc_profile" (the embedded ICC profile's bytes, or None; "icc_profile_rejected" is True when
     the file had one that is damaged, and "icc_profile_damage" says how, else None),
     "chromaticities" (an EXR's 8 values, or None), "adopted_neutral" (an EXR's x, y, or None),
-    "cmyk" (the file stores CMYK or YCCK) and "model" (the colour model OpenImageIO converted to
+    "png" (a PNG's colour chunks besides iCCP, or None: "srgb", "gamma" of gAMA, "chromaticities"
+    of cHRM as red, green, blue, white x, y, "cicp" the 4 codes of cICP), "cmyk" (the file
+    stores CMYK or YCCK) and "model" (the colour model OpenImageIO converted to
     RGB without a profile: "CMYK", "YCCK", "CIELab", "ICCLab", "ITULab"; None for the file's own
     RGB or grey, which are then as stored). :func:`image_space` says what space they name.
     Raises OSError for a file that cannot be read whole (missing, not an image, truncated or

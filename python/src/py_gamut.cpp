@@ -46,6 +46,17 @@ io::Image image_facts(const py::dict& m) {
     if (const py::object v = get("icc_profile_damage"); !v.is_none()) image.icc_profile_damage = v.cast<std::string>();
     if (const py::object v = get("cmyk"); !v.is_none()) image.stored_cmyk = v.cast<bool>();
     if (const py::object v = get("model"); !v.is_none()) image.stored_model = v.cast<std::string>();
+    if (const py::object v = get("png"); !v.is_none()) {
+        const py::dict png = v.cast<py::dict>();
+        if (png.contains("srgb")) image.png_srgb = png["srgb"].cast<bool>();
+        if (png.contains("gamma")) image.png_gamma = png["gamma"].cast<double>();
+        if (png.contains("chromaticities")) image.png_chromaticities = png["chromaticities"].cast<std::vector<float>>();
+        if (png.contains("cicp")) {
+            for (const int code : png["cicp"].cast<std::vector<int>>()) {
+                image.png_cicp.push_back(static_cast<unsigned char>(code));
+            }
+        }
+    }
     return image;
 }
 

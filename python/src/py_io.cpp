@@ -60,6 +60,12 @@ void add_io(py::module_& m) {
                                                              image.icc_profile.size()));
             meta["icc_profile_rejected"] = image.icc_profile_rejected;
             meta["cmyk"] = image.stored_cmyk;
+            py::dict png;
+            if (image.png_srgb) png["srgb"] = true;
+            if (image.png_gamma > 0.0) png["gamma"] = image.png_gamma;
+            if (!image.png_chromaticities.empty()) png["chromaticities"] = py::tuple(py::cast(image.png_chromaticities));
+            if (!image.png_cicp.empty()) png["cicp"] = py::tuple(py::cast(std::vector<int>(image.png_cicp.begin(), image.png_cicp.end())));
+            meta["png"] = png.empty() ? py::object(py::none()) : py::object(png);
             meta["model"] = image.stored_model.empty() ? py::object(py::none()) : py::object(py::str(image.stored_model));
             meta["icc_profile_damage"] = image.icc_profile_damage.empty() ? py::object(py::none())
                                                                           : py::object(py::str(image.icc_profile_damage));

@@ -6,6 +6,8 @@
 #include <irid/exchange/icc.h>
 #include <irid/parallel.h>
 
+#include "png_space.h"
+
 #include <fmt/core.h>
 #include <lcms2.h>
 
@@ -566,6 +568,8 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
                            "to RGB through libtiff's own display model, no colour space: convert the file "
                            "to RGB with a profile, or name a space to take that RGB as");
     }
+    // PNG's cICP comes before every other colour chunk (PNG Third Edition §11.3.2.6).
+    if (!image.png_cicp.empty()) return detail::png_cicp_space(image, what);
     if (image.icc_profile_rejected) {
         throw Error(what + ": ICC profile: damaged: " +
                     (image.icc_profile_damage.empty() ? std::string("the file's decoder rejected it")
@@ -606,6 +610,9 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
                                image.chromaticities[3], image.chromaticities[4], image.chromaticities[5],
                                image.chromaticities[6], image.chromaticities[7]);
         return s;
+    }
+    if (image.png_srgb || image.png_gamma > 0.0 || !image.png_chromaticities.empty()) {
+        return detail::png_chunks_space(image, what);
     }
     s.assumed = true;
     s.builtin = &srgb();

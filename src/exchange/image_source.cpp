@@ -26,7 +26,8 @@ std::string naming(const std::string& option, const std::string& name) {
 
 bool image_says_its_space(const io::Image& image) noexcept {
     return !image.icc_profile.empty() || image.icc_profile_rejected || !image.chromaticities.empty() ||
-           image.stored_cmyk || !image.stored_model.empty();
+           image.stored_cmyk || !image.stored_model.empty() || image.png_srgb || image.png_gamma > 0.0 ||
+           !image.png_chromaticities.empty() || !image.png_cicp.empty();
 }
 
 ImageSource decide_image_source(const io::Image& image, bool xyz_channels, const std::optional<ColorSpace>& given,
@@ -58,7 +59,8 @@ ImageSource decide_image_source(const io::Image& image, bool xyz_channels, const
                                       : fmt::format("{} ({})", color_space_name(s.space), file->origin);
         s.file = std::move(file);
     }
-    if (image.stored_integer && s.space.family == SpaceFamily::rgb_linear) {
+    // Not when the file itself says its integers are linear light (a PNG's gAMA 1, a cICP's linear transfer).
+    if (image.stored_integer && s.space.family == SpaceFamily::rgb_linear && !(s.file && s.file->linear_stated)) {
         s.notes.push_back(fmt::format("{} holds {}-bit encoded values; {} takes them as linear light (give {} to "
                                       "decode them)",
                                       what, image.stored_bits, naming(option, color_space_name(s.space)),

@@ -73,6 +73,12 @@ std::string printable(const unsigned char* p, std::size_t n);
 /// its bytes (OpenImageIO 2.4 reads a TIFF's or JPEG's tags unchecked).
 void check_icc(const std::string& shown, const std::vector<unsigned char>& profile);
 
+/// PNG (ISO/IEC 15948): every chunk inside the file and matching its CRC, an IEND chunk, the
+/// image data able to hold the pixels declared, the iCCP profile, and the colour chunks (gAMA,
+/// cHRM, sRGB, cICP: once each, of their own length, before the image data) into `facts`
+/// (header_png.cpp).
+void check_png(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts);
+
 /// JPEG (ITU-T T.81 Annex B): the declared size against `limits` and against the coded data
 /// after the first scan header; the APP2 ICC profile chunks (ICC.1 Annex B.4), whose damage goes
 /// to facts.icc_damage (header_jpeg.cpp).

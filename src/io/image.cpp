@@ -143,6 +143,10 @@ Image read_image(const fs::path& path, const ImageLimits& limits) {
         image.icc_profile_damage = "libpng rejected it (it drops, with only a warning, a profile that is damaged "
                                    "or does not suit the image: CMYK, Lab or named colours in an RGB PNG)";
     }
+    image.png_srgb = facts.png_srgb;
+    image.png_gamma = facts.png_gamma;
+    image.png_chromaticities = facts.png_chromaticities;
+    image.png_cicp = facts.png_cicp;
     return image;
 }
 

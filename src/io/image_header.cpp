@@ -19,7 +19,6 @@
 #include <vector>
 
 #include <fcntl.h>
-#include <zlib.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -105,97 +104,6 @@ void check_icc(const std::string& shown, const std::vector<unsigned char>& p) {
 
 namespace {
 using namespace header;
-
-/// deflate (RFC 1951) expands its input at most about 1032-fold: a 258-byte match costs at
-/// least 2 bits (zlib's FAQ, "What's the maximum compression ratio?": 1032:1).
-constexpr double deflate_max_expansion = 1032.0;
-
-/// PNG's iCCP chunk (ISO/IEC 15948 §11.3.3.3): a name, a NUL, the compression method (0) and the
-/// zlib-compressed profile, which is inflated (up to 64 MiB) and checked as TIFF's and JPEG's
-/// are: libpng checks the header of a profile, not its tag table, which OpenImageIO 2.4 then
-/// reads unchecked.
-void check_png_icc(const std::string& shown, Reader& file, std::uint64_t offset, std::uint64_t length) {
-    if (length > (std::uint64_t{64} << 20)) return;
-    const std::vector<unsigned char> chunk = read_bytes(file, offset, length);
-    // The name: 1 to 79 bytes and a NUL; then the compression method, then the data.
-    const auto name_end = chunk.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(chunk.size(), 80));
-    const auto nul = std::find(chunk.begin(), name_end, 0);
-    if (nul == name_end) return;  // libpng refuses such a chunk
-    const std::size_t data = static_cast<std::size_t>(nul - chunk.begin()) + 2;
-    if (data >= chunk.size()) return;
-    z_stream z{};
-    if (inflateInit(&z) != Z_OK) return;
-    z.next_in = const_cast<Bytef*>(chunk.data() + data);
-    z.avail_in = static_cast<uInt>(chunk.size() - data);
-    std::vector<unsigned char> profile;
-    int status = Z_OK;
-    while (status == Z_OK && profile.size() < (std::size_t{64} << 20)) {
-        const std::size_t done = profile.size();
-        profile.resize(done + (1 << 16));
-        z.next_out = profile.data() + done;
-        z.avail_out = 1 << 16;
-        status = inflate(&z, Z_NO_FLUSH);
-        profile.resize(done + (1 << 16) - z.avail_out);
-    }
-    inflateEnd(&z);
-    // What was inflated, even when the stream ends badly: libpng does not check the checksum
-    // of a compressed chunk, and passes on what it inflated.
-    if (status != Z_STREAM_END && profile.size() < 132) return;
-    check_icc(shown, profile);
-}
-
-/// PNG (ISO/IEC 15948): every chunk must fit in the file, and the image data (IDAT) must be able
-/// to hold the pixels the header (IHDR) declares.
-void check_png(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts) {
-    std::uint64_t pos = 8, idat_bytes = 0;
-    std::uint64_t width = 0, height = 0;
-    unsigned depth = 0, colour_type = 0;
-    bool have_header = false;
-    unsigned char head[8];
-    while (file.read(pos, head, sizeof head)) {
-        const std::uint64_t length = big_endian32(head);
-        const std::string type = printable(head + 4, 4);
-        const std::uint64_t left = file.size() - pos - 8;  // data and CRC
-        if (length + 4 > left) {
-            corrupt(shown, "its " + type + " chunk at byte " + std::to_string(pos) + " declares " +
-                               std::to_string(length) + " bytes, and " +
-                               std::to_string(left >= 4 ? left - 4 : 0) + " remain");
-        }
-        if (type == "IHDR" && length >= 13) {
-            unsigned char ihdr[13];
-            if (!file.read(pos + 8, ihdr, sizeof ihdr)) break;
-            width = big_endian32(ihdr);
-            height = big_endian32(ihdr + 4);
-            depth = ihdr[8];
-            colour_type = ihdr[9];
-            have_header = true;
-        } else if (type == "IDAT") {
-            idat_bytes += length;
-        } else if (type == "iCCP") {
-            facts.png_icc_chunk = true;
-            check_png_icc(shown, file, pos + 8, length);
-        } else if (type == "IEND") {
-            break;
-        }
-        pos += 12 + length;
-    }
-    if (!have_header || width == 0 || height == 0) return;  // the decoder names what is wrong
-    check_declared_pixels(shown, width, height, limits);
-    // Samples per pixel by colour type: grey, -, RGB, palette, grey + alpha, -, RGBA.
-    static constexpr unsigned samples_of[] = {1, 0, 3, 1, 2, 0, 4};
-    const unsigned samples = colour_type < 7 ? samples_of[colour_type] : 0;
-    if (samples == 0 || depth == 0 || depth > 16) return;
-    // Each row: a filter byte and its samples, packed (the non-interlaced size, the smallest).
-    const double raw = static_cast<double>(height) *
-                       (1.0 + std::ceil(static_cast<double>(width) * samples * depth / 8.0));
-    if (raw > deflate_max_expansion * static_cast<double>(idat_bytes) + 1024.0) {
-        corrupt(shown, std::to_string(width) + " x " + std::to_string(height) + " pixels need " +
-                           std::to_string(static_cast<std::uint64_t>(raw)) +
-                           " bytes of image data, and its " + std::to_string(idat_bytes) +
-                           " bytes of compressed data cannot hold them (deflate expands at most "
-                           "1032-fold)");
-    }
-}
 
 /// OpenEXR (the file layout of openexr.com, "OpenEXR File Layout"): every attribute of the
 /// header(s) must fit in the file, and the first part's data window within the limits.

@@ -16,6 +16,14 @@ namespace irid::io {
 struct HeaderFacts {
     /// A PNG with an iCCP chunk (libpng drops a profile it finds invalid, with only a warning).
     bool png_icc_chunk = false;
+    /// A PNG's colour chunks (ISO/IEC 15948 §11.3.3; PNG Third Edition §11.3.2.6 for cICP): an
+    /// sRGB chunk; gAMA's gamma (0 when absent); cHRM's red, green, blue and white x, y (empty
+    /// when absent); cICP's four codes (empty when absent); the types seen, in order.
+    bool png_srgb = false;
+    double png_gamma = 0.0;
+    std::vector<float> png_chromaticities;
+    std::vector<unsigned char> png_cicp;
+    std::string png_colour_chunks;
     /// Why the file's embedded ICC profile is damaged in its container (JPEG APP2 segments not
     /// numbered 1..N, a TIFF profile tag past the file); empty when it is whole or absent.
     std::string icc_damage;

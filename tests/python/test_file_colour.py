@@ -10,8 +10,10 @@
 
 import io
 import pathlib
+import shutil
 import struct
 import subprocess
+import zlib
 
 import numpy as np
 import pytest
@@ -136,3 +138,140 @@ def test_two_different_tiff_profiles_are_damage_and_equal_ones_are_one(irid_cli,
     (tmp_path / "same.tif").write_bytes(with_entry(bytes(whole), 34675, 7, len(adobe), adobe))
     _, meta = irid.read_image(tmp_path / "same.tif")
     assert not meta["icc_profile_rejected"] and meta["icc_profile"] == adobe
+
+
+# --- PNG: cICP, then iCCP, then sRGB, then gAMA with cHRM (ISO/IEC 15948 §11.3.3; PNG Third
+# Edition §11.3.2.6 puts cICP first) -----------------------------------------------------------
+
+PNGCHECK = shutil.which("pngcheck")   # pngcheck (scripts/install-deps)
+
+
+def chunk(type_, data):
+    body = type_ + data
+    return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body))
+
+
+def png_with(chunks, after_data=(), value=128, **kw):
+    """An 8-bit RGB PNG of 4 x 4 samples `value`, with `chunks` (type, data) after IHDR and
+    `after_data` after the image data."""
+    data = bytes(save(np.full((4, 4, 3), value, np.uint8), "PNG", **kw))
+    ihdr_end = 8 + 8 + 13 + 4
+    iend = data.rindex(b"IEND") - 4
+    return (data[:ihdr_end] + b"".join(chunk(t, d) for t, d in chunks) + data[ihdr_end:iend] +
+            b"".join(chunk(t, d) for t, d in after_data) + data[iend:])
+
+
+def gama(g):
+    return (b"gAMA", struct.pack(">I", round(g * 100000)))
+
+
+REC2020_CHRM = (b"cHRM", struct.pack(">8I", 31270, 32900, 70800, 29200, 17000, 79700, 13100, 4600))
+
+
+def pngcheck_refuses(path):
+    assert PNGCHECK, "pngcheck is missing (scripts/install-deps installs it)"
+    return subprocess.run([PNGCHECK, str(path)], capture_output=True).returncode != 0
+
+
+def clip_to_exr(irid_cli, path, out, *args):
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", "--to", "srgb-linear", *args, str(path),
+                        str(out)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return irid.read_image(out)[0], r.stderr
+
+
+def test_a_linear_rec2020_png_is_read_as_its_chunks_say(irid_cli, tmp_path):
+    """gAMA 1.0 with cHRM of Rec.2020 and no iCCP: linear Rec.2020, exactly as --from says it."""
+    path = tmp_path / "linear2020.png"
+    path.write_bytes(png_with([gama(1.0), REC2020_CHRM]))
+    assert not pngcheck_refuses(path)
+    _, meta = irid.read_image(path)
+    assert meta["png"]["gamma"] == 1.0 and len(meta["png"]["chromaticities"]) == 8
+    facts = irid.image_space(meta)
+    assert facts["space"] == "rec2020-linear" and not facts["assumed"], facts
+    own, err = clip_to_exr(irid_cli, path, tmp_path / "own.exr")
+    assert "no ICC profile" not in err and "takes them as linear light" not in err, err
+    given, _ = clip_to_exr(irid_cli, path, tmp_path / "given.exr", "--from", "rec2020-linear")
+    assert np.array_equal(own, given)
+    assumed, _ = clip_to_exr(irid_cli, path, tmp_path / "srgb.exr", "--from", "srgb")
+    assert abs(own[0, 0, 1] - 128 / 255) < 1e-6 and abs(assumed[0, 0, 1] - 0.2158605) < 1e-5
+
+
+def test_a_gamma_without_chromaticities_decodes_with_its_power_law(irid_cli, tmp_path):
+    path = tmp_path / "g45.png"
+    path.write_bytes(png_with([gama(0.45455)]))
+    _, meta = irid.read_image(path)
+    facts = irid.image_space(meta)
+    assert "gAMA 0.45455" in facts["origin"] and "sRGB's primaries" in facts["origin"]
+    own, _ = clip_to_exr(irid_cli, path, tmp_path / "own.exr")
+    assert np.allclose(own, (128 / 255) ** (1 / 0.45455), rtol=1e-5)
+
+
+def test_an_srgb_chunk_says_srgb_and_an_icc_profile_comes_first(irid_cli, tmp_path):
+    path = tmp_path / "srgb.png"
+    path.write_bytes(png_with([(b"sRGB", b"\0"), gama(1.0)]))
+    facts = irid.image_space(irid.read_image(path)[1])
+    assert facts["space"] == "srgb" and not facts["assumed"] and facts["origin"] == "its sRGB chunk"
+    _, err = clip_to_exr(irid_cli, path, tmp_path / "out.exr")
+    assert "no ICC profile" not in err, err
+    adobe = (COLORD / "AdobeRGB1998.icc").read_bytes()
+    path.write_bytes(png_with([gama(1.0), REC2020_CHRM], icc_profile=adobe))
+    assert irid.image_space(irid.read_image(path)[1])["space"] == "adobe-rgb"
+
+
+@pytest.mark.parametrize("codes,space", [((1, 13, 0, 1), "srgb"), ((12, 13, 0, 1), "display-p3"),
+                                         ((9, 8, 0, 1), "rec2020-linear")])
+def test_cicp_comes_before_every_other_colour_chunk(tmp_path, codes, space):
+    path = tmp_path / "cicp.png"
+    path.write_bytes(png_with([(b"cICP", bytes(codes)), gama(1.0), REC2020_CHRM],
+                              icc_profile=(COLORD / "AdobeRGB1998.icc").read_bytes()))
+    assert irid.image_space(irid.read_image(path)[1])["space"] == space
+
+
+@pytest.mark.parametrize("codes", [(9, 16, 0, 1), (9, 18, 0, 1), (1, 13, 0, 0), (1, 13, 1, 1),
+                                   (22, 13, 0, 1)])
+def test_cicp_codes_irid_cannot_read_are_refused_with_them(irid_cli, tmp_path, codes):
+    path = tmp_path / "hdr.png"
+    path.write_bytes(png_with([(b"cICP", bytes(codes))]))
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", str(path), str(tmp_path / "o.png")],
+                       capture_output=True, text=True)
+    assert r.returncode == 1 and f"colour primaries {codes[0]}, transfer {codes[1]}" in r.stderr, r.stderr
+
+
+@pytest.mark.parametrize("damage,reason", [
+    ("icc-crc", "iCCP chunk at byte 33 fails its CRC"),
+    ("gama-crc", "gAMA chunk at byte 33 fails its CRC"),
+    ("no-iend", "without its IEND chunk"),
+    ("gama-twice", "repeats an earlier one"),
+    ("gama-after-data", "follows the image data"),
+    ("gama-short", "holds 3 bytes; it holds 4"),
+    ("gama-zero", "gives a gamma of 0"),
+])
+def test_damaged_colour_chunks_are_refused_as_pngcheck_refuses(irid_cli, tmp_path, damage, reason):
+    adobe = (COLORD / "AdobeRGB1998.icc").read_bytes()
+    if damage == "icc-crc":
+        data = bytearray(png_with([], icc_profile=adobe))
+        assert data[37:41] == b"iCCP"
+        length = struct.unpack(">I", data[33:37])[0]
+        data[41 + length] ^= 1            # the first byte of its CRC
+    elif damage == "gama-crc":
+        data = bytearray(png_with([gama(0.45455)]))
+        data[33 + 12 + 4 - 1] ^= 1
+    elif damage == "no-iend":
+        data = png_with([])[:-12]
+    elif damage == "gama-twice":
+        data = png_with([gama(0.45455), gama(1.0)])
+    elif damage == "gama-after-data":
+        data = png_with([], after_data=[gama(1.0)])
+    elif damage == "gama-short":
+        data = png_with([(b"gAMA", b"\0\1\0")])
+    else:
+        data = png_with([(b"gAMA", bytes(4))])
+    path = tmp_path / f"{damage}.png"
+    path.write_bytes(bytes(data))
+    assert pngcheck_refuses(path)
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", "--from", "srgb", str(path),
+                        str(tmp_path / "o.png")], capture_output=True, text=True)
+    assert r.returncode == 1 and reason in r.stderr, r.stderr
+    with pytest.raises(OSError, match=reason):
+        irid.read_image(path)

@@ -14,7 +14,9 @@ import ctypes
 import io
 import pathlib
 import shutil
+import struct
 import subprocess
+import zlib
 
 import numpy as np
 import pytest
@@ -532,9 +534,19 @@ def test_a_tag_past_the_profiles_end_is_refused_before_openimageio_reads_it(irid
 def test_a_png_profile_string_past_its_end_is_refused(irid_cli, tmp_path):
     # The image harness's finding png-3 (docs/RELIABILITY.md): an mluc string offset past the
     # profile, which libpng passes and OpenImageIO 2.4 read out of bounds.
+    # The fuzzer's file also fails its iCCP chunk's CRC, which is refused first; with its CRC
+    # made whole the profile's own check speaks.
     png = pathlib.Path(__file__).resolve().parents[1] / "fuzz/regressions/image/png-iccp-tag-past-end-oiio-segv.png"
     r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", png, tmp_path / "out.png",
             status=1)
+    assert "its iCCP chunk at byte 33 fails its CRC" in r.stderr
+    data = bytearray(png.read_bytes())
+    assert data[37:41] == b"iCCP"
+    length = struct.unpack(">I", data[33:37])[0]
+    data[41 + length:45 + length] = struct.pack(">I", zlib.crc32(bytes(data[37:41 + length])))
+    (tmp_path / "crc-whole.png").write_bytes(data)
+    r = run(irid_cli, "clip", "--method", "clamp", "--to", "srgb", tmp_path / "crc-whole.png",
+            tmp_path / "out.png", status=1)
     assert "ICC profile: damaged: tag 1 ('cprt') has a string of 48 bytes" in r.stderr
 
 

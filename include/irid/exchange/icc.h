@@ -128,6 +128,9 @@ struct ImageSpace {
     bool assumed = false;
     /// EXR chromaticities of CIE XYZ (exr_xyz_chromaticities): the values are X, Y and Z.
     bool xyz = false;
+    /// The file states that its integer samples are linear light (a PNG's gAMA 1, a cICP linear
+    /// transfer), so that taking them as such needs no note.
+    bool linear_stated = false;
     /// Where the space came from, for messages: "the ICC profile 'Adobe RGB (1998)' (version 4.4,
     /// matrix/TRC)", "its EXR chromaticities", "no ICC profile or chromaticities".
     std::string origin;

@@ -39,7 +39,8 @@ public:
 };
 
 /// The file says something about its space: an ICC profile (even a rejected one), EXR
-/// chromaticities, or samples OpenImageIO converted from another model (CMYK, YCCK, L*a*b*).
+/// chromaticities, a PNG's colour chunks (sRGB, gAMA, cHRM, cICP), or samples OpenImageIO
+/// converted from another model (CMYK, YCCK, L*a*b*).
 [[nodiscard]] bool image_says_its_space(const io::Image& image) noexcept;
 
 /// Decides where the colours of `image` (named `what` in messages) come from.

@@ -57,6 +57,15 @@ struct Image {
     std::vector<float> chromaticities;
     /// OpenEXR's "adoptedNeutral" (x, y), 2 values, or empty. EXR files only.
     std::vector<float> adopted_neutral;
+    /// What a PNG says of its colour besides an ICC profile (ISO/IEC 15948 §11.3.3, PNG Third
+    /// Edition §11.3.2.6): an sRGB chunk; gAMA's gamma (samples = light^gamma, 0 when absent);
+    /// cHRM's red, green, blue and white x, y (8 values, or empty); cICP's colour primaries,
+    /// transfer, matrix and full-range codes (ITU-T H.273; 4 values, or empty). Set by
+    /// read_image; irid/exchange decides what they mean (image_space).
+    bool png_srgb = false;
+    double png_gamma = 0.0;
+    std::vector<float> png_chromaticities;
+    std::vector<unsigned char> png_cicp;
     /// How the file read stored its samples: bits per sample (8, 16, 32, ...) and whether they
     /// are integers, i.e. encoded values (true for 8/16-bit PNG and TIFF, false for EXR and HDR).
     /// Set by read_image; ignored by write_image.
