@@ -624,7 +624,10 @@ ImageSpace image_space(const io::Image& image, const std::string& what) {
 
 ColorSpace ImageSpace::colour_space() const noexcept {
     if (profile || xyz) return {SpaceFamily::xyz, nullptr};
-    return {encoded ? SpaceFamily::rgb_encoded : SpaceFamily::rgb_linear, &*rgb};
+    // The built-in space itself, not the copy: a conversion to it (or from it) is then the
+    // identity, where a matrix through XYZ and back would leak 6e-17 of a huge channel into
+    // the others.
+    return {encoded ? SpaceFamily::rgb_encoded : SpaceFamily::rgb_linear, builtin != nullptr ? builtin : &*rgb};
 }
 
 void tag_image_xyz(io::Image& image) {

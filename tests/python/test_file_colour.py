@@ -275,3 +275,18 @@ def test_damaged_colour_chunks_are_refused_as_pngcheck_refuses(irid_cli, tmp_pat
     assert r.returncode == 1 and reason in r.stderr, r.stderr
     with pytest.raises(OSError, match=reason):
         irid.read_image(path)
+
+
+@pytest.mark.parametrize("red", [1e6, 1e15, 1e20, 3e38, np.inf])
+@pytest.mark.parametrize("tag", ["none", "chromaticities"])
+def test_a_huge_channel_stays_in_its_channel_when_the_file_is_the_target_space(irid_cli, tmp_path, red, tag):
+    """An untagged EXR (linear sRGB) or one whose chromaticities are sRGB's, clipped to linear
+    sRGB: no conversion at all, as with --from srgb-linear, rather than a matrix through XYZ and
+    back that leaks 6e-17 of R into G and B."""
+    kw = {"chromaticities": (0.64, 0.33, 0.3, 0.6, 0.15, 0.06, 0.3127, 0.329)} if tag != "none" else {}
+    path = tmp_path / "huge.exr"
+    irid.write_image(path, np.array([[[red, 0.0, 0.3], [0.2, 0.5, 0.7]]], np.float32), **kw)
+    own, _ = clip_to_exr(irid_cli, path, tmp_path / "own.exr")
+    given, _ = clip_to_exr(irid_cli, path, tmp_path / "given.exr", "--from", "srgb-linear")
+    assert np.array_equal(own, given)
+    assert own[0, 0].tolist() == [1.0, 0.0, pytest.approx(0.3)]
