@@ -147,6 +147,8 @@ def read_image(path):
     "icc_profile" (the embedded ICC profile's bytes, or None; "icc_profile_rejected" is True when
     the file had one that is damaged, and "icc_profile_damage" says how, else None),
     "chromaticities" (an EXR's 8 values, or None), "adopted_neutral" (an EXR's x, y, or None),
+    "data_window" and "display_window" (where the pixels sit and the frame, as inclusive boxes
+    x min, y min, x max, y max: an EXR's windows; 0, 0, width - 1, height - 1 for a file without),
     "png" (a PNG's colour chunks besides iCCP, or None: "srgb", "gamma" of gAMA, "chromaticities"
     of cHRM as red, green, blue, white x, y, "cicp" the 4 codes of cICP), "cmyk" (the file
     stores CMYK or YCCK) and "model" (the colour model OpenImageIO converted to
@@ -169,7 +171,8 @@ def read_image(path):
 
 
 def write_image(path, array, channels=None, color_space="", description="", bits=8,
-                compression="", tag=True, icc_profile=None, chromaticities=None):
+                compression="", tag=True, icc_profile=None, chromaticities=None, data_window=None,
+                display_window=None):
     """Writes an image; the format follows the extension (.exr: 32-bit float, linear values;
     .png, .tif/.tiff: ``bits`` 8 or 16, encoded values in [0, 1]; .jpg/.jpeg: 8 bits, 1 or 3
     channels, quality 95 unless ``compression="jpeg:Q"``).
@@ -190,6 +193,10 @@ def write_image(path, array, channels=None, color_space="", description="", bits
     icc_profile: bytes of a profile to embed instead (PNG, TIFF; checked as a file's would be).
     chromaticities: 8 values (red, green, blue, white x, y) to write instead (EXR).
         Either must describe the space color_space names, when both are given (ValueError).
+    data_window, display_window: EXR's windows as read_image's metadata gives them, inclusive
+        boxes (x min, y min, x max, y max): where the pixels sit (the box must be the array's
+        width x height) and the frame they belong to. None: at 0, 0, the frame the image.
+        EXR only (ValueError for other formats).
     compression: OpenImageIO's name for the format, or "" for its default. EXR: none, rle, zip,
         zips, piz, pxr24, b44, b44a, dwaa, dwab (zip, zips, dwaa and dwab take a level, "dwaa:45");
         TIFF: none, lzw, zip, packbits, jpeg (lossy); PNG: default, filtered, huffman, rle, fixed
@@ -220,10 +227,22 @@ def write_image(path, array, channels=None, color_space="", description="", bits
         raise ValueError("icc_profile: an ICC profile is bytes")
     if chromaticities is not None:
         chromaticities = _floats(chromaticities, "chromaticities")
+    windows = [None if w is None else _box(w, name)
+               for w, name in ((data_window, "data_window"), (display_window, "display_window"))]
     return _irid.write_image(_path(path), array, names, _text(color_space, "color_space"),
                              _text(description, "description"), int(bits),
                              _text(compression, "compression"), _flag(tag, "tag"),
-                             None if icc_profile is None else bytes(icc_profile), chromaticities)
+                             None if icc_profile is None else bytes(icc_profile), chromaticities,
+                             *windows)
+
+
+def _box(value, name):
+    """A window: 4 whole numbers."""
+    if (isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 4 or
+            any(isinstance(v, bool) or not isinstance(v, numbers.Integral) or abs(v) >= 2**62
+                for v in value)):
+        raise ValueError(f"{name}: {value!r} is not 4 whole numbers (x min, y min, x max, y max)")
+    return [int(v) for v in value]
 
 
 def _code_values_scaled(array, path):

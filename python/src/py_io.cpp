@@ -14,6 +14,7 @@
 #include <span>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -66,6 +67,12 @@ void add_io(py::module_& m) {
             if (!image.png_chromaticities.empty()) png["chromaticities"] = py::tuple(py::cast(image.png_chromaticities));
             if (!image.png_cicp.empty()) png["cicp"] = py::tuple(py::cast(std::vector<int>(image.png_cicp.begin(), image.png_cicp.end())));
             meta["png"] = png.empty() ? py::object(py::none()) : py::object(png);
+            const auto window = data_window(image);
+            meta["data_window"] = py::make_tuple(window[0], window[1], window[2], window[3]);
+            meta["display_window"] = image.display_window
+                                         ? py::make_tuple((*image.display_window)[0], (*image.display_window)[1],
+                                                          (*image.display_window)[2], (*image.display_window)[3])
+                                         : py::make_tuple(window[0], window[1], window[2], window[3]);
             meta["model"] = image.stored_model.empty() ? py::object(py::none()) : py::object(py::str(image.stored_model));
             meta["icc_profile_damage"] = image.icc_profile_damage.empty() ? py::object(py::none())
                                                                           : py::object(py::str(image.icc_profile_damage));
@@ -82,7 +89,9 @@ void add_io(py::module_& m) {
         [](const std::string& path, const py::handle& array, std::vector<std::string> channels,
            const std::string& color_space, const std::string& description, int bits,
            const std::string& compression, bool tag, const std::optional<py::bytes>& icc_profile,
-           const std::optional<std::vector<float>>& chromaticities) {
+           const std::optional<std::vector<float>>& chromaticities,
+           const std::optional<std::array<long long, 4>>& data_window,
+           const std::optional<std::array<long long, 4>>& display_window) {
             const auto a = contiguous_of<float>(array, "image");
             if (a.ndim() != 2 && a.ndim() != 3) {
                 throw py::value_error("image: shape " + shape_text(a) +
@@ -172,6 +181,10 @@ void add_io(py::module_& m) {
             if (named && named->is_rgb() && (icc_profile || chromaticities)) {
                 check_tags_agree(image, as_named(*named), color_space);
             }
+            if ((data_window || display_window) && format != io::ImageFormat::exr) {
+                throw py::value_error("data_window, display_window: only EXR files carry windows");
+            }
+            io::set_windows(image, data_window, display_window);
             image.description = description;
             image.pixels.assign(a.data(), a.data() + a.size());
             py::gil_scoped_release release;
@@ -183,7 +196,7 @@ void add_io(py::module_& m) {
         },
         py::arg("path"), py::arg("array"), py::arg("channels"), py::arg("color_space"),
         py::arg("description"), py::arg("bits"), py::arg("compression"), py::arg("tag"),
-        py::arg("icc_profile"), py::arg("chromaticities"));
+        py::arg("icc_profile"), py::arg("chromaticities"), py::arg("data_window"), py::arg("display_window"));
 
     m.def(
         "icc_profile",

@@ -124,6 +124,63 @@ ImageFormat image_format_for(const fs::path& path) {
                 ".jpg or .jpeg (8 bit)");
 }
 
+std::array<long long, 4> data_window(const Image& image) noexcept {
+    return {image.origin_x, image.origin_y, static_cast<long long>(image.origin_x) + image.width - 1,
+            static_cast<long long>(image.origin_y) + image.height - 1};
+}
+
+void set_windows(Image& image, const std::optional<std::array<long long, 4>>& data_window,
+                 const std::optional<std::array<long long, 4>>& display_window) {
+    const auto text = [](const std::array<long long, 4>& b) {
+        return std::to_string(b[0]) + " " + std::to_string(b[1]) + " " + std::to_string(b[2]) + " " +
+               std::to_string(b[3]);
+    };
+    const auto check = [&](const std::array<long long, 4>& b, const char* name) {
+        for (const long long v : b) {
+            if (v < -max_window_coordinate || v > max_window_coordinate) {
+                throw Error(std::string(name) + " " + text(b) + ": corners lie within ±" +
+                            std::to_string(max_window_coordinate) + " (OpenEXR's limit)");
+            }
+        }
+        if (b[0] > b[2] || b[1] > b[3]) {
+            throw Error(std::string(name) + " " + text(b) + ": x min <= x max and y min <= y max");
+        }
+    };
+    if (data_window) {
+        const auto& d = *data_window;
+        check(d, "data_window");
+        if (d[2] - d[0] + 1 != image.width || d[3] - d[1] + 1 != image.height) {
+            throw Error("data_window " + text(d) + " is " + std::to_string(d[2] - d[0] + 1) + " x " +
+                        std::to_string(d[3] - d[1] + 1) + " pixels; the image is " + std::to_string(image.width) +
+                        " x " + std::to_string(image.height));
+        }
+        image.origin_x = static_cast<int>(d[0]);
+        image.origin_y = static_cast<int>(d[1]);
+    }
+    if (display_window) {
+        check(*display_window, "display_window");
+        const auto& d = *display_window;
+        image.display_window = std::array<int, 4>{static_cast<int>(d[0]), static_cast<int>(d[1]),
+                                                  static_cast<int>(d[2]), static_cast<int>(d[3])};
+    }
+}
+
+std::string windows_dropped(const Image& image, ImageFormat format) {
+    if (format == ImageFormat::exr) return "";
+    const std::array<long long, 4> data = data_window(image);
+    const bool display = image.display_window &&
+                         !std::equal(data.begin(), data.end(), image.display_window->begin());
+    if (image.origin_x == 0 && image.origin_y == 0 && !display) return "";
+    const auto box = [](const auto& b) {
+        return std::to_string(b[0]) + " " + std::to_string(b[1]) + " " + std::to_string(b[2]) + " " +
+               std::to_string(b[3]);
+    };
+    static constexpr const char* names[] = {"EXR", "PNG", "TIFF", "JPEG"};
+    return "the data window " + box(data) +
+           (image.display_window ? " and display window " + box(*image.display_window) + " are" : " is") +
+           " not kept in " + names[static_cast<int>(format)] + "; write an EXR to keep where the pixels sit";
+}
+
 Image read_image(const fs::path& path, const ImageLimits& limits) {
     const HeaderFacts facts = check_image_header(path, limits);
     Image image;

@@ -113,6 +113,26 @@ void check_image(const fs::path& path, const Image& image) {
     }
 }
 
+/// Windows OpenEXR can hold: every corner within ±max_window_coordinate, a display window with
+/// min <= max.
+void check_windows(const fs::path& path, const Image& image) {
+    const auto data = data_window(image);
+    const auto inside = [](long long v) { return v >= -max_window_coordinate && v <= max_window_coordinate; };
+    if (!std::all_of(data.begin(), data.end(), inside)) {
+        throw Error(path.string() + ": the data window starts at " + std::to_string(image.origin_x) + ", " +
+                    std::to_string(image.origin_y) + "; OpenEXR holds corners within ±" +
+                    std::to_string(max_window_coordinate));
+    }
+    if (const auto& d = image.display_window) {
+        if (!std::all_of(d->begin(), d->end(), inside) || (*d)[0] > (*d)[2] || (*d)[1] > (*d)[3]) {
+            throw Error(path.string() + ": the display window " + std::to_string((*d)[0]) + " " +
+                        std::to_string((*d)[1]) + " " + std::to_string((*d)[2]) + " " + std::to_string((*d)[3]) +
+                        " is no box OpenEXR holds (x min <= x max, y min <= y max, corners within ±" +
+                        std::to_string(max_window_coordinate) + ")");
+        }
+    }
+}
+
 /// The file's declared size against the limits, before anything is allocated.
 void check_limits(const std::string& shown, const OIIO::ImageSpec& spec, const ImageLimits& limits) {
     const long long w = spec.width, h = spec.height, c = spec.nchannels;
@@ -199,6 +219,13 @@ Image oiio_read(const fs::path& path, const ImageLimits& limits) {
     };
     image.chromaticities = floats("chromaticities");
     image.adopted_neutral = floats("adoptedNeutral");
+    image.origin_x = spec.x;
+    image.origin_y = spec.y;
+    if (spec.full_x != spec.x || spec.full_y != spec.y || spec.full_width != spec.width ||
+        spec.full_height != spec.height) {
+        image.display_window = std::array<int, 4>{spec.full_x, spec.full_y, spec.full_x + spec.full_width - 1,
+                                                  spec.full_y + spec.full_height - 1};
+    }
     image.stored_integer = !spec.format.is_floating_point();
     // OpenImageIO names a JPEG's CMYK "CMYK" and its YCCK (Adobe transform 2) "YCbCrK"; a TIFF's
     // photometric interpretation 5 is CMYK, 8-10 the L*a*b* encodings (TIFF 6.0 §23, TIFF-F).
@@ -392,6 +419,19 @@ void oiio_write(OutputFile& file, const Image& image, const ImageEncoding& encod
     }
     if (!image.description.empty()) spec.attribute("ImageDescription", image.description);
     if (format == ImageFormat::exr) {
+        check_windows(path, image);
+        spec.x = image.origin_x;
+        spec.y = image.origin_y;
+        spec.full_x = spec.x;
+        spec.full_y = spec.y;
+        spec.full_width = spec.width;
+        spec.full_height = spec.height;
+        if (const auto& d = image.display_window) {
+            spec.full_x = (*d)[0];
+            spec.full_y = (*d)[1];
+            spec.full_width = (*d)[2] - (*d)[0] + 1;
+            spec.full_height = (*d)[3] - (*d)[1] + 1;
+        }
         if (image.chromaticities.size() == 8) {
             spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8),
                            image.chromaticities.data());

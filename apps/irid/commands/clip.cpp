@@ -173,6 +173,9 @@ int run_clip_image(const ClipOptions& o, const ClipPipeline& p) {
         throw UsageError(e.what());
     }
     for (const std::string& note : source.notes) fmt::print(stderr, "irid clip: note: {}\n", note);
+    if (const std::string note = io::windows_dropped(image, format); !note.empty()) {
+        fmt::print(stderr, "irid clip: note: {}\n", note);
+    }
     const ClipPipeline pipe = make_clip_pipeline(o, true, &source.space);
     // PNG and TIFF keep a 16-bit input's depth unless --bits says otherwise; JPEG holds 8.
     const int bits =

@@ -101,6 +101,9 @@ int run_display_image(const DisplayOptions& o) {
         throw UsageError(e.what());
     }
     for (const std::string& note : report.notes) fmt::print(stderr, "irid display: note: {}\n", note);
+    if (const std::string note = io::windows_dropped(image, format); !note.empty()) {
+        fmt::print(stderr, "irid display: note: {}\n", note);
+    }
     image.description = fmt::format("irid display --view {} --display {} --from {} --to {}; colour space {} ({})",
                                     plan.view, plan.display.name, report.source.described, plan.encoding_name(),
                                     image.color_space, plan.encoded ? "encoded" : "linear, 1.0 = 100 cd/m2");

@@ -13,8 +13,10 @@
 // function of the space they are in. write_image likewise expects encoded values in [0, 1] for
 // PNG, TIFF and JPEG, and linear values for EXR.
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -66,6 +68,15 @@ struct Image {
     double png_gamma = 0.0;
     std::vector<float> png_chromaticities;
     std::vector<unsigned char> png_cicp;
+    /// Where the pixels sit in their frame, as OpenEXR's windows say it: the top-left pixel is
+    /// at (origin_x, origin_y) (the data window's corner; the window is width × height), and the
+    /// frame is display_window (x min, y min, x max, y max, inclusive, as exrheader prints it),
+    /// or the data window itself when empty. read_image sets them (a file without windows: 0,
+    /// 0 and no display window; OpenImageIO reads a TIFF's XPosition too); write_image writes
+    /// them to EXR only (windows_dropped says when another format loses them).
+    int origin_x = 0;
+    int origin_y = 0;
+    std::optional<std::array<int, 4>> display_window;
     /// How the file read stored its samples: bits per sample (8, 16, 32, ...) and whether they
     /// are integers, i.e. encoded values (true for 8/16-bit PNG and TIFF, false for EXR and HDR).
     /// Set by read_image; ignored by write_image.
@@ -148,6 +159,25 @@ enum class ImageFormat {
 [[nodiscard]] constexpr bool is_integer_format(ImageFormat f) noexcept {
     return f != ImageFormat::exr;
 }
+
+/// The largest magnitude of a window coordinate write_image writes: OpenEXR refuses windows
+/// whose corners pass ±(2^31 − 1) / 2 (its header's sanity check).
+inline constexpr int max_window_coordinate = (1 << 30) - 1;
+
+/// The data window as an inclusive box (origin_x, origin_y, origin_x + width − 1, ...).
+[[nodiscard]] std::array<long long, 4> data_window(const Image& image) noexcept;
+
+/// Sets image's windows from inclusive boxes (x min, y min, x max, y max), each optional:
+/// the data window must be width × height and the display window a box (min <= max), every
+/// corner within ±max_window_coordinate. Throws irid::Error naming which and why.
+void set_windows(Image& image, const std::optional<std::array<long long, 4>>& data_window,
+                 const std::optional<std::array<long long, 4>>& display_window);
+
+/// A note when `image` has windows (an origin other than 0, 0, or a display window other than
+/// its data window) and `format` keeps none (PNG, TIFF, JPEG): "the data window 100 50 107 53
+/// and display window 0 0 1919 1079 are not kept in PNG; write an EXR to keep where the pixels
+/// sit". Empty otherwise.
+[[nodiscard]] std::string windows_dropped(const Image& image, ImageFormat format);
 
 class OutputFile;
 
