@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -55,8 +56,17 @@ CLI::Validator whole_number_in(long long lo, long long hi) {
             long long value = 0;
             const char* end = text.data() + text.size();
             const auto [p, ec] = std::from_chars(text.data(), end, value);
-            if (text.empty() || p != end || ec == std::errc::invalid_argument)
-                return quote_untrusted(text) + " is not a whole number; allowed: " + allowed;
+            if (text.empty() || p != end || ec == std::errc::invalid_argument) {
+                // A whole number written another way ("1e3", "12.0") is that number.
+                double real = 0.0;
+                const auto [q, rec] = std::from_chars(text.data(), end, real);
+                if (text.empty() || q != end || rec != std::errc() || !std::isfinite(real) || real != std::floor(real))
+                    return quote_untrusted(text) + " is not a whole number; allowed: " + allowed;
+                if (real < static_cast<double>(lo) || real > static_cast<double>(hi))
+                    return quote_untrusted(text) + " is out of range; allowed: " + allowed;
+                text = std::to_string(static_cast<long long>(real));
+                return {};
+            }
             if (ec == std::errc::result_out_of_range || value < lo || value > hi)
                 return quote_untrusted(text) + " is out of range; allowed: " + allowed;
             return {};
@@ -65,7 +75,7 @@ CLI::Validator whole_number_in(long long lo, long long hi) {
 }
 
 CLI::Option* add_threads_option(CLI::App* cmd, int& threads, const std::string& description) {
-    return cmd->add_option("--threads", threads, description)->check(whole_number_in(0, max_threads))->capture_default_str();
+    return cmd->add_option("--threads", threads, description)->transform(whole_number_in(0, max_threads))->capture_default_str();
 }
 
 bool is_exr_path(const std::string& path) {

@@ -55,8 +55,9 @@ void append_csv_line(std::string& out, std::span<const double> values);
 /// Writes the whole output at once; throws irid::Error when standard output fails.
 void write_stdout(const std::string& text);
 
-/// An option's check for a whole number in [lo, hi]: "--width abc" is "'abc' is not a whole
-/// number; allowed: 1 to 16384", not "out of range".
+/// An option's transform to a whole number in [lo, hi]: "--width abc" is "'abc' is not a whole
+/// number; allowed: 1 to 16384", not "out of range"; a whole number written another way
+/// ("1e3", "12.0") becomes that number. Give it with ->transform (->check cannot rewrite).
 [[nodiscard]] CLI::Validator whole_number_in(long long lo, long long hi);
 
 /// Adds `--threads` (0: all) to `cmd`, a whole number in [0, irid::max_threads] as Python's

@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -34,6 +35,10 @@ bool flush_standard_output() {
 
 int main(int argc, char** argv) {
     using namespace irid::cli;
+    // Past a file-size limit (ulimit -f) a write fails with EFBIG ("File too large") and the
+    // command cleans up after itself, instead of SIGXFSZ ending the process with its temporary
+    // file left behind.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"irid: interference colours and gamut clipping (after Smits 1990)", "irid"};
     app.set_version_flag("--version", "irid " + std::string(irid::irid_version()));
     app.require_subcommand(1);

@@ -68,6 +68,7 @@ void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limit
     std::uint64_t first_scan = 0;
     // APP2 "ICC_PROFILE\0" chunks: (sequence number, count) and the data, in file order.
     std::vector<std::pair<unsigned, unsigned>> chunk_numbers;
+    std::string short_segment;  // an ICC_PROFILE segment too short for its header
     std::vector<std::vector<unsigned char>> chunk_data;
     std::uint64_t pos = 2;
     unsigned char m[4];
@@ -103,11 +104,19 @@ void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limit
                     frame.sampling.emplace_back(std::max(1u, factors >> 4), std::max(1u, factors & 15u));
                 }
             }
-        } else if (marker == 0xE2 && length >= 16) {
+        } else if (marker == 0xE2 && length >= 14) {
             std::vector<unsigned char> data = read_bytes(file, pos + 4, length - 2);
-            if (data.size() >= 14 && std::memcmp(data.data(), "ICC_PROFILE\0", 12) == 0) {
-                chunk_numbers.emplace_back(data[12], data[13]);
-                chunk_data.emplace_back(data.begin() + 14, data.end());
+            if (data.size() >= 12 && std::memcmp(data.data(), "ICC_PROFILE\0", 12) == 0) {
+                if (data.size() < 14 && short_segment.empty()) {
+                    // Its sequence number or count is missing: a part of a profile, not no profile.
+                    short_segment = "its APP2 ICC_PROFILE segment at byte " + std::to_string(pos) + " holds " +
+                                    std::to_string(data.size()) + " bytes, fewer than the 14 of its header "
+                                    "(the name, a sequence number and a count)";
+                }
+                if (data.size() >= 14) {
+                    chunk_numbers.emplace_back(data[12], data[13]);
+                    chunk_data.emplace_back(data.begin() + 14, data.end());
+                }
             }
         } else if (marker == 0xDA) {
             first_scan = pos + 2 + length;
@@ -132,6 +141,10 @@ void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limit
         }
     }
 
+    if (!short_segment.empty()) {
+        facts.icc_damage = short_segment;
+        return;
+    }
     if (chunk_numbers.empty()) return;
     // ICC.1:2022 Annex B.4: chunks numbered 1 to N, each once, all with the same N.
     const unsigned count = chunk_numbers.front().second;

@@ -111,16 +111,23 @@ void check_png(const std::string& shown, Reader& file, const ImageLimits& limits
     unsigned depth = 0, colour_type = 0;
     bool have_header = false;
     unsigned char head[8];
+    // The chunks' lengths first, over the whole file (a length past the file is the damage that
+    // costs memory), then each chunk's CRC and content.
+    for (std::uint64_t at = 8; file.read(at, head, sizeof head);) {
+        const std::uint64_t length = big_endian32(head);
+        const std::uint64_t left = file.size() - at - 8;  // data and CRC
+        if (length + 4 > left) {
+            corrupt(shown, "its " + printable(head + 4, 4) + " chunk at byte " + std::to_string(at) + " declares " +
+                               std::to_string(length) + " bytes, and " +
+                               std::to_string(left >= 4 ? left - 4 : 0) + " remain");
+        }
+        if (printable(head + 4, 4) == "IEND") break;
+        at += 12 + length;
+    }
     bool ended = false, data_seen = false;
     while (file.read(pos, head, sizeof head)) {
         const std::uint64_t length = big_endian32(head);
         const std::string type = printable(head + 4, 4);
-        const std::uint64_t left = file.size() - pos - 8;  // data and CRC
-        if (length + 4 > left) {
-            corrupt(shown, "its " + type + " chunk at byte " + std::to_string(pos) + " declares " +
-                               std::to_string(length) + " bytes, and " +
-                               std::to_string(left >= 4 ? left - 4 : 0) + " remain");
-        }
         if (!crc_matches(file, pos, length)) {
             corrupt(shown, "its " + type + " chunk at byte " + std::to_string(pos) + " fails its CRC");
         }

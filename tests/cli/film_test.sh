@@ -254,9 +254,14 @@ run film --model thesis-multilayer --layer 1.56:100 --periods 12 --angle 30 --wa
 expect_rows 'w[2] = 84.5' 1e-9 1 rel
 # No film is no multilayer (eq. 25 would be one interface, a perfect mirror with the default K).
 run film --model thesis-multilayer --layer 1.56:100 --periods 0 --K 1
-expect_usage_error "--periods" "1..1000000"
+expect_usage_error "--periods" "allowed: 1 to 1000000"
 run film --model morpho --periods 0
-expect_usage_error "--periods" "1..1000000"
+expect_usage_error "--periods" "allowed: 1 to 1000000"
+# A whole number in another notation is that number; a fraction is named as one.
+run film --model morpho --periods 1e3 --color
+expect_status 0
+run film --model morpho --periods 2.5
+expect_usage_error "--periods" "'2.5' is not a whole number; allowed: 1 to 1000000"
 run film --model thesis-multilayer --layer 0.9:100 --periods 3
 expect_usage_error "eq. 26" ">= 1"
 
@@ -527,7 +532,7 @@ expect_usage_error "--d1" "[0, 1e6]"
 run film --model morpho --n 0.5
 expect_usage_error "--n" ">= 1"
 run film --model morpho --periods -1
-expect_usage_error "--periods" "1..1000000"
+expect_usage_error "--periods" "allowed: 1 to 1000000"
 
 # ===========================================================================================
 

@@ -135,6 +135,13 @@ for ext in tif exr; do
     expect_stderr_lacks "Could not open"
     check "r.$ext is as it was" test "$(cat "$W/r.$ext")" = "old"
 done
+# With SIGXFSZ at its default (which kills a process), irid ignores it itself: "File too large",
+# exit 1, and no temporary file left beside the target.
+mkdir -p "$W/xfsz"
+sh_run 'cd xfsz && ulimit -f 16; "$IRID" render oil-slick --width 200 --height 150 --spp 1 -q -o r.exr'
+expect_status 1
+expect_stderr_has "r.exr: writing failed: File too large"
+check "no temporary file is left under the default SIGXFSZ" test -z "$(ls -A "$W/xfsz")"
 # --linear: the message names the file asked for, never a temporary name. (At 40 × 30 the PNG
 # takes about 2 KiB, which fits in 8 KiB, and the EXR about 15 KiB, which does not.)
 sh_run 'trap "" XFSZ; ulimit -f 8; "$IRID" render oil-slick --width 40 --height 30 --spp 1 -q -o small.png --linear raw.exr'

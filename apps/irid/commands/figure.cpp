@@ -98,10 +98,10 @@ void add_figure_command(CLI::App& app, Runner& runner) {
                     "Output file; its extension picks the format (.svg .png, tables .md .html)");
     cmd->add_option("--width", command->width, "Image width in pixels (PNG) or points (SVG)")
         ->capture_default_str()
-        ->check(whole_number_in(figures::min_size_px, figures::max_size_px));
+        ->transform(whole_number_in(figures::min_size_px, figures::max_size_px));
     cmd->add_option("--height", command->height, "Image height in pixels (PNG) or points (SVG)")
         ->capture_default_str()
-        ->check(whole_number_in(figures::min_size_px, figures::max_size_px));
+        ->transform(whole_number_in(figures::min_size_px, figures::max_size_px));
     cmd->add_option("--set", command->sets, "A figure option key=value (repeatable)");
     cmd->add_flag("--list", command->list, "Print the catalog: name, thesis figure, title, options");
     cmd->add_flag("--caption", command->caption,

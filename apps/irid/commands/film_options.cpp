@@ -143,7 +143,8 @@ void add_film_options(CLI::App& cmd, FilmArguments& a, bool thickness_required) 
                    "at 555 nm; 0.286 for water in air), so eq. 21/22 peak where the exact film "
                    "does; for thesis-multilayer and morpho K = 2/(l+1)^2, l = --periods (0.0118 "
                    "for 12), so eq. 25 peaks at 1");
-    cmd.add_option("--periods", a.periods, "Number of films l in eq. 25 (thesis-multilayer; morpho default 12)");
+    cmd.add_option("--periods", a.periods, "Number of films l in eq. 25 (thesis-multilayer; morpho default 12)")
+        ->transform(whole_number_in(thesis_min_periods, thesis_max_periods));
     cmd.add_option("--d1", a.d1_nm, "Morpho: path in air per period d1 [nm]")->capture_default_str();
     cmd.add_option("--d2", a.d2_nm, "Morpho: chitin mullion thickness d2 [nm]")->capture_default_str();
     cmd.add_option("--n", a.n, "Morpho: index of chitin (>= 1)")->capture_default_str();

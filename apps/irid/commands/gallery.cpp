@@ -52,11 +52,11 @@ void add_gallery_command(CLI::App& app, Runner& runner) {
         "gallery", "Render the scenes, figures and tables into DIR/index.html");
     cmd->add_option("-o,--output", o->dir, "Folder to write index.html and its images into")
         ->required();
-    cmd->add_option("--width", o->options.width, "Scene width in pixels")->check(whole_number_in(32, 4096));
-    cmd->add_option("--height", o->options.height, "Scene height in pixels")->check(whole_number_in(24, 4096));
-    cmd->add_option("--spp", o->options.spp, "Samples per pixel of the scenes")->check(whole_number_in(1, 256));
+    cmd->add_option("--width", o->options.width, "Scene width in pixels")->transform(whole_number_in(32, 4096));
+    cmd->add_option("--height", o->options.height, "Scene height in pixels")->transform(whole_number_in(24, 4096));
+    cmd->add_option("--spp", o->options.spp, "Samples per pixel of the scenes")->transform(whole_number_in(1, 256));
     cmd->add_option("--figure-width", o->options.figure_width, "Figure width in pixels (height 5/8 of it)")
-        ->check(whole_number_in(320, 4096));
+        ->transform(whole_number_in(320, 4096));
     add_threads_option(cmd, o->options.threads, "Worker threads (0: all)");
     cmd->add_option("--page", o->pages, "Link a page already in the folder: FILE=TITLE (repeatable)");
     cmd->add_flag("-q,--quiet", o->quiet, "No progress messages on stderr");

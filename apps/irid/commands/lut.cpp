@@ -197,7 +197,7 @@ void add_lut_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--size", o->size,
                     "Nodes per axis, " + std::to_string(lut_min_size) + " to " +
                         std::to_string(lut_max_size) + " (17, 33 and 65 are usual)")
-        ->check(whole_number_in(lut_min_size, lut_max_size))
+        ->transform(whole_number_in(lut_min_size, lut_max_size))
         ->capture_default_str();
     o->shaper_option = cmd->add_option("--shaper", o->shaper,
                     "none: nodes uniform over the domain; log2: nodes uniform in stops below the "

@@ -117,7 +117,7 @@ void add_ocio_config_command(CLI::App& app, Runner& runner) {
     cmd->add_option("--size", a->size, "The LUTs' nodes per axis, in the display's linear space (0 and 1 "
                                        "among them; the range a source colour in [0, 16]³, or [0, 1]³ "
                                        "encoded, reaches there)")
-        ->check(whole_number_in(ocio_look_min_size, lut_max_size))
+        ->transform(whole_number_in(ocio_look_min_size, lut_max_size))
         ->capture_default_str();
     cmd->add_option("--range", a->range,
                     "The source values the looks cover, LO,HI (default -1,16 for a linear source, "

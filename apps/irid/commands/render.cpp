@@ -203,10 +203,10 @@ void add_render_command(CLI::App& app, Runner& runner) {
         ->required();
     cmd->add_option("-o,--output", o->out, "Output image: .png, .tif/.tiff or .exr (default: SCENE.png)");
     cmd->add_option("--width", o->width, "Image width in pixels")
-        ->check(whole_number_in(1, render::max_image_side));
+        ->transform(whole_number_in(1, render::max_image_side));
     cmd->add_option("--height", o->height, "Image height in pixels")
-        ->check(whole_number_in(1, render::max_image_side));
-    cmd->add_option("--spp", o->spp, "Samples per pixel")->check(whole_number_in(1, render::max_spp));
+        ->transform(whole_number_in(1, render::max_image_side));
+    cmd->add_option("--spp", o->spp, "Samples per pixel")->transform(whole_number_in(1, render::max_spp));
     add_threads_option(cmd, o->threads, "Worker threads (0: all)");
     // CLI11 2.1 reads "-1" as 2^64 - 1 and saturates numbers beyond 2^64 - 1: check the text.
     cmd->add_option("--seed", o->seed, "Seed of the sampling and of the noise textures")
