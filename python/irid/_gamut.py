@@ -242,7 +242,9 @@ def write_ocio_config(dir, source="acescg-linear", display="srgb", methods=None,
                       adaptation="bradford", threads=0, range=None, aces2=None):
     """Writes an OpenColorIO 2 config offering the clip methods as looks (``irid ocio-config``).
 
-    dir: the folder (created if missing): config.ocio and luts/irid-METHOD.clf.
+    dir: the folder (created if missing): config.ocio and luts/irid-METHOD.clf, written as a set
+        (a failure leaves the old config whole); LUTs of an earlier config under irid's names
+        that this one does not write are removed, other files stay.
     source: the scene's RGB space; its linear form is the config's reference (and scene_linear
         role), an encoded source a colour space decoded from it. display: the display's RGB
         space, whose cube is the gamut (it may be the source's own): one matrix from the

@@ -165,7 +165,7 @@ nodes: the value of each node along an axis of the cube (float64, size).)")
             py::gil_scoped_release release;
             const OcioConfig config = make_ocio_config(o);
             try {
-                write_ocio_config(dir, config);
+                (void)write_ocio_config(dir, config);
             } catch (const Error& e) {
                 throw FileError(e.what());
             }

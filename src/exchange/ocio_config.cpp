@@ -140,7 +140,8 @@ std::pair<double, double> ocio_source_range(const OcioConfigOptions& o) {
     const auto [bottom, top] = range;
     if (!(std::isfinite(bottom) && std::isfinite(top) && bottom >= -1e5 && top <= 1e5 && bottom < top && top > 0.0)) {
         throw Error("source range [" + format_shortest(bottom) + ", " + format_shortest(top) +
-                    "]: needs finite -1e5 <= min < max <= 1e5 with max > 0");
+                    "]: needs finite -1e5 <= min < max <= 1e5 with max > 0, and to reach an interval at most 4096 wide in "
+                    "the display's linear space");
     }
     return range;
 }
@@ -386,13 +387,37 @@ OcioConfig make_ocio_config(const OcioConfigOptions& o) {
     return result;
 }
 
-void write_ocio_config(const std::filesystem::path& dir, const OcioConfig& config) {
+std::vector<std::filesystem::path> write_ocio_config(const std::filesystem::path& dir, const OcioConfig& config) {
+    namespace fs = std::filesystem;
     std::error_code ec;
-    std::filesystem::create_directories(dir / "luts", ec);
-    if (ec) throw Error("cannot make the folder " + (dir / "luts").string() + ": " + ec.message());
-    for (const auto& [name, lut] : config.luts) write_lut(dir / name, lut);
-    for (const auto& [name, lut] : config.display_luts) write_lut(dir / name, lut);
-    io::write_output_file(dir / "config.ocio", config.config);
+    if (fs::is_symlink(dir, ec) && !fs::exists(dir, ec)) {
+        throw Error(quote_untrusted(dir.string(), 200) + " is a symbolic link to " +
+                    quote_untrusted(fs::read_symlink(dir, ec).string(), 200) +
+                    ", which does not exist; make that folder, or give another");
+    }
+    fs::create_directories(dir / "luts", ec);
+    if (ec) throw Error("cannot make the folder " + quote_untrusted((dir / "luts").string(), 200) + ": " + ec.message());
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const auto* set : {&config.luts, &config.display_luts}) {
+        for (const auto& [name, lut] : *set) files.emplace_back(name, lut_text(lut, lut_format_for(name)));
+    }
+    files.emplace_back("config.ocio", config.config);
+    io::write_output_files(dir, files);
+    // What an earlier config wrote and this one does not: its looks' and views' LUTs.
+    std::vector<fs::path> stale;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir / "luts", ec)) {
+        const std::string name = e.path().filename().string();
+        const bool irid_name = (name.starts_with("irid-") || name.starts_with("aces2-")) && name.ends_with(".clf");
+        const bool written = std::any_of(files.begin(), files.end(),
+                                         [&](const auto& f) { return f.first == "luts/" + name; });
+        if (irid_name && !written && e.is_regular_file(ec)) stale.push_back(e.path());
+    }
+    std::vector<fs::path> removed;
+    for (const fs::path& p : stale) {
+        if (fs::remove(p, ec)) removed.push_back(p);
+        else if (ec) throw Error("cannot remove " + quote_untrusted(p.string(), 200) + ", a LUT of an earlier config: " + ec.message());
+    }
+    return removed;
 }
 
 }  // namespace irid

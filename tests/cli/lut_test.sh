@@ -228,6 +228,29 @@ grep -q "name: ACES 2.0 sdr-100nit-rec709, colorspace: aces2-sdr-100nit-rec709" 
 run '' ocio-config --methods clamp --size 5 --aces2 none -o "$TMP/noaces"
 expect_status 0
 expect_stdout_has "0 ACES 2.0 views"
+# Into the folder of an earlier config: the folder then holds this config alone (the earlier
+# config's LUTs under irid's names removed, and said so), and other files stay.
+printf 'mine\n' >"$TMP/cfg/luts/notes.txt"
+run '' ocio-config --methods clamp --size 5 --aces2 none -o "$TMP/cfg"
+expect_status 0
+expect_stdout_has "removed 4 LUTs of an earlier config"
+[[ "$(ls "$TMP/cfg/luts" | tr '\n' ' ')" == "irid-clamp.clf notes.txt " ]] && pass ||
+    fail "only this config's LUT and the user's file remain" "$(ls "$TMP/cfg/luts")"
+# A symbolic link to a folder that does not exist is named as one (not "File exists").
+ln -s "$TMP/missing-folder" "$TMP/dangling"
+run '' ocio-config --methods clamp --size 5 -o "$TMP/dangling"
+expect_status 1
+expect_stderr_has "is a symbolic link to"
+expect_stderr_has "which does not exist"
+# The range's rule, stated in full: within ±1e5, and an interval at most 4096 wide in the
+# display's linear space (ACEScg on sRGB: ±849 passes, ±850 does not).
+run '' ocio-config --methods clamp --size 5 --aces2 none --range=-849,849 -o "$TMP/range"
+expect_status 0
+run '' ocio-config --methods clamp --size 5 --aces2 none --range=-850,850 -o "$TMP/range"
+expect_status 2
+expect_stderr_has "at most 4096 wide"
+run '' ocio-config --help
+expect_stdout_has "interval at most 4096 wide"
 run '' ocio-config --aces2 sdr-100nit-rec709,nope -o "$TMP/cfg2"
 expect_status 2
 expect_stderr_has "nope"

@@ -320,6 +320,22 @@ def test_misnumbered_jpeg_profile_segments_are_refused(irid_cli, tmp_path, numbe
     assert r.returncode == 0 and "--from adobe-rgb overrides" in r.stderr, r.stderr
 
 
+@pytest.mark.parametrize("tail", [b"", b"\x01"])
+def test_an_icc_segment_too_short_for_its_header_is_a_damaged_profile(irid_cli, tmp_path, tail):
+    """"ICC_PROFILE\\0" and no sequence number or count (12 or 13 bytes): a part of a profile,
+    which libjpeg's readers skip, not the absence of one."""
+    plain = pil_bytes(random_rgb(8, 8), "JPEG", quality=95)
+    body = b"ICC_PROFILE\0" + tail
+    path = tmp_path / "short.jpg"
+    path.write_bytes(plain[:2] + b"\xff\xe2" + struct.pack(">H", len(body) + 2) + body + plain[2:])
+    _, meta = irid.read_image(path)
+    assert meta["icc_profile_rejected"]
+    assert f"holds {len(body)} bytes, fewer than the 14 of its header" in meta["icc_profile_damage"]
+    r = subprocess.run([irid_cli, "clip", "--method", "clamp", path, tmp_path / "out.png"],
+                       capture_output=True, text=True)
+    assert r.returncode == 1 and "short.jpg: ICC profile: damaged" in r.stderr, r.stderr
+
+
 def test_jpeg_profile_segments_are_joined_by_their_numbers(irid_cli, tmp_path):
     px = random_rgb(8, 8)
     first, second = halves(prophoto())

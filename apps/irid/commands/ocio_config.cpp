@@ -86,7 +86,7 @@ int run_ocio_config(const OcioConfigArgs& a) {
     } catch (const Error& e) {
         throw UsageError(e.what());
     }
-    write_ocio_config(a.out, config);
+    const std::vector<std::filesystem::path> removed = write_ocio_config(a.out, config);
     // The folder as given, or quoted with escapes when it holds what a terminal would act on.
     const std::string quoted = quote_untrusted(a.out, 1000);
     const std::string shown = quoted == "'" + a.out + "'" ? a.out : quoted;
@@ -97,6 +97,9 @@ int run_ocio_config(const OcioConfigArgs& a) {
                counted(config.luts.size(), "look", "looks"),
                counted(config.display_luts.size(), "ACES 2.0 view", "ACES 2.0 views"), color_space_name(o.display),
                counted(config.luts.size() + config.display_luts.size(), "LUT", "LUTs"), shown);
+    if (!removed.empty()) {
+        fmt::print("{}/luts: removed {} of an earlier config\n", shown, counted(removed.size(), "LUT", "LUTs"));
+    }
     return exit_success;
 }
 
@@ -121,7 +124,9 @@ void add_ocio_config_command(CLI::App& app, Runner& runner) {
         ->capture_default_str();
     cmd->add_option("--range", a->range,
                     "The source values the looks cover, LO,HI (default -1,16 for a linear source, "
-                    "0,1 for an encoded one); beyond them inputs clamp");
+                    "0,1 for an encoded one); beyond them inputs clamp. LO < HI, HI > 0, both within "
+                    "±1e5, and the colours of the range may reach an interval at most 4096 wide in the "
+                    "display's linear space, where the LUT's nodes lie (ACEScg on sRGB: about ±849)");
     cmd->add_option("--adaptation", a->adaptation,
                     "Chromatic adaptation where whites differ: bradford, cat02, von-kries, none")
         ->capture_default_str();

@@ -100,8 +100,12 @@ struct OcioConfig {
 /// ocio_aces2_displays refuses.
 [[nodiscard]] OcioConfig make_ocio_config(const OcioConfigOptions& options);
 
-/// Writes make_ocio_config's files into `dir` (created if missing; an existing config.ocio and
-/// LUTs of the same names are replaced, each file whole or not at all).
-void write_ocio_config(const std::filesystem::path& dir, const OcioConfig& config);
+/// Writes make_ocio_config's files into `dir` (created if missing) as a set (io::write_output_files:
+/// a failure leaves the old config and LUTs, or all the new ones, never a mix). The LUTs an
+/// earlier config left in DIR/luts under irid's names (irid-*.clf, aces2-*.clf) that this one
+/// does not write are then removed, so that the folder holds this config alone; other files
+/// stay. Returns the paths removed. Throws irid::Error naming the folder when it cannot be made
+/// (a symbolic link to a folder that does not exist is named as one).
+std::vector<std::filesystem::path> write_ocio_config(const std::filesystem::path& dir, const OcioConfig& config);
 
 }  // namespace irid
