@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <complex>
 #include <cmath>
+#include <utility>
 
 namespace irid {
 
@@ -89,7 +90,7 @@ Xyz incoherent_film_xyz(const SingleFilm& film, double angle_rad, const Colorime
     // Per polarisation the mean of the Airy reflectance over a period of the phase is the
     // incoherent sum of the faces, R = 1 − (1 − R01)(1 − R12) / (1 − R01 R12) (Stokes), written
     // from PreparedFilm's cancellation-free factors: (1 − r01²)(1 − r12²) / ((1 − x)(1 + x)).
-    // Wavelengths where the film absorbs or a face reflects totally keep the Airy sum (an
+    // Wavelengths where the film absorbs or its top face reflects totally keep the Airy sum (an
     // absorbing film this thick returns nothing from its far face; a totally reflecting one
     // reflects everything).
     const double cos_theta0 = std::cos(angle_rad);
@@ -101,6 +102,17 @@ Xyz incoherent_film_xyz(const SingleFilm& film, double angle_rad, const Colorime
             return FilmStack(film.ambient, {Layer{film.film, 0.0}}, film.substrate)
                 .evaluate(lambda, angle_rad, Polarization::unpolarized)
                 .R;
+        }
+        if (!s.real && s.phase_per_nm.real() == 0.0) {
+            // A lossless film whose far face is complex (an absorbing substrate, or one past
+            // its critical angle): the same Stokes sum with the faces' |r|², which the phase of
+            // r12 does not enter.
+            double r = 0.0;
+            for (const auto& [r01, r12] : {std::pair{s.r01_s, s.r12_s}, std::pair{s.r01_p, s.r12_p}}) {
+                const double a = std::norm(r01), b = std::norm(r12);
+                r += 0.5 * (a + (1.0 - a) * (1.0 - a) * b / (1.0 - a * b));
+            }
+            return std::clamp(r, 0.0, 1.0);
         }
         if (!s.real) return PreparedFilm::airy_reflectance(s, 1e6);
         double r = 0.0;

@@ -392,6 +392,11 @@ TEST(FineSum, ThickFilmsTakeTheIncoherentColourInEveryPath) {
         {constant_film(1.0, 2.4, Complex(1.0)), 1e6, 0.0},
         {constant_film(1.0, 1.5, Complex(2.2)), 2e5, 40.0},
         {{*find_material("air"), *find_material("water"), *find_material("air")}, 1e6, 85.0},
+        // Absorbing substrates (issue 39): the incoherent colour once took the coherent Airy sum
+        // at 1 mm wherever r12 is complex, a* = -3.1 and ΔE2000 5.0 from the fine sum.
+        {constant_film(1.0, 2.4, Complex(1.5, 0.01)), 1e6, 0.0},
+        {constant_film(1.0, 1.02029, Complex(1.896, 2.016)), 1e6, 88.0},
+        {constant_film(1.0, 1.5, Complex(0.12, 3.34)), 2e5, 30.0},
     };
     for (const Case& k : cases) {
         const double theta = k.angle_deg * pi / 180.0;
@@ -414,6 +419,14 @@ TEST(FineSum, ThickFilmsTakeTheIncoherentColourInEveryPath) {
     const auto stokes = [](double r01, double r12) { return r01 + (1.0 - r01) * (1.0 - r01) * r12 / (1.0 - r01 * r12); };
     const double r = 0.5 * (stokes(std::norm(f01.r_s), std::norm(f12.r_s)) + stokes(std::norm(f01.r_p), std::norm(f12.r_p)));
     EXPECT_NEAR(incoherent_film_xyz(film, 0.5, c).Y, r, 1e-12);
+    // On an absorbing substrate the same sum with |r12|² of the complex amplitudes.
+    const SingleFilm on_metal = constant_film(1.0, 1.5, Complex(0.12, 3.34));
+    const double q0 = std::cos(0.5), q1 = std::sqrt(1.5 * 1.5 - s * s);
+    const Complex q2 = std::sqrt(Complex(0.12, 3.34) * Complex(0.12, 3.34) - s * s);
+    const Complex n2sq = Complex(0.12, 3.34) * Complex(0.12, 3.34);
+    const double rs01 = std::norm((q0 - q1) / (q0 + q1)), rp01 = std::norm((q1 - 2.25 * q0) / (q1 + 2.25 * q0));
+    const double rs12 = std::norm((q1 - q2) / (q1 + q2)), rp12 = std::norm((2.25 * q2 - n2sq * q1) / (2.25 * q2 + n2sq * q1));
+    EXPECT_NEAR(incoherent_film_xyz(on_metal, 0.5, c).Y, 0.5 * (stokes(rs01, rs12) + stokes(rp01, rp12)), 1e-12);
 }
 
 TEST(FourierFilm, ATotallyReflectingThickFilmIsWhite) {
