@@ -595,5 +595,37 @@ TEST(FourierFilm, DispersiveFilmsOnTheFastPath) {
     }
 }
 
+TEST(FineSum, FilmsOnMetalsAndAbsorbingBasesDoNotAliasAtAnyThickness) {
+    // Issue 39: on gold near grazing incidence the 1 nm sum was ΔE2000 3.7 from a finer one at
+    // 55 µm (many strong round trips alias below the incoherent limit's 100 µm), and on
+    // absorbing bases the incoherent colour was the coherent sum at 1 mm. Both paths against a
+    // sum four times finer than the film needs (at least 0.0025 nm), 100 nm to 1 mm, 0-88°.
+    const Colorimeter c;
+    const SingleFilm films[] = {
+        {*find_material("air"), *find_material("water"), *find_material("gold")},
+        {*find_material("air"), *find_material("water"), *find_material("silver")},
+        constant_film(1.0, 1.5, Complex(0.12, 3.34)),
+        constant_film(1.0, 2.4, Complex(1.5, 0.01)),
+        constant_film(1.0, 1.02029, Complex(1.896, 2.016)),
+    };
+    for (const SingleFilm& film : films) {
+        const FourierFilm fourier(film, fourier_colorimeter_for(film, c));
+        for (const double angle_deg : {0.0, 60.0, 85.0, 88.0}) {
+            const double theta = angle_deg * pi / 180.0;
+            const PreparedFilm prepared(film, theta);
+            for (double t = 100.0; t <= 1e6; t *= sanitized ? 8.0 : 2.0) {
+                const double step = std::clamp(alias_free_step_nm(film, t, theta) / 4.0, 2.5e-3, 0.25);
+                const Xyz reference = optical_path_difference_nm(film, t, theta) >= incoherent_opd_nm
+                                          ? incoherent_film_xyz(film, theta, c)
+                                          : finely_summed_film_xyz(film, t, theta, c, step);
+                const std::string what = film.film.name() + " on " + film.substrate.name() + ", " +
+                                         std::to_string(t) + " nm at " + std::to_string(angle_deg) + "°";
+                EXPECT_LT(delta_e_2000_of(c, prepared.color(t, c).xyz, reference), 0.025) << what;
+                EXPECT_LT(delta_e_2000_of(c, fourier.xyz(t, std::cos(theta)), reference), 0.025) << what;
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace irid

@@ -49,11 +49,15 @@ namespace irid {
 /// 1 nm grid's own transform begins to alias; docs/OPTICS.md).
 inline constexpr double incoherent_opd_nm = 100000.0;
 
-/// Where the 1 nm grid aliases for this film, thickness and angle (alias_free_step_nm < 1) and
-/// one round trip is past incoherent_opd_nm, the incoherent colour; nothing otherwise (the 1 nm
-/// sum holds, or, for high-finesse films under 100 µm of path near grazing incidence, stays:
-/// summing them finer could cost up to 100 times the 1 nm sum, past the work limits). The 1 nm
-/// colours (PreparedFilm::color, exact_film_color) defer to it.
+/// The finest step alias_free_xyz sums at [nm]: 47 000 reflectances, 100 times the 1 nm sum.
+inline constexpr double finest_refinement_nm = 0.01;
+
+/// Where the 1 nm grid aliases for this film, thickness and angle (alias_free_step_nm < 1): the
+/// incoherent colour once one round trip is past incoherent_opd_nm, else the film summed at
+/// alias_free_step_nm (no finer than finest_refinement_nm: a film whose round trips reach past
+/// 0.7 × 380² / 0.01 nm = 10 mm of path before fading to 1e-3, such as water on gold near
+/// grazing incidence, keeps a little of the aliasing; docs/OPTICS.md measures it). Nothing where
+/// the 1 nm sum holds. The 1 nm colours (PreparedFilm::color, exact_film_color) defer to it.
 [[nodiscard]] std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
                                                 const Colorimeter& colorimeter) noexcept;
 /// The same from a reach already found for the film and angle (PreparedFilm finds it once).
