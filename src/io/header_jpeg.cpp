@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <string>
 #include <utility>
@@ -61,6 +62,49 @@ std::string sequence_text(const std::vector<std::pair<unsigned, unsigned>>& chun
     return s;
 }
 
+/// After the first scan, up to EOI: a second frame header (SOF) is what libjpeg's
+/// jpeg_finish_decompress stops at ("Invalid JPEG file structure: two SOF markers"), which
+/// OpenImageIO 2.4 never calls, so a file whose coded data run on into the headers of another
+/// image, decoding as garbage, read as whole. Stuffed bytes (FF 00), restart markers and fill
+/// bytes are skipped; so is every segment by its length (the DHT, DQT, DRI and SOS of later scans).
+/// A later scan, unless `more_scans`, is what libjpeg stops at too.
+void check_after_first_scan(const std::string& shown, Reader& file, std::uint64_t from, bool more_scans) {
+    unsigned char chunk[1 << 15];
+    std::uint64_t pos = from;
+    while (pos + 1 < file.size()) {
+        const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(sizeof chunk, file.size() - pos));
+        if (!file.read(pos, chunk, n)) return;
+        const auto* ff = static_cast<const unsigned char*>(std::memchr(chunk, 0xFF, n));
+        if (ff == nullptr) {
+            pos += n;
+            continue;
+        }
+        pos += static_cast<std::uint64_t>(ff - chunk);
+        unsigned char m[4];
+        if (!file.read(pos, m, 2)) return;
+        const unsigned marker = m[1];
+        if (marker == 0x00 || marker == 0xFF || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {
+            pos += marker == 0xFF ? 1 : 2;
+            continue;
+        }
+        if (marker == 0xD9) return;  // EOI
+        if (is_frame_marker(marker)) {
+            corrupt(shown, "a second frame header (marker 0x" + [&] {
+                static constexpr char hex[] = "0123456789ABCDEF";
+                return std::string{hex[marker >> 4], hex[marker & 15]};
+            }() + ") at byte " + std::to_string(pos) + ", after the image's first scan (libjpeg: two SOF markers)");
+        }
+        if (marker == 0xDA && !more_scans) {
+            corrupt(shown, "a second scan at byte " + std::to_string(pos) +
+                               " of an image whose first scan holds every component (libjpeg: didn't expect more "
+                               "than one scan)");
+        }
+        if (!file.read(pos, m, 4)) return;
+        const std::uint64_t length = static_cast<std::uint64_t>(m[2]) << 8 | m[3];
+        pos += 2 + std::max<std::uint64_t>(length, 2);
+    }
+}
+
 }  // namespace
 
 void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts) {
@@ -69,6 +113,7 @@ void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limit
     // APP2 "ICC_PROFILE\0" chunks: (sequence number, count) and the data, in file order.
     std::vector<std::pair<unsigned, unsigned>> chunk_numbers;
     std::string short_segment;  // an ICC_PROFILE segment too short for its header
+    unsigned first_scan_components = 0;
     std::vector<std::vector<unsigned char>> chunk_data;
     std::uint64_t pos = 2;
     unsigned char m[4];
@@ -120,10 +165,18 @@ void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limit
             }
         } else if (marker == 0xDA) {
             first_scan = pos + 2 + length;
+            unsigned char ns = 0;
+            if (file.read(pos + 4, &ns, 1)) first_scan_components = ns;
         }
         pos += 2 + length;
     }
 
+    if (first_scan > 0) {
+        // libjpeg expects more scans only of a progressive frame, or after a first scan that
+        // leaves components out (jdinput.c, has_multiple_scans).
+        const bool progressive = frame.marker == 0xC2 || frame.marker == 0xC6 || frame.marker == 0xCA || frame.marker == 0xCE;
+        check_after_first_scan(shown, file, first_scan, progressive || first_scan_components < frame.sampling.size());
+    }
     if (frame.marker != 0 && frame.width > 0 && frame.height > 0) {
         check_declared_pixels(shown, frame.width, frame.height, limits);
         // Arithmetic coding can spend less than a bit on a block: such a file is bounded by the

@@ -79,6 +79,10 @@ void check_icc(const std::string& shown, const std::vector<unsigned char>& profi
 /// (header_png.cpp).
 void check_png(const std::string& shown, Reader& file, const ImageLimits& limits, HeaderFacts& facts);
 
+/// OpenEXR: every attribute of the header(s) inside the file, the first part's data window
+/// within `limits`, and a single-part file's chunk table (header_exr.cpp).
+void check_exr(const std::string& shown, Reader& file, const ImageLimits& limits);
+
 /// JPEG (ITU-T T.81 Annex B): the declared size against `limits` and against the coded data
 /// after the first scan header; the APP2 ICC profile chunks (ICC.1 Annex B.4), whose damage goes
 /// to facts.icc_damage (header_jpeg.cpp).
@@ -95,6 +99,12 @@ struct CodedUnit {
 /// file and the unit ("strip" or "tile") when its data are damaged or end before the bytes it
 /// holds (header_deflate.cpp). Units whose `expected` is 0 are skipped.
 void check_deflate_units(const std::string& shown, int fd, const std::vector<CodedUnit>& units, const char* unit);
+
+/// Every directory of a TIFF read by libtiff, as tiffinfo reads them: throws irid::Error naming
+/// the file and libtiff's first error (a tag value out of range, a broken chain of directories;
+/// its warnings pass). Files libtiff cannot open pass (the decoder names them)
+/// (header_libtiff.cpp).
+void check_tiff_directories(const std::string& shown, const std::filesystem::path& path);
 
 /// TIFF (TIFF 6.0, and BigTIFF): the first directory's size against `limits`, its strips or tiles
 /// against the file and what they can expand to, and its ICC profile tag (header_tiff.cpp).

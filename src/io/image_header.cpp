@@ -105,69 +105,6 @@ void check_icc(const std::string& shown, const std::vector<unsigned char>& p) {
 namespace {
 using namespace header;
 
-/// OpenEXR (the file layout of openexr.com, "OpenEXR File Layout"): every attribute of the
-/// header(s) must fit in the file, and the first part's data window within the limits.
-void check_exr(const std::string& shown, Reader& file, const ImageLimits& limits) {
-    unsigned char version[4];
-    if (!file.read(4, version, sizeof version)) return;
-    const bool multipart = (version[1] & 0x10) != 0;  // flag bit 12
-    std::uint64_t pos = 8;
-    int part = 0;
-    bool header_empty = true;
-    // "name\0type\0" then a 4-byte size and the value; names are at most 255 bytes.
-    const auto read_string = [&](std::uint64_t from, std::string& out) -> std::uint64_t {
-        out.clear();
-        unsigned char c = 0;
-        for (std::uint64_t i = from; i < from + 256; ++i) {
-            if (!file.read(i, &c, 1)) return 0;
-            if (c == 0) return i + 1;
-            out += static_cast<char>(c);
-        }
-        return 0;
-    };
-    while (pos < file.size()) {
-        unsigned char first = 0;
-        if (!file.read(pos, &first, 1)) return;
-        if (first == 0) {  // the end of a header
-            ++pos;
-            if (!multipart || header_empty) return;
-            header_empty = true;
-            ++part;
-            continue;
-        }
-        header_empty = false;
-        std::string name, type;
-        const std::uint64_t after_name = read_string(pos, name);
-        if (after_name == 0) return;
-        const std::uint64_t after_type = read_string(after_name, type);
-        if (after_type == 0) return;
-        unsigned char size_bytes[4];
-        if (!file.read(after_type, size_bytes, 4)) return;
-        const std::uint64_t size = little_endian32(size_bytes);
-        const std::uint64_t left = file.size() - (after_type + 4);
-        if (size > left) {
-            corrupt(shown, "its header attribute '" + printable(reinterpret_cast<const unsigned char*>(name.data()), std::min<std::size_t>(name.size(), 40)) +
-                               "' declares " + std::to_string(size) + " bytes, and " +
-                               std::to_string(left) + " remain");
-        }
-        if (part == 0 && name == "dataWindow" && type == "box2i" && size == 16) {
-            unsigned char box[16];
-            if (file.read(after_type + 4, box, sizeof box)) {
-                const auto signed32 = [&](int i) {
-                    return static_cast<std::int64_t>(static_cast<std::int32_t>(little_endian32(box + i)));
-                };
-                const std::int64_t w = signed32(8) - signed32(0) + 1;
-                const std::int64_t h = signed32(12) - signed32(4) + 1;
-                if (w >= 1 && h >= 1) {
-                    check_declared_pixels(shown, static_cast<std::uint64_t>(w),
-                                          static_cast<std::uint64_t>(h), limits);
-                }
-            }
-        }
-        pos = after_type + 4 + size;
-    }
-}
-
 }  // namespace
 
 std::string declared_size_text(std::uint64_t width, std::uint64_t height) {
@@ -211,6 +148,7 @@ HeaderFacts check_image_header(const std::filesystem::path& path, const ImageLim
     if (std::memcmp(magic, "II*\0", 4) == 0 || std::memcmp(magic, "MM\0*", 4) == 0 ||
         std::memcmp(magic, "II+\0", 4) == 0 || std::memcmp(magic, "MM\0+", 4) == 0) {
         check_tiff(shown, file, limits, facts);
+        check_tiff_directories(shown, path);
     }
     if (std::memcmp(magic, "\xff\xd8\xff", 3) == 0) check_jpeg(shown, file, limits, facts);
     return facts;
