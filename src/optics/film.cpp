@@ -58,6 +58,10 @@ public:
     [[nodiscard]] FilmColor color(double thickness_nm, const Colorimeter& colorimeter) const override {
         return m_prepared.color(thickness_nm, colorimeter);
     }
+    [[nodiscard]] FilmColor exact_color(double thickness_nm, const Colorimeter& colorimeter) const override {
+        return m_prepared.refined_color(thickness_nm, colorimeter);
+    }
+    [[nodiscard]] bool aliases(double thickness_nm) const noexcept override { return m_prepared.aliases(thickness_nm); }
 
 private:
     PreparedFilm m_prepared;
@@ -118,7 +122,7 @@ FilmColor FilmModel::color(const Colorimeter& colorimeter, double angle_rad,
                            std::optional<double> thickness) const {
     const double t = thickness.value_or(thickness_nm());
     if (thickness) check_film_thickness(t);
-    return at_angle(angle_rad)->color(t, colorimeter);
+    return at_angle(angle_rad)->exact_color(t, colorimeter);
 }
 
 void FilmModel::check_work(std::vector<WorkFactor> spectra, bool at_wavelengths,

@@ -177,6 +177,15 @@ FilmColor PreparedFilm::color(double thickness_nm, const Colorimeter& colorimete
     return {xyz, colorimeter.linear_rgb(xyz)};
 }
 
+FilmColor PreparedFilm::refined_color(double thickness_nm, const Colorimeter& colorimeter) const noexcept {
+    if (const std::optional<Xyz> fine = refined_film_xyz(m_film, thickness_nm, m_angle_rad, m_reach, colorimeter)) {
+        return {*fine, colorimeter.linear_rgb(*fine)};
+    }
+    return color(thickness_nm, colorimeter);
+}
+
+bool PreparedFilm::aliases(double thickness_nm) const noexcept { return aliases_on_the_grid(m_reach, thickness_nm); }
+
 double thesis_single_film_reflectance(const SingleFilm& film, double thickness_nm, double lambda_nm,
                                       double angle_rad, double k,
                                       std::optional<bool> phase_change) noexcept {

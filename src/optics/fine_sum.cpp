@@ -133,9 +133,20 @@ std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, d
     // interference terms weigh the spectrum's transform at that path and beyond, below 8e-5 of
     // the white: the colour is the incoherent one, at the 1 nm sum's cost.
     if (thickness_nm * reach.opd_per_nm >= incoherent_opd_nm) return incoherent_film_xyz(film, angle_rad, colorimeter);
-    // Below it a film whose faces both reflect strongly (a metal base, grazing light) aliases
-    // through its many round trips: it is summed as finely as they need, down to
-    // finest_refinement_nm (at most 100 times the 1 nm sum's work).
+    return std::nullopt;
+}
+
+bool aliases_on_the_grid(const AliasReach& reach, double thickness_nm) noexcept {
+    return std::isfinite(thickness_nm) && thickness_nm >= 0.0 && alias_free_step_nm(reach, thickness_nm) < 1.0 &&
+           thickness_nm * reach.opd_per_nm < incoherent_opd_nm;
+}
+
+std::optional<Xyz> refined_film_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
+                                    const AliasReach& reach, const Colorimeter& colorimeter) noexcept {
+    if (std::optional<Xyz> incoherent = alias_free_xyz(film, thickness_nm, angle_rad, reach, colorimeter)) {
+        return incoherent;
+    }
+    if (!aliases_on_the_grid(reach, thickness_nm)) return std::nullopt;
     const double step = std::max(alias_free_step_nm(reach, thickness_nm), finest_refinement_nm);
     return finely_summed_film_xyz(film, thickness_nm, angle_rad, colorimeter, step);
 }

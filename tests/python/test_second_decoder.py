@@ -7,6 +7,7 @@ and strips that share bytes with each other or with the file's header are refuse
 decoder runs.
 """
 
+import os
 import shutil
 import struct
 import subprocess
@@ -157,3 +158,139 @@ def test_a_strip_on_the_header_directory_or_arrays_is_refused(tmp_path, where, w
     (tmp_path / "bad.tif").write_bytes(bad)
     with pytest.raises(OSError, match=f"its strip 0 \\(bytes {where} to .*\\) lies on {what}"):
         irid.read_image(tmp_path / "bad.tif")
+
+
+# --- JPEG: what libjpeg's jpeg_finish_decompress stops at, which OpenImageIO never calls ------
+
+DJPEG = shutil.which("djpeg")     # libjpeg-turbo-progs (scripts/install-deps)
+CJPEG = shutil.which("cjpeg")
+
+
+def djpeg_error(path):
+    r = subprocess.run([DJPEG, "-outfile", "/dev/null", str(path)], capture_output=True, text=True)
+    return r.returncode, r.stderr
+
+
+def jpeg_of(seed, **kw):
+    from PIL import Image
+    import io
+    buf = io.BytesIO()
+    Image.fromarray((np.random.default_rng(seed).random((32, 48, 3)) * 255).astype(np.uint8)).save(
+        buf, "JPEG", quality=90, **kw)
+    return buf.getvalue()
+
+
+def test_a_second_frame_after_the_scan_is_refused_as_libjpeg_refuses_it(tmp_path):
+    """An image whose coded data run on into the headers of another image (the differential test
+    found it by splicing): libjpeg decodes every row, then stops at the second SOF."""
+    a, b = jpeg_of(1), jpeg_of(2)
+    path = tmp_path / "two-frames.jpg"
+    path.write_bytes(a[:-2] + b[2:])        # a without its EOI, then b without its SOI
+    status, err = djpeg_error(path)
+    assert status == 1 and "two SOF markers" in err, err
+    with pytest.raises(OSError, match=r"a second frame header \(marker 0xC0\) at byte \d+, after the image's first scan"):
+        irid.read_image(path)
+
+
+def test_a_second_scan_of_a_single_scan_image_is_refused_and_progressive_scans_are_not(tmp_path):
+    a = jpeg_of(3)
+    sos = a.index(b"\xff\xda")
+    length = struct.unpack(">H", a[sos + 2:sos + 4])[0]
+    path = tmp_path / "two-scans.jpg"
+    path.write_bytes(a[:-2] + a[sos:sos + 2 + length + 40] + b"\xff\xd9")
+    status, err = djpeg_error(path)
+    assert status == 1 and "Didn't expect more than one scan" in err, err
+    with pytest.raises(OSError, match="a second scan at byte"):
+        irid.read_image(path)
+    (tmp_path / "progressive.jpg").write_bytes(jpeg_of(3, progressive=True))
+    assert djpeg_error(tmp_path / "progressive.jpg")[0] == 0
+    irid.read_image(tmp_path / "progressive.jpg")
+
+
+def test_an_arithmetic_jpeg_can_hold_a_large_image_in_a_few_hundred_bytes(tmp_path):
+    """Why arithmetic-coded JPEGs have no bound of coded bytes per block: the coder's smallest
+    probability estimate (Qe = 0x0001, T.81 Table D.2) spends about 4e-5 bits on a likely
+    decision, and a black 2048 x 2048 image takes under 300 bytes, headers included. irid reads
+    it whole, as djpeg does; such files are bounded by the pixel limit alone."""
+    from PIL import Image
+    Image.new("RGB", (2048, 2048)).save(tmp_path / "black.ppm")
+    data = subprocess.run([CJPEG, "-arithmetic", str(tmp_path / "black.ppm")], check=True,
+                          capture_output=True).stdout
+    assert len(data) < 300
+    (tmp_path / "black.jpg").write_bytes(data)
+    assert djpeg_error(tmp_path / "black.jpg")[0] == 0
+    px, _ = irid.read_image(tmp_path / "black.jpg")
+    assert px.shape == (2048, 2048, 3) and px.max() == 0.0
+
+
+# --- TIFF: libtiff's own reading of the directories -------------------------------------------
+
+def test_a_tag_value_libtiff_refuses_is_refused(tmp_path):
+    data = bytearray(layout(tmp_path, "strips").read_bytes())
+    t = Tiff(data)
+    assert 274 in t.entries         # Orientation, 1 to 8 (TIFF 6.0)
+    t.set_values(274, [41729])
+    path = tmp_path / "orientation.tif"
+    path.write_bytes(data)
+    assert libtiff_refuses(path)
+    with pytest.raises(OSError, match='libtiff: .*Bad value 41729 for "Orientation"'):
+        irid.read_image(path)
+
+
+def test_a_broken_chain_of_directories_is_refused(tmp_path):
+    data = bytearray(layout(tmp_path, "strips").read_bytes())
+    t = Tiff(data)
+    next_at = t.ifd_end - 4
+    offsets = t.values(273)
+    data[next_at:next_at + 4] = struct.pack("<I", offsets[1] + 1)   # a "directory" in strip 1
+    path = tmp_path / "chain.tif"
+    path.write_bytes(data)
+    assert libtiff_refuses(path)
+    with pytest.raises(OSError, match="libtiff: "):
+        irid.read_image(path)
+
+
+# --- EXR: the chunk table ---------------------------------------------------------------------
+
+EXR_READ_ALL = os.environ.get("IRID_EXR_READ_ALL")
+
+
+@pytest.mark.parametrize("compression,damage", [("none", "offset"), ("zip", "offset"),
+                                                 ("rle", "line"), ("piz", "size")])
+def test_a_broken_chunk_table_is_refused_as_openexr_reads_it_incomplete(tmp_path, compression, damage):
+    if not EXR_READ_ALL:
+        pytest.skip("IRID_EXR_READ_ALL is not set (run the suite through ctest)")
+    path = tmp_path / "whole.exr"
+    irid.write_image(path, np.random.default_rng(4).random((40, 24, 3)).astype(np.float32),
+                     compression=compression)
+    data = bytearray(path.read_bytes())
+    end = header_end(data)       # the chunk table follows the header
+    first = struct.unpack("<Q", data[end:end + 8])[0]
+    assert first > end
+    if damage == "offset":
+        data[end + 8:end + 16] = bytes(8)                  # chunk 1 at byte 0
+        reason = "its chunk 1 lies at byte 0"
+    elif damage == "line":
+        second = struct.unpack("<Q", data[end + 8:end + 16])[0]
+        data[second:second + 4] = struct.pack("<i", 7)    # chunk 1 claims line 7
+        reason = "its chunk 1 at byte .* holds line 7 where line 1 belongs"
+    else:
+        data[first + 4:first + 8] = struct.pack("<I", 10**9)
+        reason = "its chunk 0 at byte .* declares 1000000000 bytes"
+    (tmp_path / "bad.exr").write_bytes(data)
+    r = subprocess.run([EXR_READ_ALL, str(tmp_path / "bad.exr")], capture_output=True, text=True)
+    assert r.returncode != 0, r.stderr
+    with pytest.raises(OSError, match=reason):
+        irid.read_image(tmp_path / "bad.exr")
+
+
+def header_end(data):
+    """The byte after an EXR single-part header's terminating zero (attributes: name, type, size,
+    value)."""
+    pos = 8
+    while data[pos] != 0:
+        name_end = data.index(b"\0", pos)
+        type_end = data.index(b"\0", name_end + 1)
+        size = struct.unpack("<I", data[type_end + 1:type_end + 5])[0]
+        pos = type_end + 5 + size
+    return pos + 1

@@ -50,6 +50,13 @@ public:
     virtual void reflectance(double thickness_nm, DenseValues& out) const = 0;
     /// The colour at a varied thickness (finite, >= 0); the default sums reflectance().
     [[nodiscard]] virtual FilmColor color(double thickness_nm, const Colorimeter& colorimeter) const;
+    /// The same for one colour: where color() is a 1 nm sum that aliases (aliases()), summed as
+    /// finely as the film needs (refined_film_xyz, up to about 65 times color()'s work).
+    [[nodiscard]] virtual FilmColor exact_color(double thickness_nm, const Colorimeter& colorimeter) const {
+        return color(thickness_nm, colorimeter);
+    }
+    /// color() at this thickness is a 1 nm sum that aliases (fine_sum.h, aliases_on_the_grid).
+    [[nodiscard]] virtual bool aliases(double /*thickness_nm*/) const noexcept { return false; }
 };
 
 /// How check_work names the factors a model adds, in its messages: the caller's names (a

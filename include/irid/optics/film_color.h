@@ -60,6 +60,10 @@ public:
     [[nodiscard]] double reflectance(int i, double thickness_nm) const noexcept;
     [[nodiscard]] DenseSpectrum reflectance_spectrum(double thickness_nm) const;
     [[nodiscard]] FilmColor color(double thickness_nm, const Colorimeter& colorimeter) const noexcept;
+    /// color() without aliasing at any thickness (refined_film_xyz): for one colour, not tables.
+    [[nodiscard]] FilmColor refined_color(double thickness_nm, const Colorimeter& colorimeter) const noexcept;
+    /// color() at this thickness is a 1 nm sum that aliases (aliases_on_the_grid).
+    [[nodiscard]] bool aliases(double thickness_nm) const noexcept;
 
     /// What the film's reflectance at one wavelength needs besides the thickness.
     struct Sample {

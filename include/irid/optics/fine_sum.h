@@ -49,19 +49,29 @@ namespace irid {
 /// 1 nm grid's own transform begins to alias; docs/OPTICS.md).
 inline constexpr double incoherent_opd_nm = 100000.0;
 
-/// The finest step alias_free_xyz sums at [nm]: 47 000 reflectances, 100 times the 1 nm sum.
-inline constexpr double finest_refinement_nm = 0.01;
-
-/// Where the 1 nm grid aliases for this film, thickness and angle (alias_free_step_nm < 1): the
-/// incoherent colour once one round trip is past incoherent_opd_nm, else the film summed at
-/// alias_free_step_nm (no finer than finest_refinement_nm: a film whose round trips reach past
-/// 0.7 × 380² / 0.01 nm = 10 mm of path before fading to 1e-3, such as water on gold near
-/// grazing incidence, keeps a little of the aliasing; docs/OPTICS.md measures it). Nothing where
-/// the 1 nm sum holds. The 1 nm colours (PreparedFilm::color, exact_film_color) defer to it.
+/// Where the 1 nm grid aliases for this film, thickness and angle (alias_free_step_nm < 1) and
+/// one round trip is past incoherent_opd_nm, the incoherent colour; nothing otherwise. The 1 nm
+/// colours (PreparedFilm::color, exact_film_color) defer to it. Below that path the 1 nm colours
+/// stay 1 nm sums (aliases_on_the_grid says where they alias): summing a colour table there as
+/// finely as it needs would cost up to about 65 times the work the request limits count
+/// (docs/OPTICS.md); refined_film_xyz does it for one colour.
 [[nodiscard]] std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
                                                 const Colorimeter& colorimeter) noexcept;
 /// The same from a reach already found for the film and angle (PreparedFilm finds it once).
 [[nodiscard]] std::optional<Xyz> alias_free_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
                                                 const AliasReach& reach, const Colorimeter& colorimeter) noexcept;
+
+/// The 1 nm sum of this film aliases at this thickness below incoherent_opd_nm (where
+/// alias_free_xyz does not take over): high finesse, a metal base, grazing light.
+[[nodiscard]] bool aliases_on_the_grid(const AliasReach& reach, double thickness_nm) noexcept;
+
+/// The finest step refined_film_xyz sums at [nm]: 47 000 reflectances per colour.
+inline constexpr double finest_refinement_nm = 0.01;
+
+/// One colour without aliasing at any thickness: alias_free_xyz's incoherent colour, else where
+/// aliases_on_the_grid the film summed at alias_free_step_nm (no finer than
+/// finest_refinement_nm), else nothing (the 1 nm sum holds).
+[[nodiscard]] std::optional<Xyz> refined_film_xyz(const SingleFilm& film, double thickness_nm, double angle_rad,
+                                                  const AliasReach& reach, const Colorimeter& colorimeter) noexcept;
 
 }  // namespace irid
