@@ -62,7 +62,12 @@ std::string sequence_text(const std::vector<std::pair<unsigned, unsigned>>& chun
     return s;
 }
 
-/// After the first scan, up to EOI: a second frame header (SOF) is what libjpeg's
+std::string hex_byte(unsigned v) {
+    static constexpr char hex[] = "0123456789ABCDEF";
+    return std::string{hex[(v >> 4) & 15], hex[v & 15]};
+}
+
+/// After the first scan, up to EOI, which must be there: a second frame header (SOF) is what libjpeg's
 /// jpeg_finish_decompress stops at ("Invalid JPEG file structure: two SOF markers"), which
 /// OpenImageIO 2.4 never calls, so a file whose coded data run on into the headers of another
 /// image, decoding as garbage, read as whole. Stuffed bytes (FF 00), restart markers and fill
@@ -73,7 +78,7 @@ void check_after_first_scan(const std::string& shown, Reader& file, std::uint64_
     std::uint64_t pos = from;
     while (pos + 1 < file.size()) {
         const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(sizeof chunk, file.size() - pos));
-        if (!file.read(pos, chunk, n)) return;
+        if (!file.read(pos, chunk, n)) break;
         const auto* ff = static_cast<const unsigned char*>(std::memchr(chunk, 0xFF, n));
         if (ff == nullptr) {
             pos += n;
@@ -81,28 +86,40 @@ void check_after_first_scan(const std::string& shown, Reader& file, std::uint64_
         }
         pos += static_cast<std::uint64_t>(ff - chunk);
         unsigned char m[4];
-        if (!file.read(pos, m, 2)) return;
+        if (!file.read(pos, m, 2)) break;
         const unsigned marker = m[1];
         if (marker == 0x00 || marker == 0xFF || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {
             pos += marker == 0xFF ? 1 : 2;
             continue;
         }
         if (marker == 0xD9) return;  // EOI
+        // What libjpeg's read_markers knows after a scan (jdmarker.c): frame headers (refused
+        // below), DHT, DAC, RSTn, SOS, DQT, DNL, DRI, APPn, COM and TEM; any other stops it
+        // ("Unsupported marker type"), and so does a second SOI.
+        const bool known = (marker >= 0xC0 && marker <= 0xCF) || (marker >= 0xDA && marker <= 0xDD) ||
+                           (marker >= 0xE0 && marker <= 0xEF) || marker == 0xFE;
+        if (!known) {
+            corrupt(shown, "a marker libjpeg does not know after a scan (0x" + hex_byte(marker) + ") at byte " +
+                               std::to_string(pos) + " (libjpeg: " +
+                               (marker == 0xD8 ? "two SOI markers" : "unsupported marker type") + ")");
+        }
         if (is_frame_marker(marker)) {
-            corrupt(shown, "a second frame header (marker 0x" + [&] {
-                static constexpr char hex[] = "0123456789ABCDEF";
-                return std::string{hex[marker >> 4], hex[marker & 15]};
-            }() + ") at byte " + std::to_string(pos) + ", after the image's first scan (libjpeg: two SOF markers)");
+            corrupt(shown, "a second frame header (marker 0x" + hex_byte(marker) + ") at byte " + std::to_string(pos) +
+                               ", after the image's first scan (libjpeg: two SOF markers)");
         }
         if (marker == 0xDA && !more_scans) {
             corrupt(shown, "a second scan at byte " + std::to_string(pos) +
                                " of an image whose first scan holds every component (libjpeg: didn't expect more "
                                "than one scan)");
         }
-        if (!file.read(pos, m, 4)) return;
+        if (!file.read(pos, m, 4)) break;
         const std::uint64_t length = static_cast<std::uint64_t>(m[2]) << 8 | m[3];
         pos += 2 + std::max<std::uint64_t>(length, 2);
     }
+    // No EOI: libjpeg's "Premature end of JPEG file", which OpenImageIO reports only while rows
+    // remain to be read (an arithmetic-coded file's last rows can be read before it).
+    corrupt(shown, "it ends at byte " + std::to_string(file.size()) + " without its EOI marker (libjpeg: premature end "
+                                                                        "of JPEG file)");
 }
 
 }  // namespace
@@ -171,12 +188,6 @@ void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limit
         pos += 2 + length;
     }
 
-    if (first_scan > 0) {
-        // libjpeg expects more scans only of a progressive frame, or after a first scan that
-        // leaves components out (jdinput.c, has_multiple_scans).
-        const bool progressive = frame.marker == 0xC2 || frame.marker == 0xC6 || frame.marker == 0xCA || frame.marker == 0xCE;
-        check_after_first_scan(shown, file, first_scan, progressive || first_scan_components < frame.sampling.size());
-    }
     if (frame.marker != 0 && frame.width > 0 && frame.height > 0) {
         check_declared_pixels(shown, frame.width, frame.height, limits);
         // Arithmetic coding can spend less than a bit on a block: such a file is bounded by the
@@ -194,6 +205,12 @@ void check_jpeg(const std::string& shown, Reader& file, const ImageLimits& limit
         }
     }
 
+    if (first_scan > 0) {
+        // libjpeg expects more scans only of a progressive frame, or after a first scan that
+        // leaves components out (jdinput.c, has_multiple_scans).
+        const bool progressive = frame.marker == 0xC2 || frame.marker == 0xC6 || frame.marker == 0xCA || frame.marker == 0xCE;
+        check_after_first_scan(shown, file, first_scan, progressive || first_scan_components < frame.sampling.size());
+    }
     if (!short_segment.empty()) {
         facts.icc_damage = short_segment;
         return;

@@ -196,6 +196,21 @@ void set_decoded_sizes(std::vector<CodedUnit>& units, std::uint64_t width, std::
     }
 }
 
+/// The predictor a compressed TIFF declares, as libtiff's PredictorSetup (tif_predict.c) takes
+/// it before decoding the first strip, which OpenImageIO ignores: horizontal differencing (2) of
+/// 8, 16, 32 or 64-bit samples, floating-point (3) of IEEE floats of 16, 24, 32 or 64 bits.
+void check_predictor(const std::string& shown, std::uint64_t compression, std::uint64_t predictor, std::uint64_t bits,
+                     std::uint64_t sample_format) {
+    const bool predicted = compression == 5 || compression == 8 || compression == 32946;  // LZW, deflate
+    if (!predicted || predictor == 1) return;
+    if (predictor == 2 && (bits == 8 || bits == 16 || bits == 32 || bits == 64)) return;
+    if (predictor == 3 && sample_format == 3 && (bits == 16 || bits == 24 || bits == 32 || bits == 64)) return;
+    corrupt(shown, "its predictor " + std::to_string(predictor) + " cannot apply to " + std::to_string(bits) +
+                       "-bit samples of format " + std::to_string(sample_format) +
+                       " (libtiff takes horizontal differencing, 2, of 8, 16, 32 or 64 bits, and floating-point "
+                       "prediction, 3, of 16, 24, 32 or 64-bit floats)");
+}
+
 /// The ICC profile tag: its bytes as stored, whatever their integer type (a writer may type them
 /// UNDEFINED, BYTE or LONG; libtiff keeps only the first two). A tag past the file, of a
 /// non-integer type, or a second tag holding another profile is damage (facts.icc_damage).
@@ -253,6 +268,7 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
     std::uint64_t width = 0, height = 0, samples = 1, bits = 1, compression = 1, photometric = 2;
     std::uint64_t sub_h = 2, sub_v = 2;  // YCbCrSubsampling's default (TIFF 6.0 §21)
     std::uint64_t rows_per_strip = UINT32_MAX, planar = 1, tile_width = 0, tile_length = 0;
+    std::uint64_t predictor = 1, sample_format = 1;
     std::optional<std::uint64_t> offsets_entry, counts_entry;
     const char* unit = "strip";
     unsigned char e[20];
@@ -267,7 +283,8 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
         }
         const bool array = tag == 273 || tag == 279 || tag == 324 || tag == 325;
         const bool scalar = tag == 256 || tag == 257 || tag == 258 || tag == 259 || tag == 262 || tag == 277 ||
-                            tag == 278 || tag == 284 || tag == 322 || tag == 323 || tag == 530;
+                            tag == 278 || tag == 284 || tag == 317 || tag == 322 || tag == 323 || tag == 339 ||
+                            tag == 530;
         if (!array && !scalar) continue;
         if (!values.integers() || values.count() == 0) continue;  // libtiff names a wrong type
         if (!values.inside()) {
@@ -291,6 +308,8 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
             case 277: samples = *v; break;
             case 278: rows_per_strip = *v; break;
             case 284: planar = *v; break;
+            case 317: predictor = *v; break;
+            case 339: sample_format = *v; break;
             case 322: tile_width = *v; break;
             case 323: tile_length = *v; break;
             case 530:
@@ -302,6 +321,7 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
     }
     if (width == 0 || height == 0) return;
     check_declared_pixels(shown, width, height, limits);
+    check_predictor(shown, compression, predictor, bits, sample_format);
     if (!offsets_entry || !counts_entry) return;
 
     // Every strip (or tile) inside the file, its bytes summed, both arrays read side by side.

@@ -294,3 +294,38 @@ def header_end(data):
         size = struct.unpack("<I", data[type_end + 1:type_end + 5])[0]
         pos = type_end + 5 + size
     return pos + 1
+
+
+@pytest.mark.parametrize("arithmetic", [False, True])
+def test_a_jpeg_without_its_eoi_or_with_a_marker_libjpeg_does_not_know_is_refused(tmp_path, arithmetic):
+    """The seeded differential run found both in arithmetic-coded files, whose last rows can be
+    read before the decoder looks for the end (so OpenImageIO's row reads never see it)."""
+    from PIL import Image
+    Image.fromarray((np.random.default_rng(6).random((32, 48, 3)) * 255).astype(np.uint8)).save(tmp_path / "a.ppm")
+    data = subprocess.run([CJPEG, *(["-arithmetic"] if arithmetic else []), str(tmp_path / "a.ppm")],
+                          check=True, capture_output=True).stdout
+    cases = {"no-eoi": (data[:-2], "without its EOI marker"),
+             "unknown-marker": (data[:-2] + b"\xff\x25\x00\x04ab" + b"\xff\xd9", r"0x25\) at byte")}
+    for name, (damaged, reason) in cases.items():
+        path = tmp_path / f"{name}.jpg"
+        path.write_bytes(damaged)
+        status, err = djpeg_error(path)
+        assert status != 0, (name, err)
+        with pytest.raises(OSError, match=reason):
+            irid.read_image(path)
+
+
+@pytest.mark.parametrize("predictor", [3, 7])
+def test_a_predictor_libtiff_cannot_apply_is_refused(tmp_path, predictor):
+    """libtiff sets a strip's predictor up before decoding it, and refuses floating-point
+    prediction of 8-bit integers (or a predictor it does not know); OpenImageIO read such files
+    (found by the seeded differential run, seed 3)."""
+    data = bytearray(layout(tmp_path, "predictor").read_bytes())
+    t = Tiff(data)
+    assert t.values(317) == [2]
+    t.set_values(317, [predictor])
+    path = tmp_path / "predictor.tif"
+    path.write_bytes(data)
+    assert libtiff_refuses(path)
+    with pytest.raises(OSError, match=f"its predictor {predictor} cannot apply to 8-bit samples"):
+        irid.read_image(path)
