@@ -63,7 +63,7 @@ void check_chunk_table(const std::string& shown, Reader& file, std::uint64_t tab
             corrupt(shown, which + " lies at byte " + std::to_string(at) + ", outside the data (bytes " +
                                std::to_string(table_end) + " to " + std::to_string(file.size()) + ")");
         }
-        if (!file.read(at, c, static_cast<std::size_t>(head))) return;
+        if (!file.read_unbuffered(at, c, static_cast<std::size_t>(head))) return;
         const auto int32 = [&](int k) { return static_cast<std::int64_t>(static_cast<std::int32_t>(little_endian32(c + k))); };
         const std::uint64_t size = little_endian32(c + head - 4);
         if (size > file.size() - at - static_cast<std::uint64_t>(head)) {

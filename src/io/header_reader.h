@@ -42,6 +42,21 @@ public:
         return true;
     }
 
+    /// `n` bytes at `offset`, read straight from the file, past the buffer: for small reads far
+    /// apart (an EXR's chunk headers), where refilling the buffer at each would read it all.
+    bool read_unbuffered(std::uint64_t offset, void* out, std::size_t n) const {
+        if (offset > m_size || n > m_size - offset) return false;
+        std::size_t got = 0;
+        while (got < n) {
+            const ssize_t r = ::pread(m_fd, static_cast<unsigned char*>(out) + got, n - got,
+                                      static_cast<off_t>(offset + got));
+            if (r < 0 && errno == EINTR) continue;
+            if (r <= 0) return false;
+            got += static_cast<std::size_t>(r);
+        }
+        return true;
+    }
+
 private:
     int m_fd;
     std::uint64_t m_size;
