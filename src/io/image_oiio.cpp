@@ -18,6 +18,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -219,12 +220,18 @@ Image oiio_read(const fs::path& path, const ImageLimits& limits) {
     };
     image.chromaticities = floats("chromaticities");
     image.adopted_neutral = floats("adoptedNeutral");
-    image.origin_x = spec.x;
-    image.origin_y = spec.y;
-    if (spec.full_x != spec.x || spec.full_y != spec.y || spec.full_width != spec.width ||
-        spec.full_height != spec.height) {
-        image.display_window = std::array<int, 4>{spec.full_x, spec.full_y, spec.full_x + spec.full_width - 1,
-                                                  spec.full_y + spec.full_height - 1};
+    // Windows are OpenEXR's (OpenEXR keeps their corners within ±2^30); other formats' origins
+    // (a TIFF's XPosition times its resolution) are no such thing and are left at 0, 0.
+    if (std::string_view(in->format_name()) == "openexr") {
+        image.origin_x = spec.x;
+        image.origin_y = spec.y;
+        const long long x1 = static_cast<long long>(spec.full_x) + spec.full_width - 1;
+        const long long y1 = static_cast<long long>(spec.full_y) + spec.full_height - 1;
+        const bool own = spec.full_x == spec.x && spec.full_y == spec.y && spec.full_width == spec.width &&
+                         spec.full_height == spec.height;
+        if (!own && x1 <= max_window_coordinate && y1 <= max_window_coordinate) {
+            image.display_window = std::array<int, 4>{spec.full_x, spec.full_y, static_cast<int>(x1), static_cast<int>(y1)};
+        }
     }
     image.stored_integer = !spec.format.is_floating_point();
     // OpenImageIO names a JPEG's CMYK "CMYK" and its YCCK (Adobe transform 2) "YCbCrK"; a TIFF's

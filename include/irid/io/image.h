@@ -71,9 +71,9 @@ struct Image {
     /// Where the pixels sit in their frame, as OpenEXR's windows say it: the top-left pixel is
     /// at (origin_x, origin_y) (the data window's corner; the window is width × height), and the
     /// frame is display_window (x min, y min, x max, y max, inclusive, as exrheader prints it),
-    /// or the data window itself when empty. read_image sets them (a file without windows: 0,
-    /// 0 and no display window; OpenImageIO reads a TIFF's XPosition too); write_image writes
-    /// them to EXR only (windows_dropped says when another format loses them).
+    /// or the data window itself when empty. read_image sets them from an EXR (any other file:
+    /// 0, 0 and no display window); write_image writes them to EXR only (windows_dropped says
+    /// when another format loses them).
     int origin_x = 0;
     int origin_y = 0;
     std::optional<std::array<int, 4>> display_window;
