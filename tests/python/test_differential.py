@@ -14,7 +14,9 @@ extraneous bytes before a marker, do not count); ``pngcheck``; OpenEXR's ``exrhe
 read through its library (tests/tools/exr_read_all).
 
 IRID_DIFFERENTIAL_RUNS sets the damaged files per valid one (default 12 in the suite;
-``IRID_DIFFERENTIAL_RUNS=400`` before a submission), IRID_DIFFERENTIAL_SEED the seed (1).
+``IRID_DIFFERENTIAL_RUNS=300`` with several seeds before a submission), IRID_DIFFERENTIAL_SEED the
+seed (1); with IRID_DIFFERENTIAL_SHOW_STRICTER set, the files irid alone refuses are printed
+(with ``pytest -s``).
 """
 
 import io
