@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <cstdint>
 #include <mutex>
 #include <optional>
@@ -15,26 +14,13 @@
 #include <thread>
 #include <vector>
 
-#include <unistd.h>
 #include <zlib.h>
 
 namespace irid::io::header {
 namespace {
 
-/// `n` bytes at `offset` of `fd`, or fewer when the file ends first.
-std::size_t read_at(int fd, std::uint64_t offset, unsigned char* out, std::size_t n) {
-    std::size_t got = 0;
-    while (got < n) {
-        const ssize_t r = ::pread(fd, out + got, n - got, static_cast<off_t>(offset + got));
-        if (r < 0 && errno == EINTR) continue;
-        if (r <= 0) break;
-        got += static_cast<std::size_t>(r);
-    }
-    return got;
-}
-
 /// Why unit `u` fails to inflate, or nothing.
-std::optional<std::string> inflate_failure(int fd, const CodedUnit& u, std::vector<unsigned char>& input,
+std::optional<std::string> inflate_failure(const Reader& file, const CodedUnit& u, std::vector<unsigned char>& input,
                                            std::vector<unsigned char>& output) {
     if (u.expected == 0) return std::nullopt;
     z_stream z{};
@@ -44,8 +30,9 @@ std::optional<std::string> inflate_failure(int fd, const CodedUnit& u, std::vect
     while (produced < u.expected) {
         if (z.avail_in == 0 && read < u.count) {
             const auto want = static_cast<std::size_t>(std::min<std::uint64_t>(input.size(), u.count - read));
-            const std::size_t got = read_at(fd, u.offset + read, input.data(), want);
-            if (got == 0) break;
+            // Every unit lies inside the file (check_tiff checked it first).
+            if (!file.read_unbuffered(u.offset + read, input.data(), want)) break;
+            const std::size_t got = want;
             read += got;
             z.next_in = input.data();
             z.avail_in = static_cast<uInt>(got);
@@ -74,7 +61,8 @@ std::optional<std::string> inflate_failure(int fd, const CodedUnit& u, std::vect
 
 }  // namespace
 
-void check_deflate_units(const std::string& shown, int fd, const std::vector<CodedUnit>& units, const char* unit) {
+void check_deflate_units(const std::string& shown, const Reader& file, const std::vector<CodedUnit>& units,
+                         const char* unit) {
     // Units are inflated on several threads (OpenImageIO inflates them in parallel too); the
     // failure reported is the first unit's that fails, whatever the threads' order.
     std::atomic<std::size_t> next{0}, first_failure{units.size()};
@@ -83,7 +71,7 @@ void check_deflate_units(const std::string& shown, int fd, const std::vector<Cod
     const auto work = [&] {
         std::vector<unsigned char> input(1 << 16), output(1 << 16);
         for (std::size_t i = next++; i < first_failure.load(); i = next++) {
-            if (std::optional<std::string> why = inflate_failure(fd, units[i], input, output)) {
+            if (std::optional<std::string> why = inflate_failure(file, units[i], input, output)) {
                 const std::lock_guard<std::mutex> lock(mutex);
                 if (i < first_failure.load()) {
                     first_failure = i;

@@ -113,7 +113,8 @@ struct CodedUnit {
 /// Inflates each deflate-coded unit as libtiff does (tif_zip.c): throws irid::Error naming the
 /// file and the unit ("strip" or "tile") when its data are damaged or end before the bytes it
 /// holds (header_deflate.cpp). Units whose `expected` is 0 are skipped.
-void check_deflate_units(const std::string& shown, int fd, const std::vector<CodedUnit>& units, const char* unit);
+void check_deflate_units(const std::string& shown, const Reader& file, const std::vector<CodedUnit>& units,
+                         const char* unit);
 
 /// Every directory of a TIFF read by libtiff, as tiffinfo reads them: throws irid::Error naming
 /// the file and libtiff's first error (a tag value out of range, a broken chain of directories;

@@ -384,7 +384,7 @@ void check_tiff(const std::string& shown, Reader& file, const ImageLimits& limit
         set_decoded_sizes(units, width, height, samples, bits, planar, photometric == 6 ? sub_h : 1,
                           photometric == 6 ? sub_v : 1, tiled ? tile_width : width,
                           tiled ? tile_length : rows_per_strip, tiled);
-        check_deflate_units(shown, file.fd(), units, unit);
+        check_deflate_units(shown, file, units, unit);
     }
 }
 
